@@ -1,0 +1,352 @@
+// crspline: the Catmull-Rom spline, its construction and evaluation.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <initializer_list>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "detail/format.hpp"
+#include "end_condition.hpp"
+#include "error.hpp"
+#include "parameterization.hpp"
+#include "point_traits.hpp"
+#include "segment.hpp"
+#include "vec.hpp"
+
+namespace crspline {
+
+/// Kochanek-Bartels tension / continuity / bias, one value per vertex (the
+/// conventions of the Python `splines` package). Empty vectors mean 0. Open
+/// curves ignore the values at their two end vertices.
+template <class T = double>
+struct kochanek_bartels {
+    std::vector<T> tension, continuity, bias;
+    bool empty() const noexcept { return tension.empty() && continuity.empty() && bias.empty(); }
+};
+
+/// How to build a curve. Every choice has a visible default.
+template <std::size_t D, class T = double>
+struct options {
+    std::optional<double> alpha;          ///< knot exponent in [0, 1]; default centripetal (0.5)
+    std::optional<std::vector<T>> grid;   ///< explicit knots instead of alpha (N, or N+1 when closed)
+    end_condition<D, T> start = end_condition<D, T>::natural();  ///< open curves only
+    end_condition<D, T> end = end_condition<D, T>::natural();    ///< open curves only
+    bool closed = false;                  ///< periodic; the first point is not repeated
+    T tension = 0;                        ///< tau in [0, 1]: computed tangents scaled by 1 - tau
+    kochanek_bartels<T> kb;               ///< per-vertex TCB; empty = plain Catmull-Rom
+    bool strict = false;                  ///< reject coincident consecutive points (alpha > 0)
+};
+
+/// A cubic Catmull-Rom curve through N points in D dimensions.
+///
+/// Parameter t runs over [grid().front(), grid().back()]. Segment i joins
+/// points[i] and points[i+1] (points[0] for the last segment of a closed
+/// curve) on [grid[i], grid[i+1]]; an interior knot belongs to the segment on
+/// its right, the last knot to the last segment.
+template <std::size_t D, class T = double>
+class catmull_rom {
+public:
+    using point = vec<D, T>;
+    using scalar = T;
+    using segment_type = cubic_segment<D, T>;
+    using options_type = options<D, T>;
+    static constexpr std::size_t dimension = D;
+
+    explicit catmull_rom(std::span<const point> points, const options_type& opt = {}) { build(points, opt); }
+    catmull_rom(std::initializer_list<point> points, const options_type& opt = {})
+        : catmull_rom(std::span<const point>(points.begin(), points.size()), opt) {}
+
+    // --- what the curve is made of ------------------------------------------
+    std::span<const point> points() const noexcept { return points_; }
+    std::span<const T> grid() const noexcept { return grid_; }
+    bool closed() const noexcept { return closed_; }
+    std::size_t segment_count() const noexcept { return segments_.size(); }
+    T t_min() const noexcept { return grid_.front(); }
+    T t_max() const noexcept { return grid_.back(); }
+    const segment_type& segment(std::size_t i) const { return segments_.at(i); }
+    std::span<const segment_type> segments() const noexcept { return segments_; }
+
+    /// Tangents dx/dt at the start and end of segment i (equal at interior
+    /// knots unless Kochanek-Bartels continuity breaks them).
+    std::array<point, 2> tangents(std::size_t i) const { return velocity_.at(i); }
+
+    // --- evaluation -----------------------------------------------------------
+    /// Index of the segment that owns t, clamped to the first and last segment.
+    /// Branch-free binary search over the knots: O(log N), no mispredictions.
+    std::size_t locate(T t) const noexcept {
+        const T* base = grid_.data();
+        std::size_t len = segments_.size();
+        while (len > 1) {
+            const std::size_t half = len / 2;
+            base = (base[half] <= t) ? base + half : base;
+            len -= half;
+        }
+        return std::size_t(base - grid_.data());
+    }
+
+    /// Position (order 0) or derivative d^k x / dt^k (order 1-3) at t.
+    /// Throws out_of_domain when t is outside [t_min, t_max] or not a number.
+    point evaluate(T t, int order = 0) const {
+        check_order(order);
+        check_t(t, std::nullopt);
+        return evaluate_unchecked(t, order);
+    }
+    point operator()(T t) const { return evaluate(t, 0); }
+
+    /// Same without checks: t outside the domain extrapolates the first or last
+    /// segment's cubic; order outside 0-3 gives zero.
+    point evaluate_unchecked(T t, int order = 0) const noexcept {
+        const segment_type& s = segments_[locate(t)];
+        return s.dt(s.local(t), order);
+    }
+
+    /// Evaluate into a user point type.
+    template <point_like P>
+    P evaluate_as(T t, int order = 0) const { return from_vec<P>(evaluate(t, order)); }
+
+    /// Batch evaluation: out[k] = d^order x / dt^order at t[k]. Sorted input
+    /// walks the segments without searching; unsorted input locates each t
+    /// by branch-free search. Throws out_of_domain naming the first bad index.
+    void evaluate(std::span<const T> t, std::span<point> out, int order = 0) const {
+        check_order(order);
+        if (out.size() != t.size())
+            throw invalid_input("output has " + std::to_string(out.size()) + " points for " +
+                                std::to_string(t.size()) + " parameter values");
+        bool sorted = true;
+        for (std::size_t k = 0; k < t.size(); ++k) {
+            check_t(t[k], k);
+            if (k > 0 && t[k] < t[k - 1]) sorted = false;
+        }
+        if (sorted) evaluate_sorted(t, out, order);
+        else
+            for (std::size_t k = 0; k < t.size(); ++k) out[k] = evaluate_unchecked(t[k], order);
+    }
+    std::vector<point> evaluate(std::span<const T> t, int order = 0) const {
+        std::vector<point> out(t.size());
+        evaluate(t, std::span<point>(out), order);
+        return out;
+    }
+
+    /// Bézier control points of segment i: B0 = points[i], B3 = the next
+    /// point, exactly; B1 and B2 from the Hermite tangents.
+    std::array<point, 4> bezier(std::size_t i) const {
+        const segment_type& s = segments_.at(i);
+        const point& p0 = points_[i];
+        const point& p1 = points_[(i + 1) % points_.size()];
+        const auto [v0, v1] = velocity_[i];
+        return {p0, p0 + (s.h / T(3)) * v0, p1 - (s.h / T(3)) * v1, p1};
+    }
+    std::vector<std::array<point, 4>> bezier() const {
+        std::vector<std::array<point, 4>> b(segments_.size());
+        for (std::size_t i = 0; i < b.size(); ++i) b[i] = bezier(i);
+        return b;
+    }
+
+private:
+    std::vector<point> points_;
+    std::vector<T> grid_;
+    std::vector<segment_type> segments_;
+    std::vector<std::array<point, 2>> velocity_;  // dx/dt at the ends of each segment
+    bool closed_ = false;
+
+    static void check_order(int order) {
+        if (order < 0 || order > 3)
+            throw invalid_input("derivative order must be 0, 1, 2 or 3, got " + std::to_string(order));
+    }
+
+    void check_t(T t, std::optional<std::size_t> index) const {
+        if (!(t >= grid_.front() && t <= grid_.back()))
+            throw out_of_domain("t = " + detail::num(double(t)) +
+                                (index ? " (index " + std::to_string(*index) + ")" : std::string()) +
+                                " is outside the domain [" + detail::num(double(grid_.front())) + ", " +
+                                detail::num(double(grid_.back())) + "]");
+    }
+
+    // Sorted batch: find the run of parameters inside one segment, then
+    // evaluate the run with that segment's coefficients held in registers.
+    void evaluate_sorted(std::span<const T> t, std::span<point> out, int order) const {
+        const std::size_t n = t.size(), nseg = segments_.size();
+        if (n == 0) return;
+        std::size_t seg = locate(t[0]);
+        std::size_t k = 0;
+        while (k < n) {
+            while (seg + 1 < nseg && t[k] >= grid_[seg + 1]) ++seg;
+            const T end = seg + 1 < nseg ? grid_[seg + 1] : std::numeric_limits<T>::infinity();
+            std::size_t j = k;
+            while (j < n && t[j] < end) ++j;
+            run(segments_[seg], t.data() + k, out.data() + k, j - k, order);
+            k = j;
+        }
+    }
+
+    static void run(const segment_type& s, const T* t, point* out, std::size_t n, int order) noexcept {
+        const T t0 = s.t0, ih = s.inv_h;
+        switch (order) {
+            case 0: {
+                const point o = s.origin, a = s.c1, b = s.c2, c = s.c3;
+                for (std::size_t k = 0; k < n; ++k) {
+                    const T u = (t[k] - t0) * ih;
+                    for (std::size_t d = 0; d < D; ++d) out[k][d] = o[d] + u * (a[d] + u * (b[d] + u * c[d]));
+                }
+                break;
+            }
+            case 1: {
+                const point a = s.c1 * ih, b = (T(2) * ih) * s.c2, c = (T(3) * ih) * s.c3;
+                for (std::size_t k = 0; k < n; ++k) {
+                    const T u = (t[k] - t0) * ih;
+                    for (std::size_t d = 0; d < D; ++d) out[k][d] = a[d] + u * (b[d] + u * c[d]);
+                }
+                break;
+            }
+            default:
+                for (std::size_t k = 0; k < n; ++k) out[k] = s.dt(s.local(t[k]), order);
+        }
+    }
+
+    void build(std::span<const point> p, const options_type& opt);
+};
+
+template <std::size_t D, class T>
+void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt) {
+    const std::size_t n = p.size();
+    closed_ = opt.closed;
+    // 1. Validate the input once, here at the boundary.
+    if (n < (closed_ ? 3u : 2u))
+        throw invalid_input(std::string(closed_ ? "a closed curve" : "a curve") + " needs at least " +
+                            (closed_ ? "3" : "2") + " points, got " + std::to_string(n));
+    check_finite(p);
+    if (opt.alpha && opt.grid) throw invalid_input("give alpha or grid, not both");
+    if (!(opt.tension >= 0 && opt.tension <= 1))
+        throw invalid_input("tension must be in [0, 1], got " + detail::num(double(opt.tension)));
+    if (closed_ && (opt.start.type != end_condition<D, T>::kind::natural ||
+                    opt.end.type != end_condition<D, T>::kind::natural))
+        throw invalid_input("a closed curve takes no end conditions");
+    for (const auto* e : {&opt.start, &opt.end})
+        if (e->type == end_condition<D, T>::kind::tangent)
+            for (std::size_t k = 0; k < D; ++k)
+                if (!std::isfinite(e->velocity[k]))
+                    throw invalid_input(std::string(e == &opt.start ? "start" : "end") + " tangent coordinate " +
+                                        std::to_string(k) + " is not finite (" +
+                                        detail::num(double(e->velocity[k])) + ")");
+    const std::size_t first_kb = closed_ ? 0 : 1, last_kb = closed_ ? n : n - 1;  // vertices that use TCB
+    const std::pair<const std::vector<T>*, const char*> tcb[3] = {
+        {&opt.kb.tension, "tension"}, {&opt.kb.continuity, "continuity"}, {&opt.kb.bias, "bias"}};
+    for (const auto& [vals, name] : tcb) {
+        if (vals->empty()) continue;
+        if (vals->size() != n)
+            throw invalid_input(std::string("kb ") + name + " has " + std::to_string(vals->size()) +
+                                " values, expected one per point (" + std::to_string(n) + ")");
+        for (std::size_t i = first_kb; i < last_kb; ++i)
+            if (!std::isfinite((*vals)[i]))
+                throw invalid_input(std::string("kb ") + name + "[" + std::to_string(i) + "] is not finite (" +
+                                    detail::num(double((*vals)[i])) + ")");
+    }
+
+    // 2. Parameterization: knots from alpha, or the given grid.
+    points_.assign(p.begin(), p.end());
+    const std::size_t nseg = closed_ ? n : n - 1;
+    if (opt.grid) {
+        check_grid(std::span<const T>(*opt.grid), nseg + 1, closed_);
+        grid_ = *opt.grid;
+    } else {
+        const double alpha = opt.alpha.value_or(centripetal);
+        check_alpha(alpha);
+        if (opt.strict && alpha > 0) {
+            const auto bad = coincident_chords(p, closed_);
+            if (!bad.empty()) {
+                std::string msg = "coincident consecutive points (strict mode):";
+                for (std::size_t i : bad)
+                    msg += " " + std::to_string(i) + " and " + std::to_string((i + 1) % n) + ";";
+                msg.pop_back();
+                throw invalid_input(msg);
+            }
+        }
+        grid_ = knots(p, alpha, closed_);
+    }
+
+    // 3. Chord velocities v(i) = (P(i+1) - P(i)) / h(i); zero for a zero
+    //    knot interval (the limit convention for coincident points).
+    std::vector<T> h(nseg);
+    std::vector<point> v(nseg);
+    for (std::size_t i = 0; i < nseg; ++i) {
+        h[i] = grid_[i + 1] - grid_[i];
+        v[i] = h[i] > 0 ? (p[(i + 1) % n] - p[i]) / h[i] : point{};
+    }
+
+    // 4. Tangents dx/dt at each vertex: incoming (end of the segment before)
+    //    and outgoing (start of the segment after). With h0, h1 the intervals
+    //    around the vertex, the Catmull-Rom tangent is
+    //        (h1 v0 + h0 v1) / (h0 + h1)
+    //    = [h1^2 (P1 - P0) + h0^2 (P2 - P1)] / [h0 h1 (h0 + h1)];
+    //    Kochanek-Bartels weights the two terms. All-zero TCB gives weights of
+    //    exactly 1, so it is bit-for-bit the plain curve.
+    std::vector<point> in(n), out(n);
+    auto tcb_at = [&](const std::vector<T>& a, std::size_t i) { return a.empty() ? T(0) : a[i]; };
+    for (std::size_t i = first_kb; i < last_kb; ++i) {
+        const std::size_t before = (i + nseg - 1) % nseg, after = i % nseg;
+        const T h0 = h[before], h1 = h[after], sum = h0 + h1;
+        const T Tn = tcb_at(opt.kb.tension, i), Cn = tcb_at(opt.kb.continuity, i), Bn = tcb_at(opt.kb.bias, i);
+        const T a = (1 - Tn) * (1 + Cn) * (1 + Bn), b = (1 - Tn) * (1 - Cn) * (1 - Bn);
+        const T c = (1 - Tn) * (1 - Cn) * (1 + Bn), d = (1 - Tn) * (1 + Cn) * (1 - Bn);
+        if (sum > 0) {
+            in[i] = ((c * h1) * v[before] + (d * h0) * v[after]) / sum;
+            out[i] = ((a * h1) * v[before] + (b * h0) * v[after]) / sum;
+        }
+    }
+    const T keep = T(1) - opt.tension;  // tension scales every computed tangent
+    bool start_given = false, end_given = false;
+    if (!closed_) {
+        if (n == 2) {
+            // Two points: a straight line at constant speed, whatever the end
+            // conditions and the tension.
+            out[0] = in[1] = v[0];
+            start_given = end_given = true;
+        } else {
+            using kind = typename end_condition<D, T>::kind;
+            // natural: zero second derivative, from the other end's tangent.
+            switch (opt.start.type) {
+                case kind::natural: out[0] = (T(3) * v[0] - in[1]) / T(2); break;
+                case kind::reflect: out[0] = v[0]; break;
+                case kind::tangent: out[0] = opt.start.velocity; start_given = true; break;
+            }
+            switch (opt.end.type) {
+                case kind::natural: in[n - 1] = (T(3) * v[n - 2] - out[n - 2]) / T(2); break;
+                case kind::reflect: in[n - 1] = v[n - 2]; break;
+                case kind::tangent: in[n - 1] = opt.end.velocity; end_given = true; break;
+            }
+        }
+    }
+    if (keep != T(1))
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!(i == 0 && start_given)) out[i] *= keep;
+            if (!(i == n - 1 && end_given)) in[i] *= keep;
+        }
+
+    // 5. One cubic per segment, relative to its first point.
+    segments_.resize(nseg);
+    velocity_.resize(nseg);
+    for (std::size_t i = 0; i < nseg; ++i) {
+        const std::size_t j = (i + 1) % n;
+        velocity_[i] = {out[i], in[j]};
+        segments_[i] = segment_type::hermite(p[i], p[j], h[i] * out[i], h[i] * in[j], grid_[i], h[i]);
+    }
+}
+
+/// Build a curve from any range of user points (std::array, Eigen, glm, a
+/// struct with point_traits); dimension and scalar come from the point type.
+template <class Range, class P = std::remove_cvref_t<decltype(*std::begin(std::declval<const Range&>()))>>
+    requires point_like<P>
+auto make_catmull_rom(const Range& range, const options<dimension_of<P>, scalar_of<P>>& opt = {}) {
+    std::vector<vec<dimension_of<P>, scalar_of<P>>> pts;
+    for (const auto& p : range) pts.push_back(to_vec(p));
+    return catmull_rom<dimension_of<P>, scalar_of<P>>(std::span<const vec<dimension_of<P>, scalar_of<P>>>(pts), opt);
+}
+
+}  // namespace crspline

@@ -1,0 +1,11 @@
+// crspline: umbrella header. Cubic Catmull-Rom curves in any dimension.
+#pragma once
+
+#include "catmull_rom.hpp"
+#include "end_condition.hpp"
+#include "error.hpp"
+#include "parameterization.hpp"
+#include "point_traits.hpp"
+#include "segment.hpp"
+#include "vec.hpp"
+#include "version.hpp"

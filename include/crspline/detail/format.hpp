@@ -1,0 +1,24 @@
+// crspline internal: number formatting for error messages (shortest form that
+// reads back to the same value; no <format>, which libc++ 13 lacks).
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace crspline::detail {
+
+inline std::string num(double x) {
+    if (std::isnan(x)) return "nan";
+    if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+    char buf[40];
+    for (int prec = 6; prec <= 17; ++prec) {
+        std::snprintf(buf, sizeof buf, "%.*g", prec, x);
+        if (std::strtod(buf, nullptr) == x) break;
+    }
+    return buf;
+}
+
+inline std::string num(std::size_t i) { return std::to_string(i); }
+
+}  // namespace crspline::detail

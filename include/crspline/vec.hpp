@@ -1,0 +1,79 @@
+// crspline: fixed-dimension vector value type used inside the library.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+namespace crspline {
+
+/// A point or vector in D dimensions with scalar type T. An aggregate, so
+/// `vec<2>{{1.0, 2.0}}` works and it is trivially copyable.
+template <std::size_t D, class T = double>
+struct vec {
+    static_assert(D >= 1, "crspline: dimension must be at least 1");
+    static_assert(std::is_floating_point_v<T>, "crspline: scalar must be float or double");
+    using value_type = T;
+    static constexpr std::size_t dimension = D;
+
+    std::array<T, D> v{};
+
+    constexpr T& operator[](std::size_t i) noexcept { return v[i]; }
+    constexpr const T& operator[](std::size_t i) const noexcept { return v[i]; }
+    constexpr T* data() noexcept { return v.data(); }
+    constexpr const T* data() const noexcept { return v.data(); }
+    static constexpr std::size_t size() noexcept { return D; }
+
+    constexpr vec& operator+=(const vec& o) noexcept { for (std::size_t i = 0; i < D; ++i) v[i] += o.v[i]; return *this; }
+    constexpr vec& operator-=(const vec& o) noexcept { for (std::size_t i = 0; i < D; ++i) v[i] -= o.v[i]; return *this; }
+    constexpr vec& operator*=(T s) noexcept { for (std::size_t i = 0; i < D; ++i) v[i] *= s; return *this; }
+    constexpr vec& operator/=(T s) noexcept { for (std::size_t i = 0; i < D; ++i) v[i] /= s; return *this; }
+
+    friend constexpr vec operator+(vec a, const vec& b) noexcept { return a += b; }
+    friend constexpr vec operator-(vec a, const vec& b) noexcept { return a -= b; }
+    friend constexpr vec operator-(vec a) noexcept { for (auto& x : a.v) x = -x; return a; }
+    friend constexpr vec operator*(vec a, T s) noexcept { return a *= s; }
+    friend constexpr vec operator*(T s, vec a) noexcept { return a *= s; }
+    friend constexpr vec operator/(vec a, T s) noexcept { return a /= s; }
+    friend constexpr bool operator==(const vec&, const vec&) = default;
+};
+
+template <std::size_t D, class T>
+constexpr T dot(const vec<D, T>& a, const vec<D, T>& b) noexcept {
+    T s = 0;
+    for (std::size_t i = 0; i < D; ++i) s += a[i] * b[i];
+    return s;
+}
+
+/// Euclidean norm, computed with scaling so that it neither overflows nor
+/// underflows for any finite input.
+template <std::size_t D, class T>
+T norm(const vec<D, T>& a) noexcept {
+    if constexpr (D == 1) {
+        return std::abs(a[0]);
+    } else {
+        T m = 0;
+        for (std::size_t i = 0; i < D; ++i) m = std::max(m, std::abs(a[i]));
+        if (m == 0 || !std::isfinite(m)) return m;
+        T s = 0;
+        for (std::size_t i = 0; i < D; ++i) { const T x = a[i] / m; s += x * x; }
+        return m * std::sqrt(s);
+    }
+}
+
+/// Largest absolute component (the infinity norm).
+template <std::size_t D, class T>
+constexpr T max_abs(const vec<D, T>& a) noexcept {
+    T m = 0;
+    for (std::size_t i = 0; i < D; ++i) m = std::max(m, a[i] < 0 ? -a[i] : a[i]);
+    return m;
+}
+
+/// Linear interpolation written as in the paper's pyramid:
+/// (b - t) / (b - a) * p + (t - a) / (b - a) * q.
+template <std::size_t D, class T>
+constexpr vec<D, T> lerp(const vec<D, T>& p, const vec<D, T>& q, T w) noexcept {
+    return (T(1) - w) * p + w * q;
+}
+
+}  // namespace crspline
