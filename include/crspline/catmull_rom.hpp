@@ -103,6 +103,9 @@ public:
     /// Same without checks: t outside the domain extrapolates the first or last
     /// segment's cubic; order outside 0-3 gives zero.
     point evaluate_unchecked(T t, int order = 0) const noexcept {
+        // The last knot gives the last point exactly (the cubic at u = 1 is
+        // only within rounding of it).
+        if (order == 0 && t == grid_.back()) return points_[closed_ ? 0 : points_.size() - 1];
         const segment_type& s = segments_[locate(t)];
         return s.dt(s.local(t), order);
     }
@@ -184,6 +187,9 @@ private:
             run(segments_[seg], t.data() + k, out.data() + k, j - k, order);
             k = j;
         }
+        // As in evaluate_unchecked: the last knot gives the last point exactly.
+        if (order == 0)
+            for (std::size_t q = n; q-- > 0 && t[q] == grid_.back();) out[q] = points_[closed_ ? 0 : points_.size() - 1];
     }
 
     static void run(const segment_type& s, const T* t, point* out, std::size_t n, int order) noexcept {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 namespace crspline {
 
@@ -45,8 +46,9 @@ constexpr T dot(const vec<D, T>& a, const vec<D, T>& b) noexcept {
     return s;
 }
 
-/// Euclidean norm, computed with scaling so that it neither overflows nor
-/// underflows for any finite input.
+/// Euclidean norm. sqrt(a . a) as NumPy computes it (so knots agree with
+/// the `splines` package bit for bit in the common case), rescaled only when
+/// the squares would overflow or underflow.
 template <std::size_t D, class T>
 T norm(const vec<D, T>& a) noexcept {
     if constexpr (D == 1) {
@@ -55,6 +57,11 @@ T norm(const vec<D, T>& a) noexcept {
         T m = 0;
         for (std::size_t i = 0; i < D; ++i) m = std::max(m, std::abs(a[i]));
         if (m == 0 || !std::isfinite(m)) return m;
+        // Plain formula while the squares neither overflow nor lose digits
+        // to subnormals (for double: about 1e-138 < m < 1e153).
+        const T small = std::sqrt(std::numeric_limits<T>::min()) / std::numeric_limits<T>::epsilon();
+        const T big = std::sqrt(std::numeric_limits<T>::max() / T(D));
+        if (m > small && m < big) return std::sqrt(dot(a, a));
         T s = 0;
         for (std::size_t i = 0; i < D; ++i) { const T x = a[i] / m; s += x * x; }
         return m * std::sqrt(s);

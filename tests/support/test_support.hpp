@@ -1,0 +1,62 @@
+// Shared helpers for crspline's C++ tests: seeded generators that report
+// their seed, random control polygons, and scale-aware comparisons.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <crspline/crspline.hpp>
+
+#include <cstdint>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace crspline::test {
+
+/// Seed for a property test: CRSPLINE_SEED from the environment, or the
+/// given default. Reported through SCOPED_TRACE on every failure.
+inline std::uint64_t seed(std::uint64_t fallback) {
+    if (const char* s = std::getenv("CRSPLINE_SEED")) return std::strtoull(s, nullptr, 10);
+    return fallback;
+}
+
+#define CRSPLINE_SEEDED(var, fallback)                     \
+    const std::uint64_t var = ::crspline::test::seed(fallback); \
+    SCOPED_TRACE("seed " + std::to_string(var) + " (rerun with CRSPLINE_SEED=" + std::to_string(var) + ")")
+
+/// Random control polygon: a walk with uneven steps (lengths spread over
+/// `decades` orders of magnitude) and random turns, so parameterizations
+/// really differ.
+template <std::size_t D, class T = double>
+std::vector<vec<D, T>> random_polygon(std::mt19937_64& rng, std::size_t n, double decades = 2.0,
+                                      double offset = 0.0) {
+    std::normal_distribution<double> g(0.0, 1.0);
+    std::uniform_real_distribution<double> e(-decades / 2, decades / 2);
+    std::vector<vec<D, T>> p(n);
+    vec<D, double> x{};
+    for (std::size_t k = 0; k < D; ++k) x[k] = offset + g(rng);
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t k = 0; k < D; ++k) p[i][k] = T(x[k]);
+        vec<D, double> step;
+        for (std::size_t k = 0; k < D; ++k) step[k] = g(rng);
+        const double len = std::pow(10.0, e(rng));
+        const double nn = norm(step);
+        for (std::size_t k = 0; k < D; ++k) x[k] += nn > 0 ? step[k] / nn * len : len;
+    }
+    return p;
+}
+
+/// Bounding-box diagonal of a point set: the length scale of a curve.
+template <std::size_t D, class T>
+T scale_of(const std::vector<vec<D, T>>& p) {
+    vec<D, T> lo = p.front(), hi = p.front();
+    for (const auto& q : p)
+        for (std::size_t k = 0; k < D; ++k) { lo[k] = std::min(lo[k], q[k]); hi[k] = std::max(hi[k], q[k]); }
+    return norm(hi - lo);
+}
+
+template <std::size_t D, class T>
+T distance(const vec<D, T>& a, const vec<D, T>& b) { return norm(a - b); }
+
+}  // namespace crspline::test
