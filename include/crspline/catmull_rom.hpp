@@ -5,7 +5,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
+#include <utility>
 #include <limits>
 #include <optional>
 #include <span>
@@ -78,11 +80,18 @@ public:
     std::array<point, 2> tangents(std::size_t i) const { return velocity_.at(i); }
 
     // --- evaluation -----------------------------------------------------------
-    /// Index of the segment that owns t, clamped to the first and last segment.
-    /// Branch-free binary search over the knots: O(log N), no mispredictions.
+    /// Index of the segment that owns t, clamped to the first and last
+    /// segment (NaN gives the first). O(1) on average: a bucket table over
+    /// the domain narrows the candidates, a branch-free binary search
+    /// finishes (O(log N) at worst, for very uneven knots).
     std::size_t locate(T t) const noexcept {
-        const T* base = grid_.data();
-        std::size_t len = segments_.size();
+        T x = (t - grid_.front()) * bucket_scale_;
+        x = x > T(0) ? x : T(0);  // also maps NaN to 0
+        x = x < bucket_max_ ? x : bucket_max_;
+        const std::size_t b = std::size_t(x);
+        const std::size_t lo = bucket_first_[b], hi = bucket_first_[b + 1];
+        const T* base = grid_.data() + lo;
+        std::size_t len = hi - lo + 1;
         while (len > 1) {
             const std::size_t half = len / 2;
             base = (base[half] <= t) ? base + half : base;
@@ -122,14 +131,12 @@ public:
         if (out.size() != t.size())
             throw invalid_input("output has " + std::to_string(out.size()) + " points for " +
                                 std::to_string(t.size()) + " parameter values");
-        bool sorted = true;
-        for (std::size_t k = 0; k < t.size(); ++k) {
-            check_t(t[k], k);
-            if (k > 0 && t[k] < t[k - 1]) sorted = false;
-        }
-        if (sorted) evaluate_sorted(t, out, order);
-        else
-            for (std::size_t k = 0; k < t.size(); ++k) out[k] = evaluate_unchecked(t[k], order);
+        if (t.empty()) return;
+        // Try the sorted walk: it checks order as it goes, without a branch
+        // per point, and sorted input is in the domain iff its two ends are.
+        if (t.front() >= grid_.front() && t.back() <= grid_.back() && evaluate_sorted(t, out, order)) return;
+        for (std::size_t k = 0; k < t.size(); ++k) check_t(t[k], k);
+        for (std::size_t k = 0; k < t.size(); ++k) out[k] = evaluate_unchecked(t[k], order);
     }
     std::vector<point> evaluate(std::span<const T> t, int order = 0) const {
         std::vector<point> out(t.size());
@@ -158,6 +165,12 @@ private:
     std::vector<segment_type> segments_;
     std::vector<std::array<point, 2>> velocity_;  // dx/dt at the ends of each segment
     bool closed_ = false;
+    // locate(): bucket b = floor((t - t_min) * bucket_scale_) holds the
+    // segments bucket_first_[b] .. bucket_first_[b + 1] as candidates.
+    std::vector<std::uint32_t> bucket_first_;
+    T bucket_scale_ = 0, bucket_max_ = 0;
+
+    void build_buckets();
 
     static void check_order(int order) {
         if (order < 0 || order > 3)
@@ -172,47 +185,87 @@ private:
                                 detail::num(double(grid_.back())) + "]");
     }
 
-    // Sorted batch: find the run of parameters inside one segment, then
-    // evaluate the run with that segment's coefficients held in registers.
-    void evaluate_sorted(std::span<const T> t, std::span<point> out, int order) const {
+    // Sorted batch: binary-search the end of the run of parameters inside
+    // one segment, then evaluate the run with that segment's coefficients
+    // held in registers. No per-point search or branch. Returns false (and
+    // the caller starts over) if t turns out not to be sorted or holds NaN.
+    bool evaluate_sorted(std::span<const T> t, std::span<point> out, int order) const {
         const std::size_t n = t.size(), nseg = segments_.size();
-        if (n == 0) return;
         std::size_t seg = locate(t[0]);
         std::size_t k = 0;
+        bool unsorted = false;
+        T previous = t[0];
         while (k < n) {
             while (seg + 1 < nseg && t[k] >= grid_[seg + 1]) ++seg;
-            const T end = seg + 1 < nseg ? grid_[seg + 1] : std::numeric_limits<T>::infinity();
-            std::size_t j = k;
-            while (j < n && t[j] < end) ++j;
-            run(segments_[seg], t.data() + k, out.data() + k, j - k, order);
+            // At least t[k] itself (on unsorted input lower_bound may say
+            // otherwise): every point is evaluated and compared with the one
+            // before it, so unsorted input is always detected.
+            const std::size_t j = seg + 1 < nseg
+                ? std::max(k + 1, std::size_t(std::lower_bound(t.begin() + std::ptrdiff_t(k), t.end(), grid_[seg + 1]) - t.begin()))
+                : n;
+            unsorted |= run(segments_[seg], t.data() + k, out.data() + k, j - k, order, previous);
             k = j;
         }
+        if (unsorted) return false;
         // As in evaluate_unchecked: the last knot gives the last point exactly.
         if (order == 0)
             for (std::size_t q = n; q-- > 0 && t[q] == grid_.back();) out[q] = points_[closed_ ? 0 : points_.size() - 1];
+        return true;
     }
 
-    static void run(const segment_type& s, const T* t, point* out, std::size_t n, int order) noexcept {
+    // The per-run kernels. The dimension loop is unrolled at compile time
+    // (index_sequence) so the coefficients stay in registers and each point
+    // costs one subtract, one multiply and three multiply-adds per coordinate.
+    // Each also folds "is t still sorted (and not NaN)?" into the loop:
+    // !(previous <= t) costs a compare and an or, no branch.
+    template <std::size_t... d>
+    static bool run_position(const segment_type& s, const T* t, point* out, std::size_t n, T& previous,
+                             std::index_sequence<d...>) noexcept {
         const T t0 = s.t0, ih = s.inv_h;
+        const T o[D] = {s.origin[d]...}, a[D] = {s.c1[d]...}, b[D] = {s.c2[d]...}, c[D] = {s.c3[d]...};
+        unsigned bad = 0;
+        T prev = previous;
+        for (std::size_t k = 0; k < n; ++k) {
+            const T x = t[k];
+            bad |= unsigned(!(prev <= x));
+            prev = x;
+            const T u = (x - t0) * ih;
+            ((out[k][d] = o[d] + u * (a[d] + u * (b[d] + u * c[d]))), ...);
+        }
+        previous = prev;
+        return bad != 0;
+    }
+    template <std::size_t... d>
+    static bool run_velocity(const segment_type& s, const T* t, point* out, std::size_t n, T& previous,
+                             std::index_sequence<d...>) noexcept {
+        const T t0 = s.t0, ih = s.inv_h;
+        // dx/dt = (c1 + 2 c2 u + 3 c3 u^2) / h with 1/h folded into the coefficients.
+        const T a[D] = {(s.c1[d] * ih)...}, b[D] = {(T(2) * ih * s.c2[d])...}, c[D] = {(T(3) * ih * s.c3[d])...};
+        unsigned bad = 0;
+        T prev = previous;
+        for (std::size_t k = 0; k < n; ++k) {
+            const T x = t[k];
+            bad |= unsigned(!(prev <= x));
+            prev = x;
+            const T u = (x - t0) * ih;
+            ((out[k][d] = a[d] + u * (b[d] + u * c[d])), ...);
+        }
+        previous = prev;
+        return bad != 0;
+    }
+    static bool run(const segment_type& s, const T* t, point* out, std::size_t n, int order, T& previous) noexcept {
         switch (order) {
-            case 0: {
-                const point o = s.origin, a = s.c1, b = s.c2, c = s.c3;
+            case 0: return run_position(s, t, out, n, previous, std::make_index_sequence<D>{});
+            case 1: return run_velocity(s, t, out, n, previous, std::make_index_sequence<D>{});
+            default: {
+                unsigned bad = 0;
                 for (std::size_t k = 0; k < n; ++k) {
-                    const T u = (t[k] - t0) * ih;
-                    for (std::size_t d = 0; d < D; ++d) out[k][d] = o[d] + u * (a[d] + u * (b[d] + u * c[d]));
+                    bad |= unsigned(!(previous <= t[k]));
+                    previous = t[k];
+                    out[k] = s.dt(s.local(t[k]), order);
                 }
-                break;
+                return bad != 0;
             }
-            case 1: {
-                const point a = s.c1 * ih, b = (T(2) * ih) * s.c2, c = (T(3) * ih) * s.c3;
-                for (std::size_t k = 0; k < n; ++k) {
-                    const T u = (t[k] - t0) * ih;
-                    for (std::size_t d = 0; d < D; ++d) out[k][d] = a[d] + u * (b[d] + u * c[d]);
-                }
-                break;
-            }
-            default:
-                for (std::size_t k = 0; k < n; ++k) out[k] = s.dt(s.local(t[k]), order);
         }
     }
 
@@ -343,6 +396,40 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
         velocity_[i] = {out[i], in[j]};
         segments_[i] = segment_type::hermite(p[i], p[j], h[i] * out[i], h[i] * in[j], grid_[i], h[i]);
     }
+    build_buckets();
+}
+
+template <std::size_t D, class T>
+void catmull_rom<D, T>::build_buckets() {
+    // One bucket per segment. Segment i starts in bucket b(i) computed with
+    // the same arithmetic as locate(), so monotonicity gives: every segment
+    // with b(i) < b starts at or before any t in bucket b, none with b(i) > b
+    // does. The owner of t is thus between the last segment starting before
+    // bucket b and the last one starting in it.
+    const std::size_t nseg = segments_.size();
+    if (nseg >= std::numeric_limits<std::uint32_t>::max())
+        throw invalid_input("too many segments (" + std::to_string(nseg) + ")");
+    const T span = grid_.back() - grid_.front();
+    const std::size_t nb = nseg;
+    bucket_scale_ = span > 0 ? T(nb) / span : T(0);
+    bucket_max_ = T(nb - 1);
+    if (!std::isfinite(bucket_scale_)) bucket_scale_ = 0;
+    std::vector<std::uint32_t> count(nb + 1, 0);  // count[b + 1] = segments starting in bucket b
+    for (std::size_t i = 0; i < nseg; ++i) {
+        T x = (grid_[i] - grid_.front()) * bucket_scale_;
+        x = x > T(0) ? x : T(0);
+        x = x < bucket_max_ ? x : bucket_max_;
+        ++count[std::size_t(x) + 1];
+    }
+    // bucket_first_[b] = last segment starting before bucket b (or 0);
+    // bucket_first_[b + 1] = last segment starting in or before bucket b.
+    bucket_first_.assign(nb + 1, 0);
+    std::size_t before = 0;  // segments starting in buckets < b
+    for (std::size_t b = 0; b < nb; ++b) {
+        bucket_first_[b] = std::uint32_t(before > 0 ? before - 1 : 0);
+        before += count[b + 1];
+    }
+    bucket_first_[nb] = std::uint32_t(nseg - 1);
 }
 
 /// Build a curve from any range of user points (std::array, Eigen, glm, a
