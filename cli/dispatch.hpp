@@ -1,0 +1,83 @@
+// crspline command line: from the run-time dimension to the compile-time one.
+//
+// The library fixes the dimension at compile time (catmull_rom<D, T>); the
+// input fixes it at run time. with_dimension() calls a generic lambda with
+// std::integral_constant<std::size_t, D> for D = 1..4, and make_curve<D>()
+// builds the curve from the run-time description.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include <crspline/crspline.hpp>
+
+#include "json_input.hpp"
+
+namespace crspline::cli {
+
+inline constexpr std::size_t max_dimension = 4;
+
+/// f(std::integral_constant<std::size_t, D>{}) for the given dimension 1..4.
+template <class F>
+decltype(auto) with_dimension(std::size_t dimension, F&& f) {
+    switch (dimension) {
+        case 1: return std::forward<F>(f)(std::integral_constant<std::size_t, 1>{});
+        case 2: return std::forward<F>(f)(std::integral_constant<std::size_t, 2>{});
+        case 3: return std::forward<F>(f)(std::integral_constant<std::size_t, 3>{});
+        case 4: return std::forward<F>(f)(std::integral_constant<std::size_t, 4>{});
+        default: throw input_error("points: expected 1 to 4 coordinates per point, got " + std::to_string(dimension));
+    }
+}
+
+/// The coordinates of a run-time point as a vec<D> (the size was validated).
+template <std::size_t D>
+vec<D, double> to_point(const std::vector<double>& c) {
+    vec<D, double> p;
+    for (std::size_t k = 0; k < D; ++k) p[k] = c[k];
+    return p;
+}
+
+template <std::size_t D>
+end_condition<D, double> to_end_condition(const end_spec& e) {
+    switch (e.type) {
+        case end_spec::kind::reflect: return end_condition<D, double>::reflect();
+        case end_spec::kind::tangent: return end_condition<D, double>::tangent(to_point<D>(e.velocity));
+        case end_spec::kind::natural: break;
+    }
+    return end_condition<D, double>::natural();
+}
+
+/// The library's options for a validated description.
+template <std::size_t D>
+options<D, double> to_options(const curve_spec& c) {
+    options<D, double> opt;
+    opt.alpha = c.alpha;
+    opt.grid = c.grid;
+    opt.closed = c.closed;
+    if (!c.closed) {
+        opt.start = to_end_condition<D>(c.start);
+        opt.end = to_end_condition<D>(c.end);
+    }
+    opt.tension = c.tension;
+    opt.kb.tension = c.kb_tension;
+    opt.kb.continuity = c.kb_continuity;
+    opt.kb.bias = c.kb_bias;
+    opt.strict = c.strict;
+    return opt;
+}
+
+/// Builds the curve; the library throws invalid_input for what the
+/// description cannot rule out by itself (coincident points in strict mode).
+template <std::size_t D>
+catmull_rom<D, double> make_curve(const curve_spec& c) {
+    std::vector<vec<D, double>> pts;
+    pts.reserve(c.points.size());
+    for (const auto& p : c.points) pts.push_back(to_point<D>(p));
+    return catmull_rom<D, double>(std::span<const vec<D, double>>(pts), to_options<D>(c));
+}
+
+}  // namespace crspline::cli

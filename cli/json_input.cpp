@@ -1,0 +1,405 @@
+// crspline command line: input reading, JSON parsing with positions, and
+// validation of the JSON contract. See json_input.hpp.
+#include "json_input.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <iterator>
+#include <utility>
+
+namespace crspline::cli {
+
+using nlohmann::json;
+
+// --- reading -------------------------------------------------------------------
+
+input_text read_input(const std::string& path) {
+    input_text in;
+    if (path.empty() || path == "-") {
+        // stdin: read everything, bytes as they are.
+        in.name = "<stdin>";
+        in.text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+        if (std::cin.bad()) throw input_error(in.name + ": cannot read");
+        return in;
+    }
+    in.name = path;
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) throw input_error(path + ": cannot open: " + std::strerror(errno));
+    std::array<char, 1 << 16> buf;
+    std::size_t got;
+    while ((got = std::fread(buf.data(), 1, buf.size(), f)) > 0) in.text.append(buf.data(), got);
+    const bool failed = std::ferror(f) != 0;
+    const int err = errno;  // a directory opens but fails to read (EISDIR)
+    std::fclose(f);
+    if (failed) throw input_error(path + ": cannot read: " + std::strerror(err));
+    return in;
+}
+
+// --- parsing -------------------------------------------------------------------
+
+namespace {
+
+// Builds the document like nlohmann's own DOM parser, but knows at every
+// moment the path of the value being read ("points[3][1]"), so that a number
+// too large for a double is reported by its field, and rejects duplicate keys
+// (nlohmann would silently keep the last one).
+class path_tracking_parser final : public nlohmann::json_sax<json> {
+public:
+    explicit path_tracking_parser(const input_text& in) : in_(in) {}
+
+    json root;
+    std::string error;  // set when parsing stopped
+
+    bool null() override { return add(json(nullptr)); }
+    bool boolean(bool v) override { return add(json(v)); }
+    bool number_integer(number_integer_t v) override { return add(json(v)); }
+    bool number_unsigned(number_unsigned_t v) override { return add(json(v)); }
+    bool number_float(number_float_t v, const string_t&) override { return add(json(v)); }
+    bool string(string_t& v) override { return add(json(std::move(v))); }
+    bool binary(binary_t& v) override { return add(json::binary(std::move(v))); }
+
+    bool start_object(std::size_t) override { return open(json::object()); }
+    bool key(string_t& k) override {
+        frame& f = stack_.back();
+        if (f.value->contains(k)) {
+            error = prefix(path_of_parent()) + "duplicate field '" + k + "'";
+            return false;
+        }
+        f.key = k;
+        return true;
+    }
+    bool end_object() override { return close(); }
+    bool start_array(std::size_t) override { return open(json::array()); }
+    bool end_array() override { return close(); }
+
+    bool parse_error(std::size_t position, const std::string& last_token,
+                     const nlohmann::detail::exception& ex) override {
+        if (ex.id == 406) {
+            // "number overflow parsing '1e999'": a literal beyond the double range.
+            error = prefix(path_of_next()) + "expected a finite number, got " + last_token;
+            return false;
+        }
+        error = in_.name + ": " + line_column(position) + ": " + strip_prefix(ex.what());
+        return false;
+    }
+
+private:
+    struct frame {
+        json* value;
+        std::string key;  // objects: the key of the value being read
+    };
+    const input_text& in_;
+    std::vector<frame> stack_;
+
+    // The value just read goes into the innermost container, or is the root.
+    json* place(json&& v) {
+        if (stack_.empty()) {
+            root = std::move(v);
+            return &root;
+        }
+        frame& f = stack_.back();
+        if (f.value->is_array()) {
+            f.value->push_back(std::move(v));
+            return &f.value->back();
+        }
+        return &((*f.value)[f.key] = std::move(v));
+    }
+    bool add(json&& v) {
+        place(std::move(v));
+        return true;
+    }
+    bool open(json&& container) {
+        json* p = place(std::move(container));
+        stack_.push_back({p, {}});
+        return true;
+    }
+    bool close() {
+        stack_.pop_back();
+        return true;
+    }
+
+    // Path of the value being read now ("points[3][1]"), or of the innermost
+    // container itself. A container below the innermost one was the last
+    // value added to its parent, at index size - 1.
+    std::string path(bool include_next) const {
+        std::string p;
+        const std::size_t n = stack_.size(), upto = include_next ? n : (n == 0 ? 0 : n - 1);
+        for (std::size_t i = 0; i < upto; ++i) {
+            const frame& f = stack_[i];
+            if (f.value->is_array()) p += "[" + std::to_string(i + 1 == n ? f.value->size() : f.value->size() - 1) + "]";
+            else p += (p.empty() ? "" : ".") + f.key;
+        }
+        return p;
+    }
+    std::string path_of_next() const { return path(true); }
+    std::string path_of_parent() const { return path(false); }
+    std::string prefix(const std::string& path) const { return (path.empty() ? in_.name : path) + ": "; }
+
+    // nlohmann counts the end of input as one character read; the offending
+    // character is the last one read, at byte index position - 1.
+    std::string line_column(std::size_t position) const {
+        const std::size_t at = std::min(position == 0 ? 0 : position - 1, in_.text.size());
+        const std::size_t line = 1 + std::size_t(std::count(in_.text.begin(), in_.text.begin() + std::ptrdiff_t(at), '\n'));
+        const std::size_t nl = at == 0 ? std::string::npos : in_.text.rfind('\n', at - 1);
+        const std::size_t column = nl == std::string::npos ? at + 1 : at - nl;
+        return "line " + std::to_string(line) + ", column " + std::to_string(column);
+    }
+
+    // "[json.exception.parse_error.101] parse error at line 2, column 11: syntax
+    // error ..." -> "syntax error ...": the position is given by ourselves.
+    static std::string strip_prefix(std::string msg) {
+        if (const auto c = msg.find("column "); c != std::string::npos)
+            if (const auto colon = msg.find(": ", c); colon != std::string::npos) return msg.substr(colon + 2);
+        if (const auto b = msg.find("] "); b != std::string::npos) return msg.substr(b + 2);
+        return msg;
+    }
+};
+
+}  // namespace
+
+json parse_json(const input_text& in) {
+    path_tracking_parser p(in);
+    const bool ok = json::sax_parse(in.text, &p);
+    if (!ok) throw input_error(p.error.empty() ? in.name + ": not valid JSON" : p.error);
+    return std::move(p.root);
+}
+
+// --- validation helpers ----------------------------------------------------------
+
+std::string format_number(double x) {
+    if (std::isnan(x)) return "nan";
+    if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+    std::array<char, 64> buf;
+    const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), x);
+    return std::string(buf.data(), r.ptr);
+}
+
+namespace {
+
+// The offending value as it appears in JSON, shortened when long.
+std::string describe(const json& v) {
+    if (v.is_number()) return format_number(v.get<double>());
+    std::string s = v.dump(-1, ' ', false, json::error_handler_t::replace);
+    if (s.size() > 40) s = s.substr(0, 37) + "...";
+    return s;
+}
+
+std::string index(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) { throw input_error(path + ": " + what); }
+
+double finite_number(const json& v, const std::string& path) {
+    if (!v.is_number()) fail(path, "expected a finite number, got " + describe(v));
+    const double x = v.get<double>();
+    if (!std::isfinite(x)) fail(path, "expected a finite number, got " + describe(v));
+    return x;
+}
+
+const json& array(const json& v, const std::string& path, const char* of_what) {
+    if (!v.is_array()) fail(path, std::string("expected an array of ") + of_what + ", got " + describe(v));
+    return v;
+}
+
+std::vector<double> finite_numbers(const json& v, const std::string& path) {
+    array(v, path, "numbers");
+    std::vector<double> out;
+    out.reserve(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(finite_number(v[i], index(path, i)));
+    return out;
+}
+
+// Top-level fields the other subcommands take, for a helpful message.
+struct foreign_field {
+    std::string_view name, command;
+};
+constexpr foreign_field foreign_fields[] = {{"t", "eval"}, {"derivatives", "eval"}};
+
+void check_fields(const json& root, std::string_view command, std::initializer_list<std::string_view> extra) {
+    for (const auto& item : root.items()) {
+        const std::string& key = item.key();  // not a structured binding: clang 14 cannot capture those
+        const auto known = [&key](std::string_view k) { return k == key; };
+        if (std::any_of(std::begin(curve_fields), std::end(curve_fields), known) ||
+            std::any_of(extra.begin(), extra.end(), known))
+            continue;
+        for (const auto& f : foreign_fields)
+            if (f.name == key)
+                fail(key, "only 'crspline " + std::string(f.command) + "' takes this field, not 'crspline " +
+                              std::string(command) + "'");
+        throw input_error("unknown field '" + key + "'");
+    }
+}
+
+// "natural" | "reflect" | [dx/dt, ...] for one end of the object form.
+end_spec parse_end(const json& v, const std::string& path, std::size_t dim) {
+    const std::string expected = "expected \"natural\", \"reflect\" or a tangent [dx/dt, ...], got ";
+    end_spec e;
+    if (v.is_string()) {
+        const auto& s = v.get_ref<const std::string&>();
+        if (s == "natural") e.type = end_spec::kind::natural;
+        else if (s == "reflect") e.type = end_spec::kind::reflect;
+        else fail(path, expected + describe(v));
+        return e;
+    }
+    if (!v.is_array()) fail(path, expected + describe(v));
+    if (v.size() != dim)
+        fail(path, "expected a tangent of " + std::to_string(dim) + " coordinates like the points, got " +
+                       std::to_string(v.size()));
+    e.type = end_spec::kind::tangent;
+    e.velocity = finite_numbers(v, path);
+    return e;
+}
+
+// kb.tension / kb.continuity / kb.bias: one finite value per vertex; null
+// only where the library ignores the value (the end vertices of an open curve).
+std::vector<double> parse_kb_values(const json& v, const std::string& path, std::size_t n, bool closed) {
+    array(v, path, "numbers, one per point");
+    if (v.size() != n)
+        fail(path, "expected " + std::to_string(n) + " values (one per point), got " + std::to_string(v.size()));
+    std::vector<double> out(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (v[i].is_null() && !closed && (i == 0 || i + 1 == n)) continue;  // ignored end vertex
+        if (v[i].is_null())
+            fail(index(path, i), "expected a finite number, got null (null is allowed only at the two end "
+                                 "vertices of an open curve)");
+        out[i] = finite_number(v[i], index(path, i));
+    }
+    return out;
+}
+
+}  // namespace
+
+// --- the contract ------------------------------------------------------------------
+
+curve_spec parse_curve(const json& root, std::string_view command, std::initializer_list<std::string_view> extra) {
+    if (!root.is_object()) throw input_error("expected a JSON object {\"points\": ...}, got " + describe(root));
+    // Unknown fields first: a typo is the likeliest cause of any later error.
+    check_fields(root, command, extra);
+    curve_spec c;
+
+    // points: N x D finite numbers, D in 1..4 and the same for every point.
+    if (!root.contains("points")) throw input_error("missing field 'points'");
+    const json& pts = array(root["points"], "points", "points");
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        const std::string at = index("points", i);
+        const json& p = array(pts[i], at, "coordinates");
+        if (i == 0 && (p.empty() || p.size() > 4))
+            fail(at, "expected 1 to 4 coordinates, got " + std::to_string(p.size()));
+        if (i > 0 && p.size() != c.dimension)
+            fail(at, "expected " + std::to_string(c.dimension) + " coordinates like points[0], got " +
+                         std::to_string(p.size()));
+        c.dimension = p.size();
+        std::vector<double> q;
+        for (std::size_t k = 0; k < p.size(); ++k) q.push_back(finite_number(p[k], index(at, k)));
+        c.points.push_back(std::move(q));
+    }
+    if (pts.empty()) fail("points", "a curve needs at least 2 points, got 0");
+
+    // end: "natural" | "reflect" | "closed" | {"start": E, "end": E}.
+    if (root.contains("end")) {
+        const json& e = root["end"];
+        const std::string expected =
+            "expected \"natural\", \"reflect\", \"closed\" or {\"start\": ..., \"end\": ...}, got ";
+        if (e.is_string()) {
+            const auto& s = e.get_ref<const std::string&>();
+            if (s == "closed") c.closed = true;
+            else if (s == "natural") c.start.type = c.end.type = end_spec::kind::natural;
+            else if (s == "reflect") c.start.type = c.end.type = end_spec::kind::reflect;
+            else fail("end", expected + describe(e));
+        } else if (e.is_object()) {
+            for (const auto& [key, value] : e.items()) {
+                if (key == "start") c.start = parse_end(value, "end.start", c.dimension);
+                else if (key == "end") c.end = parse_end(value, "end.end", c.dimension);
+                else fail("end", "unknown field '" + key + "' (expected \"start\" and \"end\")");
+            }
+        } else {
+            fail("end", expected + describe(e));
+        }
+    }
+    const std::size_t n = c.points.size(), needed = c.closed ? 3 : 2;
+    if (n < needed)
+        fail("points", std::string(c.closed ? "a closed curve" : "a curve") + " needs at least " +
+                           std::to_string(needed) + " points, got " + std::to_string(n));
+
+    // alpha or grid (not both); default alpha 0.5.
+    if (root.contains("alpha") && root.contains("grid")) fail("grid", "give alpha or grid, not both");
+    if (root.contains("alpha")) {
+        const double a = finite_number(root["alpha"], "alpha");
+        if (!(a >= 0 && a <= 1)) fail("alpha", "must be in [0, 1], got " + format_number(a));
+        c.alpha = a;
+    }
+    if (root.contains("grid")) {
+        std::vector<double> g = finite_numbers(root["grid"], "grid");
+        const std::size_t expected = c.closed ? n + 1 : n;
+        if (g.size() != expected)
+            fail("grid", "expected " + std::to_string(expected) + " values (" +
+                             (c.closed ? "one per point plus one to close the curve" : "one per point") +
+                             "), got " + std::to_string(g.size()));
+        for (std::size_t i = 1; i < g.size(); ++i)
+            if (!(g[i] > g[i - 1]))
+                fail(index("grid", i), "must be greater than grid[" + std::to_string(i - 1) + "] = " +
+                                           format_number(g[i - 1]) + ", got " + format_number(g[i]));
+        c.grid = std::move(g);
+    }
+
+    // tension: tangents scaled by 1 - tension.
+    if (root.contains("tension")) {
+        c.tension = finite_number(root["tension"], "tension");
+        if (!(c.tension >= 0 && c.tension <= 1)) fail("tension", "must be in [0, 1], got " + format_number(c.tension));
+    }
+
+    // kb: per-vertex Kochanek-Bartels values; a missing array means zeros.
+    if (root.contains("kb")) {
+        const json& kb = root["kb"];
+        if (!kb.is_object())
+            fail("kb", "expected {\"tension\": [...], \"continuity\": [...], \"bias\": [...]}, got " + describe(kb));
+        for (const auto& [key, value] : kb.items()) {
+            const std::string path = "kb." + key;
+            if (key == "tension") c.kb_tension = parse_kb_values(value, path, n, c.closed);
+            else if (key == "continuity") c.kb_continuity = parse_kb_values(value, path, n, c.closed);
+            else if (key == "bias") c.kb_bias = parse_kb_values(value, path, n, c.closed);
+            else fail("kb", "unknown field '" + key + "' (expected \"tension\", \"continuity\", \"bias\")");
+        }
+    }
+
+    if (root.contains("strict")) {
+        const json& s = root["strict"];
+        if (!s.is_boolean()) fail("strict", "expected true or false, got " + describe(s));
+        c.strict = s.get<bool>();
+    }
+    return c;
+}
+
+eval_spec parse_eval(const json& root) {
+    eval_spec e;
+    e.curve = parse_curve(root, "eval", {"t", "derivatives"});
+    if (!root.contains("t")) throw input_error("missing field 't' (the parameter values to evaluate at)");
+    e.t = finite_numbers(root["t"], "t");
+    if (!root.contains("derivatives")) {
+        e.derivatives = {0};
+        return e;
+    }
+    const json& d = array(root["derivatives"], "derivatives", "derivative orders");
+    if (d.empty()) fail("derivatives", "expected at least one order (0, 1, 2 or 3), got []");
+    for (std::size_t i = 0; i < d.size(); ++i) {
+        const std::string at = index("derivatives", i);
+        const double x = d[i].is_number() ? d[i].get<double>() : -1.0;
+        if (!(x == 0 || x == 1 || x == 2 || x == 3)) fail(at, "expected 0, 1, 2 or 3, got " + describe(d[i]));
+        const int order = int(x);
+        const auto seen = std::find(e.derivatives.begin(), e.derivatives.end(), order);
+        if (seen != e.derivatives.end())
+            fail(at, "order " + std::to_string(order) + " is already requested by " +
+                         index("derivatives", std::size_t(seen - e.derivatives.begin())));
+        e.derivatives.push_back(order);
+    }
+    return e;
+}
+
+bezier_spec parse_bezier(const json& root) { return {parse_curve(root, "bezier", {})}; }
+
+}  // namespace crspline::cli

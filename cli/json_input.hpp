@@ -1,0 +1,91 @@
+// crspline command line: reading the input and turning the JSON contract into
+// a run-time description of the work (dimension known only at run time).
+//
+// Every problem with the input is reported as an input_error whose message
+// names the field, the index and the offending value, e.g.
+//   points[3][1]: expected a finite number, got "abc"
+// main() prints it as one line, "crspline: <message>", and exits with 2.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace crspline::cli {
+
+/// Bad input or usage: the message is the whole line after "crspline: ".
+class input_error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// The raw text of one input and the name used in messages.
+struct input_text {
+    std::string name;  ///< the file name as given, or "<stdin>"
+    std::string text;
+};
+
+/// Reads the file named on the command line; "-" or "" reads stdin.
+/// Throws input_error "NAME: cannot open: <reason>" and the like.
+input_text read_input(const std::string& path);
+
+/// Parses JSON text. Syntax errors become "NAME: line L, column C: <what>"
+/// (column counted in bytes, the offending character's own position);
+/// numbers too large for a double become "FIELD: expected a finite number,
+/// got 1e999"; duplicate keys in an object are rejected.
+nlohmann::json parse_json(const input_text& in);
+
+/// One end of an open curve.
+struct end_spec {
+    enum class kind { natural, reflect, tangent };
+    kind type = kind::natural;
+    std::vector<double> velocity;  ///< dx/dt, one value per dimension, for kind::tangent
+};
+
+/// Everything needed to build a curve, in run-time form.
+struct curve_spec {
+    std::size_t dimension = 0;        ///< 1..4
+    std::vector<std::vector<double>> points;
+    std::optional<double> alpha;      ///< none with a grid; default 0.5 otherwise
+    std::optional<std::vector<double>> grid;
+    bool closed = false;
+    end_spec start, end;
+    double tension = 0;
+    std::vector<double> kb_tension, kb_continuity, kb_bias;  ///< empty = zeros
+    bool strict = false;
+};
+
+/// `crspline eval`: the curve, the parameters and the derivative orders.
+struct eval_spec {
+    curve_spec curve;
+    std::vector<double> t;
+    std::vector<int> derivatives;  ///< distinct, each 0..3, in the order requested
+};
+
+/// `crspline bezier`: the curve alone.
+struct bezier_spec {
+    curve_spec curve;
+};
+
+/// The fields every subcommand reads to describe a curve.
+inline constexpr std::string_view curve_fields[] = {"points", "alpha", "grid", "end", "tension", "kb", "strict"};
+
+/// Validates the curve part of a document. `extra_fields` are the other
+/// top-level keys the subcommand reads itself; any key in neither list is an
+/// error ("unknown field 'foo'"), so typos do not pass silently. `command`
+/// names the subcommand in the message for a field another subcommand takes.
+curve_spec parse_curve(const nlohmann::json& root, std::string_view command,
+                       std::initializer_list<std::string_view> extra_fields);
+
+eval_spec parse_eval(const nlohmann::json& root);
+bezier_spec parse_bezier(const nlohmann::json& root);
+
+/// Shortest text that reads back to the same double (for messages).
+std::string format_number(double x);
+
+}  // namespace crspline::cli
