@@ -114,6 +114,10 @@ TEST(Errors, OutOfDomainNamesValueAndIndex) {
     std::vector<double> t{0, 1, 2, 7, 1};
     EXPECT_EQ(message_of<out_of_domain>([&] { c.evaluate(std::span<const double>(t)); }),
               "t = 7 (index 3) is outside the domain [0, 3]");
+    // NaN inside an otherwise sorted batch is found and named.
+    std::vector<double> tn{0, 0.5, std::nan(""), 2};
+    EXPECT_EQ(message_of<out_of_domain>([&] { c.evaluate(std::span<const double>(tn)); }),
+              "t = nan (index 2) is outside the domain [0, 3]");
     EXPECT_EQ(message_of<invalid_input>([&] { c.evaluate(1.0, 4); }), "derivative order must be 0, 1, 2 or 3, got 4");
     // The unchecked call extrapolates and never throws.
     EXPECT_TRUE(std::isfinite(c.evaluate_unchecked(3.5)[0]));
