@@ -331,7 +331,11 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
     }
 
     // 3. Chord velocities v(i) = (P(i+1) - P(i)) / h(i); zero for a zero
-    //    knot interval (the limit convention for coincident points).
+    //    knot interval (the limit convention for coincident points). The
+    //    curve is the Catmull-Rom curve on the knots as stored: h(i) is the
+    //    difference of stored knots, so grid() passed back as an explicit
+    //    grid gives the same curve bit for bit (and the splines package's
+    //    exact reference, defined on its rounded grid, is matched).
     std::vector<T> h(nseg);
     std::vector<point> v(nseg);
     for (std::size_t i = 0; i < nseg; ++i) {

@@ -69,29 +69,37 @@ std::vector<std::size_t> coincident_chords(std::span<const vec<D, T>> p, bool cl
     return out;
 }
 
-/// Knots for points with the given alpha; n+1 knots when closed.
-/// Coincident chords (see coincident()) get a zero interval when alpha > 0.
+/// Knot intervals |P(i+1) - P(i)|^alpha, one per chord (n - 1, or n when
+/// closed, the last one wrapping to P(0)). Coincident chords (see
+/// coincident()) get a zero interval when alpha > 0.
 template <std::size_t D, class T>
-std::vector<T> knots(std::span<const vec<D, T>> p, double alpha, bool closed = false) {
+std::vector<T> knot_intervals(std::span<const vec<D, T>> p, double alpha, bool closed = false) {
     check_alpha(alpha);
     check_finite(p);
     const std::size_t n = p.size();
-    std::vector<T> t(n == 0 ? 0 : (closed ? n + 1 : n));
-    if (n == 0) return t;
-    t[0] = 0;
-    std::vector<bool> zero(closed ? n : n - 1, false);
+    std::vector<T> h(n < 2 ? 0 : (closed ? n : n - 1));
+    std::vector<bool> zero(h.size(), false);
     if (alpha > 0)
         for (std::size_t i : coincident_chords(p, closed)) zero[i] = true;
-    for (std::size_t i = 0; i + 1 < t.size(); ++i) {
-        T h;
-        if (alpha == 0) h = 1;
-        else if (zero[i]) h = 0;
+    for (std::size_t i = 0; i < h.size(); ++i) {
+        if (alpha == 0) h[i] = 1;
+        else if (zero[i]) h[i] = 0;
         else {
             const T d = norm(p[(i + 1) % n] - p[i]);
-            h = alpha == 1 ? d : alpha == 0.5 ? std::sqrt(d) : T(std::pow(double(d), alpha));
+            h[i] = alpha == 1 ? d : alpha == 0.5 ? std::sqrt(d) : T(std::pow(double(d), alpha));
         }
-        t[i + 1] = t[i] + h;
     }
+    return h;
+}
+
+/// Knots t(0) = 0, t(i+1) = t(i) + interval(i): n knots, n + 1 when closed.
+template <std::size_t D, class T>
+std::vector<T> knots(std::span<const vec<D, T>> p, double alpha, bool closed = false) {
+    const std::vector<T> h = knot_intervals(p, alpha, closed);
+    std::vector<T> t(p.empty() ? 0 : h.size() + 1);
+    if (t.empty()) return t;
+    t[0] = 0;
+    for (std::size_t i = 0; i < h.size(); ++i) t[i + 1] = t[i] + h[i];
     return t;
 }
 
