@@ -321,8 +321,13 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
             const auto bad = coincident_chords(p, closed_);
             if (!bad.empty()) {
                 std::string msg = "coincident consecutive points (strict mode):";
-                for (std::size_t i : bad)
-                    msg += " " + std::to_string(i) + " and " + std::to_string((i + 1) % n) + ";";
+                for (std::size_t i : bad) {
+                    msg += ' ';
+                    msg += std::to_string(i);
+                    msg += " and ";
+                    msg += std::to_string((i + 1) % n);
+                    msg += ';';
+                }
                 msg.pop_back();
                 throw invalid_input(msg);
             }
