@@ -1,6 +1,7 @@
 // crspline: umbrella header. Cubic Catmull-Rom curves in any dimension.
 #pragma once
 
+#include "arc_length.hpp"
 #include "catmull_rom.hpp"
 #include "end_condition.hpp"
 #include "error.hpp"
