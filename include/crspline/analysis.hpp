@@ -1,0 +1,615 @@
+// crspline: analysis of cubic Catmull-Rom segments (Yuksel, Schaefer and
+// Keyser 2011, "Parameterization and applications of Catmull-Rom curves").
+//
+// Per segment, in any dimension and for any alpha (or explicit knots):
+//
+//   * cusps (zero speed inside the segment) and self-intersections, with the
+//     parameters where they occur; in 1-D (or for a collinear segment) a fold,
+//     where the curve reverses;
+//   * the paper's quantities: Bézier points (Eq. 2), the projected-derivative
+//     test (Theorems 1-3), the projections of B1, B2 onto the chord, the
+//     heights h1, h2 (Eq. 5), the distance bound to the chord line (Eq. 6 in
+//     its corrected two-sided form), the endpoint bound (Eq. 8), and the
+//     measured maximum distances to the chord line and the chord segment;
+//   * curvature along the segment and where its maxima lie (Section 6.4).
+//
+// Everything is computed on the segment's cubic C(u) = B0 + c1 u + c2 u^2 +
+// c3 u^3 relative to its first point, and in the chord frame (B0 at the
+// origin, chord B3 - B0), so results keep full precision far from the origin.
+//
+// Exactness. "Zero" is decided with one relative threshold, the rounding
+// level of the coefficients: zero_speed_tolerance * (|c1| + |c2| + |c3|)
+// (see zero_speed_tolerance below for the justification). Everything else is
+// exact algebra: self-intersections of a planar segment come from solving
+// C(s) = C(t) in closed form, maxima from the roots of polynomial derivatives.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "catmull_rom.hpp"
+#include "detail/analysis_common.hpp"
+#include "detail/polynomial.hpp"
+#include "parameterization.hpp"
+#include "segment.hpp"
+#include "vec.hpp"
+
+namespace crspline {
+
+/// Relative threshold for "the speed is zero" and for "this direction is
+/// absent from the segment's span": k * epsilon * (|c1| + |c2| + |c3|).
+///
+/// Why 64: C'(u) = c1 + 2 c2 u + 3 c3 u^2 is evaluated with a few roundings
+/// of terms no larger than 6 (|c1| + |c2| + |c3|), the root u* of the speed's
+/// derivative is accurate to a few ulps (adding |C''| * ulp <= 8 eps * sum),
+/// and the coefficients themselves carry the rounding of their construction
+/// from the control points (c2 = 3 delta - 2 m0 - m1 etc.: about 10 eps *
+/// sum). Together well under 32 eps * sum; 64 leaves a factor of two. A
+/// genuine near-cusp whose minimum speed is above this (1.4e-14 relative in
+/// double) is reported as no cusp; below it, the cusp is real to rounding.
+inline constexpr double zero_speed_tolerance = 64;
+
+/// Zero-speed points closer than this (in u) to a zero-speed end are that
+/// end's zero, split by rounding (a double zero at the end moved by a
+/// relative perturbation of size tau lands about sqrt(tau) away):
+/// sqrt(64 eps) in double.
+template <class T>
+inline T end_merge_distance() noexcept {
+    return std::sqrt(T(zero_speed_tolerance) * std::numeric_limits<T>::epsilon());
+}
+
+// ---------------------------------------------------------------------------
+// The paper's closed forms, with r = d1 / d2 and alpha the knot exponent.
+// ---------------------------------------------------------------------------
+
+/// Eq. 5: distance of B1 to the chord line, d2 r^(1-a) |sin theta| / (3 (1 + r^a)),
+/// theta the polygon angle at P1 (between P0 - P1 and P2 - P1).
+template <class T>
+T paper_eq5(T d2, T r, T theta, double alpha) noexcept {
+    const T a = T(alpha);
+    return d2 * std::pow(r, 1 - a) * std::abs(std::sin(theta)) / (3 * (1 + std::pow(r, a)));
+}
+
+/// Eq. 6 for one side: d2 r^(1-a) / (4 (1 + r^a)). The paper prints only the
+/// side r = d1/d2; the bound on the whole segment needs the larger of the two
+/// sides (paper_eq6_two_sided).
+template <class T>
+T paper_eq6(T d2, T r, double alpha) noexcept {
+    const T a = T(alpha);
+    return d2 * std::pow(r, 1 - a) / (4 * (1 + std::pow(r, a)));
+}
+
+/// Eq. 6 corrected: max over r in {d1/d2, d3/d2}.
+template <class T>
+T paper_eq6_two_sided(T d1, T d2, T d3, double alpha) noexcept {
+    return std::max(paper_eq6(d2, d1 / d2, alpha), paper_eq6(d2, d3 / d2, alpha));
+}
+
+/// Eq. 8: how far B1 can lie behind B0 (beyond the chord's end),
+/// d2 sqrt(r^2 - r^(4a)) / (3 r^a (1 + r^a)) where r^2 > r^(4a), else 0 (B1
+/// cannot project behind B0: Eq. 7 has no solution).
+template <class T>
+T paper_eq8(T d2, T r, double alpha) noexcept {
+    const T a = T(alpha);
+    const T v = r * r - std::pow(r, 4 * a);
+    if (!(v > 0)) return T(0);
+    return d2 * std::sqrt(v) / (3 * std::pow(r, a) * (1 + std::pow(r, a)));
+}
+
+/// sup over r > 0 of paper_eq6(1, r, alpha): the "local" Eq. 6 factor (the
+/// bound from the edge length alone, Figure 5 top row). Infinite for alpha <
+/// 1/2; 1/4 for 1/2 and 1; 1/8 at alpha = 2/3 (the paper's minimum).
+inline double local_eq6_factor(double alpha) noexcept {
+    if (alpha < 0.5) return std::numeric_limits<double>::infinity();
+    if (alpha == 0.5 || alpha == 1.0) return 0.25;  // limits r -> infinity and r -> 0
+    // d/dr log f = 0  <=>  r^a = (1 - a) / (2a - 1)
+    const double ra = (1 - alpha) / (2 * alpha - 1);
+    const double r = std::pow(ra, 1 / alpha);
+    return std::max(0.25 * std::pow(r, 1 - alpha) / (1 + ra), 0.0);
+}
+
+/// sup over r > 0 of paper_eq8(1, r, alpha): the local Eq. 8 factor. Zero at
+/// alpha = 1/2, 1/3 for alpha = 1, infinite for alpha < 1/2. Found by a
+/// golden-section search in log r (the function is unimodal there).
+inline double local_eq8_factor(double alpha) noexcept {
+    if (alpha < 0.5) return std::numeric_limits<double>::infinity();
+    if (alpha == 0.5) return 0.0;
+    if (alpha == 1.0) return 1.0 / 3.0;  // the limit r -> 0
+    auto f = [&](double x) { return paper_eq8(1.0, std::exp(x), alpha); };
+    double lo = -60, hi = 0;  // r <= 1 is where r^2 > r^(4a) for a > 1/2
+    const double g = (std::sqrt(5.0) - 1) / 2;
+    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = f(x1), f2 = f(x2);
+    for (int it = 0; it < 200; ++it) {
+        if (f1 < f2) { lo = x1; x1 = x2; f1 = f2; x2 = lo + g * (hi - lo); f2 = f(x2); }
+        else { hi = x2; x2 = x1; f2 = f1; x1 = hi - g * (hi - lo); f1 = f(x1); }
+    }
+    // Near r -> 0 the supremum may be the limit 0 < r: compare with the edge.
+    return std::max({f1, f2, f(-60.0)});
+}
+
+/// The paper's per-segment quantities from the four control points P0..P3
+/// and the knot intervals h0 = t1 - t0, h1 = t2 - t1, h2 = t3 - t2. Written
+/// for general knots; with h = d^alpha they are exactly the printed formulas
+/// (Eq. 5, Eq. 6, Eq. 8) with r = d1/d2 at P1 and r = d3/d2 at P2.
+template <class T = double>
+struct paper_bounds {
+    T d1 = 0, d2 = 0, d3 = 0;          ///< polygon edge lengths |P1-P0|, |P2-P1|, |P3-P2|
+    T theta1 = 0, theta2 = 0;          ///< polygon angles at P1 (P0-P1, P2-P1) and at P2 (P1-P2, P3-P2)
+    T h1 = 0, h2 = 0;                  ///< Eq. 5: distances of B1, B2 to the chord line
+    T eq6_one_sided = 0;               ///< Eq. 6 as printed (r = d1/d2 only): NOT a bound in general
+    T eq6 = 0;                         ///< Eq. 6 two-sided (corrected): bounds the distance to the chord line
+    T eq8_start = 0, eq8_end = 0;      ///< Eq. 8 at P1 (r = d1/d2) and at P2 (r = d3/d2)
+};
+
+/// Paper bounds from points and knot intervals; nullopt when an edge or a
+/// knot interval is zero (the formulas divide by them).
+template <std::size_t D, class T>
+std::optional<paper_bounds<T>> segment_paper_bounds(const std::array<vec<D, T>, 4>& p,
+                                                    const std::array<T, 3>& h) noexcept {
+    paper_bounds<T> b;
+    const vec<D, T> e0 = p[1] - p[0], e1 = p[2] - p[1], e2 = p[3] - p[2];
+    b.d1 = norm(e0);
+    b.d2 = norm(e1);
+    b.d3 = norm(e2);
+    if (!(b.d1 > 0 && b.d2 > 0 && b.d3 > 0 && h[0] > 0 && h[1] > 0 && h[2] > 0)) return std::nullopt;
+    b.theta1 = detail::angle_between(vec<D, T>(-e0), e1);
+    b.theta2 = detail::angle_between(vec<D, T>(-e1), e2);
+    // B1 - P1 = [h1^2 (P1 - P0) + h0^2 (P2 - P1)] / [3 h0 (h0 + h1)]: its part
+    // perpendicular to the chord is h1^2 d1 sin(theta1) / [3 h0 (h0 + h1)].
+    const T k1 = h[1] * h[1] * b.d1 / (3 * h[0] * (h[0] + h[1]));  // |B1 - P1| part from P1 - P0
+    const T k2 = h[1] * h[1] * b.d3 / (3 * h[2] * (h[1] + h[2]));
+    b.h1 = k1 * std::sin(b.theta1);
+    b.h2 = k2 * std::sin(b.theta2);
+    // Eq. 6: 3/4 of the largest height with |sin| <= 1.
+    b.eq6_one_sided = T(0.75) * k1;
+    b.eq6 = T(0.75) * std::max(k1, k2);
+    // Eq. 8: B1 projects behind P1 iff cos(theta1) > c* = h0^2 d2 / (h1^2 d1)
+    // (Eq. 7 in general knots); |B1 - P1| is largest at cos(theta1) = c*:
+    // k1 sqrt(1 - c*^2).
+    const T c1s = h[0] * h[0] * b.d2 / (h[1] * h[1] * b.d1);
+    const T c2s = h[2] * h[2] * b.d2 / (h[1] * h[1] * b.d3);
+    b.eq8_start = c1s < 1 ? k1 * std::sqrt((1 - c1s) * (1 + c1s)) : T(0);
+    b.eq8_end = c2s < 1 ? k2 * std::sqrt((1 - c2s) * (1 + c2s)) : T(0);
+    return b;
+}
+
+// ---------------------------------------------------------------------------
+// Per-segment analysis
+// ---------------------------------------------------------------------------
+
+/// Quantities in the chord frame (B0 at the origin, chord B3 - B0), defined
+/// when the chord is not zero.
+template <class T = double>
+struct chord_projection {
+    /// (Bk - B0).(B3 - B0) / |B3 - B0|^2 for k = 1, 2. Theorem 2: both in the
+    /// open interval (0, 1) implies no cusp and no self-intersection.
+    std::array<T, 2> bezier{};
+    bool theorem2 = false;                ///< both bezier projections in (0, 1)
+    T derivative_min = 0;                 ///< min over u of C'(u).(B3-B0)/|B3-B0|^2 (Theorems 1-3)
+    T derivative_min_u = 0;
+    std::array<T, 2> range{};             ///< [min, max] over u of (C(u)-B0).(B3-B0)/|B3-B0|^2
+};
+
+/// Everything known about one segment. Parameters u are local, in [0, 1].
+template <std::size_t D, class T = double>
+struct segment_analysis {
+    using point = vec<D, T>;
+    std::size_t index = 0;                       ///< segment index in its curve (0 standalone)
+    cubic_segment<D, T> segment{};               ///< the cubic analysed (relative to B0; u-units)
+    std::array<point, 4> bezier{};               ///< B0..B3 (Eq. 2 in general form)
+    std::size_t rank = 0;                        ///< dimension of the affine span (0: a point)
+
+    // Classification (exact up to rounding; see zero_speed_tolerance).
+    std::vector<T> zero_speed_u;                 ///< C'(u) = 0, ends included
+    std::vector<T> cusp_u;                       ///< zero speed with 0 < u < 1
+    std::vector<std::array<T, 2>> self_intersection;  ///< C(u) = C(v), u < v (planar segments)
+    bool fold = false;                           ///< collinear segment that reverses (1-D fold)
+    bool has_cusp() const noexcept { return !cusp_u.empty(); }
+    /// A loop (C(u) = C(v)) or a fold (the collinear curve retraces itself).
+    bool has_self_intersection() const noexcept { return fold || !self_intersection.empty(); }
+
+    // Chord frame.
+    std::optional<chord_projection<T>> projection;  ///< nullopt for a zero chord
+    std::array<T, 2> bezier_height{};            ///< measured distances of B1, B2 to the chord line
+    T bezier_bound = 0;                          ///< 3/4 max(bezier_height): bounds the chord-line distance
+    T max_chord_line_distance = 0;               ///< max over u of the distance to the chord line
+    T max_chord_line_distance_u = 0;
+    T max_chord_distance = 0;                    ///< max over u of the distance to the closed chord segment
+    T max_chord_distance_u = 0;
+    /// Largest distance to B0 of a curve point projecting before B0 (and to
+    /// B3 of one projecting beyond B3): the overshoot Eq. 8 bounds. 0 if none.
+    std::array<T, 2> overshoot{};
+
+    std::optional<paper_bounds<T>> bounds;       ///< the paper's formulas (need P0..P3 and knots)
+};
+
+namespace detail {
+
+// Zero-speed points, cusps and folds of a segment with coefficients c[1..3]
+// and span frame f (rank >= 1).
+template <std::size_t D, class T>
+void classify_speed(segment_analysis<D, T>& a, const std::array<vec<D, T>, 4>& c, const span_frame<D, T>& f,
+                    T thr) {
+    const vec<D, T> end_speed = c[1] + T(2) * c[2] + T(3) * c[3];
+    const bool zero0 = norm(c[1]) <= thr, zero1 = norm(end_speed) <= thr;
+    const T merge = end_merge_distance<T>();
+    std::vector<T> interior;
+    if (f.rank == 1) {
+        // Along the line: q(u) = e . C'(u), a quadratic.
+        const vec<D, T>& e = f.e[0];
+        const std::array<T, 3> q{dot(e, c[1]), T(2) * dot(e, c[2]), T(3) * dot(e, c[3])};
+        T qmin = std::min(detail::horner(q, T(0)), detail::horner(q, T(1))), qmax = std::max(detail::horner(q, T(0)), detail::horner(q, T(1)));
+        std::optional<T> vertex;
+        if (q[2] != 0) {
+            const T v = -q[1] / (2 * q[2]);
+            if (v > 0 && v < 1) {
+                vertex = v;
+                const T qv = detail::horner(q, v);
+                qmin = std::min(qmin, qv);
+                qmax = std::max(qmax, qv);
+            }
+        }
+        // Non-monotone by more than rounding: the curve retraces itself.
+        a.fold = qmin < -thr && qmax > thr;
+        if (vertex && std::abs(detail::horner(q, *vertex)) <= thr) {
+            interior.push_back(*vertex);  // touches zero: a double zero
+        } else {
+            for (T r : detail::real_roots(q, T(0), T(1))) interior.push_back(r);
+        }
+    } else {
+        // Minima of |C'(u)|^2: roots of C'.C'' (a cubic), then is the speed
+        // zero there? C' = A + B u + C u^2 with A = c1, B = 2 c2, C = 3 c3.
+        const std::array<vec<D, T>, 3> d1{c[1], T(2) * c[2], T(3) * c[3]};
+        const std::array<vec<D, T>, 2> d2{T(2) * c[2], T(6) * c[3]};
+        const auto g = dot_poly(d1, d2);
+        for (T r : detail::real_roots(g, T(0), T(1)))
+            if (norm(horner_vec(d1, r)) <= thr) interior.push_back(r);
+    }
+    if (zero0) a.zero_speed_u.push_back(T(0));
+    for (T u : interior) {
+        if (zero0 && u <= merge) continue;
+        if (zero1 && u >= 1 - merge) continue;
+        if (!(u > 0 && u < 1)) continue;
+        if (!a.zero_speed_u.empty() && u - a.zero_speed_u.back() <= merge && a.zero_speed_u.back() > 0) continue;
+        a.zero_speed_u.push_back(u);
+        a.cusp_u.push_back(u);
+    }
+    if (zero1) a.zero_speed_u.push_back(T(1));
+}
+
+// Self-intersection C(s) = C(t), s < t in [0, 1], of a segment whose span is
+// a plane. With sigma = s + t and w = s^2 + s t + t^2 = sigma^2 - s t,
+// (C(s) - C(t)) / (s - t) = c1 + c2 sigma + c3 w = 0: two linear equations
+// in (sigma, w), solved by Cramer's rule in the plane's coordinates.
+template <std::size_t D, class T>
+void find_loop(segment_analysis<D, T>& a, const std::array<vec<D, T>, 4>& c, const span_frame<D, T>& f,
+               T scale) {
+    std::array<std::array<T, 2>, 4> q{};  // c_k in plane coordinates
+    for (std::size_t k = 1; k < 4; ++k) {
+        if constexpr (D == 2) {
+            q[k] = {c[k][0], c[k][1]};
+        } else {
+            q[k] = {dot(c[k], f.e[0]), dot(c[k], f.e[1])};
+        }
+    }
+    auto cross = [](const std::array<T, 2>& x, const std::array<T, 2>& y) { return x[0] * y[1] - x[1] * y[0]; };
+    const T det = cross(q[2], q[3]);
+    if (det == 0) return;  // c2 || c3 and c1 off their line: no solution
+    const T sigma = cross(q[3], q[1]) / det;
+    const T w = cross(q[1], q[2]) / det;
+    const T disc = 4 * w - 3 * sigma * sigma;  // (t - s)^2
+    if (!(disc > 0) || !std::isfinite(disc)) return;  // disc == 0 is a cusp, < 0 no real pair
+    const T root = std::sqrt(disc);
+    const T prod = sigma * sigma - w;  // s t
+    T s, t;
+    if (sigma >= 0) {
+        t = (sigma + root) / 2;
+        s = t != 0 ? prod / t : (sigma - root) / 2;
+    } else {
+        s = (sigma - root) / 2;
+        t = s != 0 ? prod / s : (sigma + root) / 2;
+    }
+    if (s > t) std::swap(s, t);
+    // Allow the ends to be missed by a few ulps of rounding.
+    const T slack = 8 * std::numeric_limits<T>::epsilon();
+    if (!(s >= -slack && t <= 1 + slack && s < t)) return;
+    s = std::max(s, T(0));
+    t = std::min(t, T(1));
+    // Guard against a nearly singular system: the two points must coincide.
+    const T gap = norm(horner_vec(c, s) - horner_vec(c, t));
+    if (!(gap <= T(1e-8) * scale)) return;
+    a.self_intersection.push_back({s, t});
+}
+
+// Largest value of the true function dist(u) over the candidate parameters.
+template <class T, class F>
+void keep_max(T& best, T& best_u, T u, F&& dist) {
+    const T d = dist(u);
+    if (d > best) { best = d; best_u = u; }
+}
+
+}  // namespace detail
+
+/// Analysis of a cubic segment on its own: classification, chord frame,
+/// measured distances. No paper bounds (those need the control points and
+/// knots: see the other overloads).
+template <std::size_t D, class T>
+segment_analysis<D, T> analyze_segment(const cubic_segment<D, T>& seg) {
+    using point = vec<D, T>;
+    segment_analysis<D, T> a;
+    a.segment = seg;
+    a.bezier = to_bezier(seg);
+    const std::array<point, 4> c = detail::relative_coefficients(seg);
+    const T scale = norm(c[1]) + norm(c[2]) + norm(c[3]);
+    const T thr = T(zero_speed_tolerance) * std::numeric_limits<T>::epsilon() * scale;
+    if (!(scale > 0)) return a;  // a constant segment: rank 0, nothing moves
+
+    // 1. Span and classification.
+    const auto f = detail::orthonormal_span<D, T>({c[1], c[2], c[3]}, thr);
+    a.rank = f.rank;
+    detail::classify_speed(a, c, f, thr);
+    if (f.rank == 2 && a.cusp_u.empty()) detail::find_loop(a, c, f, scale);
+
+    // 2. Chord frame: chord = B3 - B0 = c1 + c2 + c3 (relative to B0).
+    const point chord = c[1] + c[2] + c[3];
+    const T L2 = dot(chord, chord);
+    const point b1 = c[1] / T(3), b2 = (T(2) * c[1] + c[2]) / T(3);  // B1 - B0, B2 - B0
+    const std::array<T, 7> dist0 = detail::dot_poly(c, c);           // |C(u) - B0|^2
+    std::array<point, 4> cm = c;                                       // C(u) - B3
+    cm[0] = -chord;
+    const std::array<T, 7> dist3 = detail::dot_poly(cm, cm);
+    std::vector<T> cand{T(0), T(1)};
+    auto add_roots = [&](const auto& poly) {
+        for (T r : detail::real_roots(detail::derivative(poly), T(0), T(1))) cand.push_back(r);
+    };
+    add_roots(dist0);
+    add_roots(dist3);
+
+    if (L2 > 0) {
+        const T L = std::sqrt(L2);
+        const point e = chord / L;
+        chord_projection<T> pr;
+        // lambda(u) = (C(u) - B0).chord / |chord|^2 = l1 u + l2 u^2 + l3 u^3.
+        const std::array<T, 4> lam{T(0), dot(c[1], chord) / L2, dot(c[2], chord) / L2, dot(c[3], chord) / L2};
+        const auto dlam = detail::derivative(lam);
+        pr.bezier = {dot(b1, chord) / L2, dot(b2, chord) / L2};
+        pr.theorem2 = pr.bezier[0] > 0 && pr.bezier[0] < 1 && pr.bezier[1] > 0 && pr.bezier[1] < 1;
+        // Minimum of the quadratic lambda'(u): ends and vertex.
+        pr.derivative_min = detail::horner(dlam, T(0));
+        pr.derivative_min_u = 0;
+        auto consider_min = [&](T u) {
+            const T v = detail::horner(dlam, u);
+            if (v < pr.derivative_min) { pr.derivative_min = v; pr.derivative_min_u = u; }
+        };
+        consider_min(T(1));
+        if (dlam[2] != 0) {
+            const T v = -dlam[1] / (2 * dlam[2]);
+            if (v > 0 && v < 1) consider_min(v);
+        }
+        // Range of lambda: ends (0 and 1 by definition of the chord) and the
+        // roots of lambda'.
+        pr.range = {T(0), T(1)};
+        for (T r : detail::real_roots(dlam, T(0), T(1))) {
+            const T v = detail::horner(lam, r);
+            pr.range[0] = std::min(pr.range[0], v);
+            pr.range[1] = std::max(pr.range[1], v);
+        }
+        a.projection = pr;
+
+        // Heights of B1, B2 and the Bézier bound on the chord-line distance.
+        a.bezier_height = {norm(detail::perpendicular(b1, e)), norm(detail::perpendicular(b2, e))};
+        a.bezier_bound = T(0.75) * std::max(a.bezier_height[0], a.bezier_height[1]);
+
+        // Distance to the chord line: |perp(C(u))|; maxima at roots of the
+        // derivative of its square (degree 5).
+        const std::array<point, 4> p{point{}, detail::perpendicular(c[1], e), detail::perpendicular(c[2], e),
+                                     detail::perpendicular(c[3], e)};
+        const auto g = detail::dot_poly(p, p);
+        std::vector<T> line_cand{T(0), T(1)};
+        for (T r : detail::real_roots(detail::derivative(g), T(0), T(1))) line_cand.push_back(r);
+        for (T u : line_cand)
+            detail::keep_max(a.max_chord_line_distance, a.max_chord_line_distance_u, u,
+                             [&](T x) { return norm(detail::horner_vec(p, x)); });
+        // Distance to the closed segment: piecewise (before B0, along, beyond
+        // B3); candidates are each piece's critical points and the switch
+        // points lambda = 0, 1. Evaluating the true distance at every
+        // candidate gives the exact maximum.
+        cand.insert(cand.end(), line_cand.begin(), line_cand.end());
+        for (T r : detail::real_roots(lam, T(0), T(1))) cand.push_back(r);
+        std::array<T, 4> lam1 = lam;
+        lam1[0] = -1;
+        for (T r : detail::real_roots(lam1, T(0), T(1))) cand.push_back(r);
+        for (T u : cand) {
+            const point x = detail::horner_vec(c, u);
+            const T d = detail::distance_to_segment(x, point{}, chord);
+            if (d > a.max_chord_distance) { a.max_chord_distance = d; a.max_chord_distance_u = u; }
+            const T l = dot(x, chord) / L2;
+            if (l < 0) a.overshoot[0] = std::max(a.overshoot[0], norm(x));
+            if (l > 1) a.overshoot[1] = std::max(a.overshoot[1], norm(x - chord));
+        }
+    } else {
+        // Zero chord (the segment returns to its start): the chord "line"
+        // and segment are the point B0.
+        for (T u : cand) {
+            detail::keep_max(a.max_chord_distance, a.max_chord_distance_u, u,
+                             [&](T x) { return norm(detail::horner_vec(c, x)); });
+        }
+        a.max_chord_line_distance = a.max_chord_distance;
+        a.max_chord_line_distance_u = a.max_chord_distance_u;
+    }
+    return a;
+}
+
+/// Analysis of the Catmull-Rom segment from p[1] to p[2] with knot intervals
+/// h = {t1 - t0, t2 - t1, t3 - t2} (zero intervals follow the library's
+/// convention: a zero chord velocity), with tangents scaled by 1 - tension.
+/// Adds the paper bounds when every interval and edge is nonzero and
+/// tension is 0.
+template <std::size_t D, class T>
+segment_analysis<D, T> analyze_segment(const std::array<vec<D, T>, 4>& p, const std::array<T, 3>& h,
+                                       T tension = T(0)) {
+    using point = vec<D, T>;
+    // Chord velocities and the Catmull-Rom tangents, as catmull_rom builds them.
+    const point v0 = h[0] > 0 ? (p[1] - p[0]) / h[0] : point{};
+    const point v1 = h[1] > 0 ? (p[2] - p[1]) / h[1] : point{};
+    const point v2 = h[2] > 0 ? (p[3] - p[2]) / h[2] : point{};
+    const T s1 = h[0] + h[1], s2 = h[1] + h[2];
+    point out1 = s1 > 0 ? ((h[1]) * v0 + (h[0]) * v1) / s1 : point{};
+    point in2 = s2 > 0 ? ((h[2]) * v1 + (h[1]) * v2) / s2 : point{};
+    const T keep = T(1) - tension;
+    if (keep != T(1)) { out1 *= keep; in2 *= keep; }
+    const auto seg = cubic_segment<D, T>::hermite(p[1], p[2], h[1] * out1, h[1] * in2, T(0), h[1]);
+    segment_analysis<D, T> a = analyze_segment(seg);
+    a.bezier[3] = p[2];
+    if (tension == T(0)) a.bounds = segment_paper_bounds(p, h);
+    return a;
+}
+
+/// Analysis of the segment from p[1] to p[2] with knots from alpha
+/// (t(i+1) - t(i) = |P(i+1) - P(i)|^alpha; coincident points get a zero
+/// interval, as in catmull_rom).
+template <std::size_t D, class T>
+segment_analysis<D, T> analyze_segment(const std::array<vec<D, T>, 4>& p, double alpha, T tension = T(0)) {
+    const auto iv = knot_intervals(std::span<const vec<D, T>>(p.data(), 4), alpha, false);
+    return analyze_segment(p, std::array<T, 3>{iv[0], iv[1], iv[2]}, tension);
+}
+
+/// Convenience: four points in any order of arguments' natural reading.
+template <std::size_t D, class T>
+segment_analysis<D, T> analyze_segment(const vec<D, T>& p0, const vec<D, T>& p1, const vec<D, T>& p2,
+                                       const vec<D, T>& p3, double alpha) {
+    return analyze_segment(std::array<vec<D, T>, 4>{p0, p1, p2, p3}, alpha);
+}
+
+namespace detail {
+
+// Is segment i of the curve the plain Catmull-Rom segment of its four
+// control points (no tension, no Kochanek-Bartels, an interior segment)?
+// Returns the points and intervals when it is.
+template <std::size_t D, class T>
+std::optional<std::pair<std::array<vec<D, T>, 4>, std::array<T, 3>>> plain_neighbourhood(
+    const catmull_rom<D, T>& c, std::size_t i) {
+    const auto pts = c.points();
+    const auto grid = c.grid();
+    const std::size_t n = pts.size(), nseg = c.segment_count();
+    if (!c.closed() && (i == 0 || i + 1 >= nseg)) return std::nullopt;
+    auto interval = [&](std::size_t k) { return grid[k + 1] - grid[k]; };
+    const std::size_t ib = (i + nseg - 1) % nseg, ia = (i + 1) % nseg;
+    std::array<vec<D, T>, 4> p{pts[(i + n - 1) % n], pts[i], pts[(i + 1) % n], pts[(i + 2) % n]};
+    std::array<T, 3> h{interval(ib), interval(i), interval(ia)};
+    if (!(h[0] > 0 && h[1] > 0 && h[2] > 0)) return std::nullopt;
+    // The curve's own Bézier points must be those of Eq. 2 (rounding aside).
+    const auto mine = c.bezier(i);
+    const auto eq2 = catmull_rom_bezier(p, std::array<T, 4>{T(0), h[0], h[0] + h[1], h[0] + h[1] + h[2]});
+    T size = 0;
+    for (const auto& q : p) size = std::max(size, max_abs(q - p[1]));
+    const T tol = T(256) * std::numeric_limits<T>::epsilon() * size;
+    if (max_abs(mine[1] - eq2[1]) > tol || max_abs(mine[2] - eq2[2]) > tol) return std::nullopt;
+    return std::make_pair(p, h);
+}
+
+}  // namespace detail
+
+/// Analysis of every segment of a curve. Interior segments that are plain
+/// Catmull-Rom segments (tension 0, no Kochanek-Bartels) also get the paper
+/// bounds, computed from points[i-1..i+2] and the curve's knots. End segments
+/// of an open curve have no P(i-1) or P(i+2): their end tangents come from the
+/// end conditions, Eq. 5, 6 and 8 do not exist there, and `bounds` is nullopt;
+/// bezier_height and bezier_bound (from the actual Bézier points) still hold.
+template <std::size_t D, class T>
+std::vector<segment_analysis<D, T>> analyze(const catmull_rom<D, T>& c) {
+    std::vector<segment_analysis<D, T>> out;
+    out.reserve(c.segment_count());
+    for (std::size_t i = 0; i < c.segment_count(); ++i) {
+        segment_analysis<D, T> a = analyze_segment(c.segment(i));
+        a.index = i;
+        a.bezier = c.bezier(i);
+        if (const auto nb = detail::plain_neighbourhood(c, i)) a.bounds = segment_paper_bounds(nb->first, nb->second);
+        out.push_back(std::move(a));
+    }
+    return out;
+}
+
+// ---------------------------------------------------------------------------
+// Curvature (Section 6.4)
+// ---------------------------------------------------------------------------
+
+/// Curvature |C' ^ C''| / |C'|^3 at local u (the same in u and t units);
+/// nullopt where the speed is zero.
+template <std::size_t D, class T>
+std::optional<T> curvature(const cubic_segment<D, T>& s, T u) noexcept {
+    const vec<D, T> d1 = s.du(u, 1), d2 = s.du(u, 2);
+    const T sp = norm(d1);
+    if (!(sp > 0)) return std::nullopt;
+    // |d1 ^ d2|^2 as a sum of squared 2x2 minors (no cancellation).
+    T w2 = 0;
+    for (std::size_t i = 0; i < D; ++i)
+        for (std::size_t j = i + 1; j < D; ++j) {
+            const T m = d1[i] * d2[j] - d1[j] * d2[i];
+            w2 += m * m;
+        }
+    return std::sqrt(w2) / (sp * sp * sp);
+}
+
+/// Where the curvature of a segment peaks.
+template <class T = double>
+struct curvature_maxima {
+    T start = 0, end = 0;            ///< curvature at u = 0 and u = 1 (infinity at zero speed)
+    std::vector<T> interior_u;       ///< interior local maxima, 0 < u < 1
+    std::vector<T> interior_value;
+    T max = 0, max_u = 0;            ///< the largest over [0, 1]
+    /// The segment's largest curvature is at one of its ends, i.e. at a
+    /// control point (Section 6.4's observation for centripetal curves).
+    bool max_at_control_point() const noexcept { return max_u == 0 || max_u == 1; }
+};
+
+/// Curvature maxima of a segment: kappa^2 = N / S^3 with N = |C' ^ C''|^2
+/// (degree 4, the sum of squared 2x2 minors) and S = |C'|^2 (degree 4); the
+/// critical points are the roots of N' S - 3 N S' (degree 7).
+template <std::size_t D, class T>
+curvature_maxima<T> segment_curvature_maxima(const cubic_segment<D, T>& s) {
+    curvature_maxima<T> m;
+    const T inf = std::numeric_limits<T>::infinity();
+    auto kappa = [&](T u) { return curvature(s, u).value_or(inf); };
+    m.start = kappa(T(0));
+    m.end = kappa(T(1));
+    const std::array<vec<D, T>, 3> d1{s.c1, T(2) * s.c2, T(3) * s.c3};
+    const std::array<vec<D, T>, 2> d2{T(2) * s.c2, T(6) * s.c3};
+    std::array<T, 5> N{};
+    for (std::size_t i = 0; i < D; ++i)
+        for (std::size_t j = i + 1; j < D; ++j) {
+            const std::array<T, 3> a{d1[0][i], d1[1][i], d1[2][i]}, b{d1[0][j], d1[1][j], d1[2][j]};
+            const std::array<T, 2> da{d2[0][i], d2[1][i]}, db{d2[0][j], d2[1][j]};
+            const auto p = detail::multiply(a, db), q = detail::multiply(b, da);
+            std::array<T, 3> minor{};
+            for (std::size_t k = 0; k < 3; ++k) minor[k] = p[k] - q[k];
+            const auto sq = detail::multiply(minor, minor);
+            for (std::size_t k = 0; k < 5; ++k) N[k] += sq[k];
+        }
+    const auto S = detail::dot_poly(d1, d1);
+    const auto a = detail::multiply(detail::derivative(N), S), b = detail::multiply(N, detail::derivative(S));
+    std::array<T, 8> crit{};
+    for (std::size_t k = 0; k < 8; ++k) crit[k] = a[k] - T(3) * b[k];
+    m.max = m.start;
+    m.max_u = 0;
+    if (m.end > m.max) { m.max = m.end; m.max_u = 1; }
+    for (T u : detail::real_roots(crit, T(0), T(1))) {
+        if (!(u > 0 && u < 1)) continue;
+        // A local maximum: larger than its close neighbours.
+        const T k = kappa(u), du = T(1e-6);
+        if (!(k >= kappa(std::max(T(0), u - du)) && k >= kappa(std::min(T(1), u + du)))) continue;
+        m.interior_u.push_back(u);
+        m.interior_value.push_back(k);
+        if (k > m.max) { m.max = k; m.max_u = u; }
+    }
+    return m;
+}
+
+}  // namespace crspline
