@@ -30,7 +30,9 @@ namespace {
 
 constexpr std::string_view eval_details =
     CRSPLINE_CLI_CURVE_FIELDS
-    "  \"t\": [...]                     required: parameter values in [grid[0], grid[last]]\n"
+    "  \"t\": [...]                     parameter values in [grid[0], grid[last]], or\n"
+    "  \"s\": [...]                     arc lengths from the start in [0, length]; the output\n"
+    "                                 then also has \"t_of_s\"; \"accuracy\": 1e-12 (relative)\n"
     "  \"derivatives\": [0]             orders to evaluate, each 0..3, no repeats\n"
     "\n"
     "Output: {\"grid\": [...], \"values\": {\"0\": [[x, y], ...], \"1\": ...}}, one key per\n"
@@ -58,11 +60,43 @@ constexpr std::string_view bezier_details =
     "\n"
     "Errors: exit status 2 and one line on stderr naming the field, index and value.";
 
+constexpr std::string_view length_details =
+    CRSPLINE_CLI_CURVE_FIELDS
+    "  \"accuracy\": 1e-12              relative accuracy of the lengths, in (0, 1)\n"
+    "\n"
+    "Output: {\"total\": L, \"segments\": [L0, L1, ...], \"accuracy\": a}: arc lengths by adaptive\n"
+    "Gauss-Legendre quadrature, each within a * length of the exact value.\n"
+    "\n"
+    "Example:\n"
+    "  echo '{\"points\": [[0, 0], [3, 4], [6, 0]]}' | crspline length\n"
+    "\n"
+    "Errors: exit status 2 and one line on stderr naming the field, index and value.";
+
+constexpr std::string_view sample_details =
+    CRSPLINE_CLI_CURVE_FIELDS
+    "  \"count\": n                     n >= 2 points from the start to the end, evenly spaced\n"
+    "  \"spacing\": \"t\"                 in the parameter, or \"arc_length\"\n"
+    "  \"tolerance\": d                 instead of count: polyline vertices such that the\n"
+    "                                 polyline is within distance d of the curve, few vertices\n"
+    "  \"accuracy\": 1e-12              relative accuracy of arc lengths (spacing arc_length)\n"
+    "\n"
+    "Output: {\"t\": [...], \"points\": [[x, y], ...]} plus \"s\" (arc lengths) for\n"
+    "arc-length spacing and \"tolerance\" for a tolerance.\n"
+    "\n"
+    "Examples:\n"
+    "  echo '{\"points\": [[0, 0], [1, 1], [2, 0]], \"count\": 5, \"spacing\": \"arc_length\"}' \\\n"
+    "    | crspline sample\n"
+    "  echo '{\"points\": [[0, 0], [1, 1], [2, 0]], \"tolerance\": 0.001}' | crspline sample\n"
+    "\n"
+    "Errors: exit status 2 and one line on stderr naming the field, index and value.";
+
 #undef CRSPLINE_CLI_CURVE_FIELDS
 
 constexpr command all_commands[] = {
     {"eval", "Positions and derivatives at parameter values t", eval_details, &run_eval},
     {"bezier", "Cubic Bezier control points of every segment", bezier_details, &run_bezier},
+    {"length", "Arc length of the curve and of each segment", length_details, &run_length},
+    {"sample", "Points evenly spaced in t or arc length, or within a tolerance", sample_details, &run_sample},
 };
 
 // First non-finite number in the output, with its path; empty when none.

@@ -25,6 +25,8 @@ std::span<const command> commands();
 
 output_json run_eval(const nlohmann::json& input);
 output_json run_bezier(const nlohmann::json& input);
+output_json run_length(const nlohmann::json& input);
+output_json run_sample(const nlohmann::json& input);
 
 /// The output text (one line plus a newline). Throws input_error naming the
 /// first value that is not finite (JSON cannot hold NaN or infinity; it

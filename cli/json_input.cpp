@@ -218,7 +218,9 @@ std::vector<double> finite_numbers(const json& v, const std::string& path) {
 struct foreign_field {
     std::string_view name, command;
 };
-constexpr foreign_field foreign_fields[] = {{"t", "eval"}, {"derivatives", "eval"}};
+constexpr foreign_field foreign_fields[] = {{"t", "eval"},       {"s", "eval"},       {"derivatives", "eval"},
+                                           {"accuracy", "eval, length or sample"},
+                                           {"count", "sample"},  {"spacing", "sample"}, {"tolerance", "sample"}};
 
 void check_fields(const json& root, std::string_view command, std::initializer_list<std::string_view> extra) {
     for (const auto& item : root.items()) {
@@ -375,11 +377,28 @@ curve_spec parse_curve(const json& root, std::string_view command, std::initiali
     return c;
 }
 
+// "accuracy": relative accuracy of arc lengths, in (0, 1); default 1e-12.
+double parse_accuracy(const json& root) {
+    if (!root.contains("accuracy")) return 1e-12;
+    const double a = finite_number(root["accuracy"], "accuracy");
+    if (!(a > 0 && a < 1)) fail("accuracy", "expected a relative accuracy in (0, 1), got " + describe(root["accuracy"]));
+    return a;
+}
+
 eval_spec parse_eval(const json& root) {
     eval_spec e;
-    e.curve = parse_curve(root, "eval", {"t", "derivatives"});
-    if (!root.contains("t")) throw input_error("missing field 't' (the parameter values to evaluate at)");
-    e.t = finite_numbers(root["t"], "t");
+    e.curve = parse_curve(root, "eval", {"t", "s", "derivatives", "accuracy"});
+    if (root.contains("t") && root.contains("s"))
+        throw input_error("give 't' (parameter values) or 's' (arc lengths), not both");
+    if (root.contains("s")) {
+        e.s = finite_numbers(root["s"], "s");
+        e.accuracy = parse_accuracy(root);
+    } else if (!root.contains("t")) {
+        throw input_error("missing field 't' (the parameter values to evaluate at) or 's' (arc lengths)");
+    } else {
+        if (root.contains("accuracy")) fail("accuracy", "only used with 's' (arc lengths)");
+        e.t = finite_numbers(root["t"], "t");
+    }
     if (!root.contains("derivatives")) {
         e.derivatives = {0};
         return e;
@@ -401,5 +420,41 @@ eval_spec parse_eval(const json& root) {
 }
 
 bezier_spec parse_bezier(const json& root) { return {parse_curve(root, "bezier", {})}; }
+
+length_spec parse_length(const json& root) {
+    length_spec l;
+    l.curve = parse_curve(root, "length", {"accuracy"});
+    l.accuracy = parse_accuracy(root);
+    return l;
+}
+
+sample_spec parse_sample(const json& root) {
+    sample_spec s;
+    s.curve = parse_curve(root, "sample", {"count", "spacing", "tolerance", "accuracy"});
+    s.accuracy = parse_accuracy(root);
+    const bool by_count = root.contains("count"), by_tolerance = root.contains("tolerance");
+    if (by_count == by_tolerance)
+        throw input_error("give 'count' (number of points) or 'tolerance' (largest distance to the curve), "
+                          "exactly one of them");
+    if (by_count) {
+        const json& c = root["count"];
+        const double n = c.is_number() ? c.get<double>() : -1.0;
+        if (!(n >= 2 && n <= 1e9 && n == std::floor(n))) fail("count", "expected an integer >= 2, got " + describe(c));
+        s.count = std::size_t(n);
+        s.by = sample_spec::kind::count_t;
+        if (root.contains("spacing")) {
+            const json& sp = root["spacing"];
+            if (sp == "t") s.by = sample_spec::kind::count_t;
+            else if (sp == "arc_length") s.by = sample_spec::kind::count_arc_length;
+            else fail("spacing", "expected \"t\" or \"arc_length\", got " + describe(sp));
+        }
+    } else {
+        if (root.contains("spacing")) fail("spacing", "only used with 'count'");
+        s.tolerance = finite_number(root["tolerance"], "tolerance");
+        if (!(s.tolerance > 0)) fail("tolerance", "expected a distance > 0, got " + describe(root["tolerance"]));
+        s.by = sample_spec::kind::tolerance;
+    }
+    return s;
+}
 
 }  // namespace crspline::cli

@@ -60,11 +60,31 @@ struct curve_spec {
     bool strict = false;
 };
 
-/// `crspline eval`: the curve, the parameters and the derivative orders.
+/// `crspline eval`: the curve, the parameters (t, or arc lengths s) and the
+/// derivative orders.
 struct eval_spec {
     curve_spec curve;
     std::vector<double> t;
-    std::vector<int> derivatives;  ///< distinct, each 0..3, in the order requested
+    std::optional<std::vector<double>> s;  ///< arc lengths from the start instead of t
+    double accuracy = 1e-12;               ///< relative accuracy of arc lengths
+    std::vector<int> derivatives;          ///< distinct, each 0..3, in the order requested
+};
+
+/// `crspline length`: the curve and the relative accuracy.
+struct length_spec {
+    curve_spec curve;
+    double accuracy = 1e-12;
+};
+
+/// `crspline sample`: n points evenly spaced in t or in arc length, or the
+/// vertices of a polyline within a distance tolerance of the curve.
+struct sample_spec {
+    curve_spec curve;
+    enum class kind { count_t, count_arc_length, tolerance };
+    kind by = kind::count_t;
+    std::size_t count = 0;
+    double tolerance = 0;
+    double accuracy = 1e-12;
 };
 
 /// `crspline bezier`: the curve alone.
@@ -83,6 +103,8 @@ curve_spec parse_curve(const nlohmann::json& root, std::string_view command,
                        std::initializer_list<std::string_view> extra_fields);
 
 eval_spec parse_eval(const nlohmann::json& root);
+length_spec parse_length(const nlohmann::json& root);
+sample_spec parse_sample(const nlohmann::json& root);
 bezier_spec parse_bezier(const nlohmann::json& root);
 
 /// Shortest text that reads back to the same double (for messages).

@@ -157,12 +157,14 @@ public:
         const std::size_t nseg = segments_.size();
         first_piece_.assign(nseg + 1, 0);
         segment_start_.assign(nseg + 1, T(0));
+        segment_length_.assign(nseg, T(0));
         for (std::size_t i = 0; i < nseg; ++i) {
             first_piece_[i] = pieces_.size();
             segment_start_[i] = total_;
             for (const auto& p : detail::length_pieces(segments_[i], T(0), T(1), accuracy)) {
                 pieces_.push_back({p.u0, p.u1, total_, i});
                 total_ += p.length;
+                segment_length_[i] += p.length;
             }
         }
         first_piece_[nseg] = pieces_.size();
@@ -175,8 +177,9 @@ public:
     T total() const noexcept { return total_; }
     /// The relative accuracy the table was built for.
     T accuracy() const noexcept { return accuracy_; }
-    /// Length of segment i.
-    T segment_length(std::size_t i) const { return segment_start_.at(i + 1) - segment_start_.at(i); }
+    /// Length of segment i (its own sum: not a difference of cumulative
+    /// lengths, which would lose eps * total()).
+    T segment_length(std::size_t i) const { return segment_length_.at(i); }
     /// Cumulative length at each knot (segment_count() + 1 values).
     std::span<const T> knot_lengths() const noexcept { return segment_start_; }
 
@@ -234,6 +237,7 @@ private:
     std::vector<T> piece_start_;              // pieces_[k].s0, contiguous for searching
     std::vector<std::size_t> first_piece_;    // per segment, index of its first piece
     std::vector<T> segment_start_;            // cumulative length at each knot
+    std::vector<T> segment_length_;           // length of each segment
     T total_ = 0;
     T accuracy_;
 

@@ -61,7 +61,7 @@ CASES = [
      "derivatives[2]: order 1 is already requested by derivatives[1]"),
     ("no derivatives", "eval", doc(t=[0], derivatives=[]),
      "derivatives: expected at least one order (0, 1, 2 or 3), got []"),
-    ("t missing", "eval", doc(), "missing field 't' (the parameter values to evaluate at)"),
+    ("t missing", "eval", doc(), "missing field 't' (the parameter values to evaluate at) or 's' (arc lengths)"),
     ("t not numbers", "eval", doc(t=[0, "1"]), 't[1]: expected a finite number, got "1"'),
     ("unknown field", "eval", doc(t=[0], foo=1), "unknown field 'foo'"),
     ("t given to bezier", "bezier", doc(t=[0]), "t: only 'crspline eval' takes this field, not 'crspline bezier'"),

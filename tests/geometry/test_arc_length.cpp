@@ -295,6 +295,17 @@ TEST(ArcLength, FloatReachesItsOwnPrecision) {
     EXPECT_EQ(checked, 20);
 }
 
+TEST(ArcLength, SegmentLengthsKeepTheirOwnPrecision) {
+    // A 1.3e6-long segment before a unit one: the short segment's length must
+    // not be a difference of cumulative sums (that would lose eps * 1.3e6).
+    const std::vector<P2> p{P2{{-786432.0, 1048576.0}}, P2{{0, 0}}, P2{{1, 0}}, P2{{2, 1}}};
+    const catmull_rom<2> c(p);
+    const arc_length_table<2> table(c);
+    const double exact = 1.05425374920139075974502183369;  // oracle.json, ratio_d1_1e6_centripetal
+    EXPECT_LE(std::abs(table.segment_length(1) - exact), 1e-12 * exact);
+    EXPECT_LE(std::abs(arc_length(c.segment(1)) - exact), 1e-12 * exact);
+}
+
 TEST(ArcLength, BadArguments) {
     catmull_rom<2> c({P2{{0, 0}}, P2{{1, 0}}, P2{{2, 1}}});
     EXPECT_THROW(arc_length(c, 0.0), invalid_input);
