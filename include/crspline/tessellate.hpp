@@ -1,0 +1,186 @@
+// crspline: sampling and adaptive tessellation of a curve into a polyline.
+//
+// tessellate() returns a polyline within a distance tolerance of the curve,
+// proved piece by piece by a closed-form flatness bound (pbrt-v4 style: the
+// error is guaranteed, not hoped for), with pieces chosen greedily as long
+// as that bound allows, so vertex counts stay close to the minimum.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "bounds.hpp"
+#include "catmull_rom.hpp"
+#include "detail/format.hpp"
+#include "error.hpp"
+#include "segment.hpp"
+#include "vec.hpp"
+
+namespace crspline {
+
+/// The default tessellation tolerance, relative to the curve's bounding-box
+/// diagonal (see tessellation_tolerance).
+inline constexpr double default_tessellation_tolerance = 1e-3;
+
+/// Vertices of a polyline and the curve parameter t of each:
+/// points[k] == curve.evaluate(t[k]) exactly, t increasing.
+template <std::size_t D, class T = double>
+struct polyline {
+    std::vector<vec<D, T>> points;
+    std::vector<T> t;
+};
+
+/// n points evenly spaced in t from t_min to t_max inclusive (n >= 2). The
+/// ends are exact: the first and last control points of an open curve; a
+/// closed curve gives its start point at both ends (first == last).
+template <std::size_t D, class T>
+std::vector<vec<D, T>> sample_t(const catmull_rom<D, T>& c, std::size_t n) {
+    if (n < 2) throw invalid_input("sample_t needs at least 2 points, got " + std::to_string(n));
+    const T a = c.t_min(), b = c.t_max();
+    std::vector<vec<D, T>> out(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        // The last parameter is t_max itself, never a rounding of it.
+        const T t = k + 1 == n ? b : std::min(b, a + (b - a) * (T(k) / T(n - 1)));
+        out[k] = c.evaluate_unchecked(t);
+    }
+    return out;
+}
+
+/// Upper bound on the distance between the piece u in [u0, u1] of segment s
+/// and its chord from s.at(u0) to s.at(u1), both ways (every point of the
+/// piece is that close to the chord and every point of the chord that close
+/// to the piece). The smaller of two bounds, each a proof:
+///
+/// 1. Second differences. Let e(u) = C(u) - L(u), L the linear interpolant
+///    of C at u0 and u1 (so L(u) runs over the chord). e vanishes at both
+///    ends and e'' = C'', so e(u) = -int G(u, v) C''(v) dv with the Green's
+///    function G >= 0 of d^2/du^2 on [u0, u1], int G(u, v) dv = (u - u0)(u1 - u)/2:
+///        |e(u)| <= (u - u0)(u1 - u)/2 max|C''| <= (u1 - u0)^2 / 8 max|C''|.
+///    C'' = 2 c2 + 6 c3 u is affine in u, so |C''| is convex and its maximum
+///    on the piece is at u0 or u1: the bound is exact in closed form.
+/// 2. Convex hull. The piece lies in the hull of its Bézier points Q0..Q3
+///    and the distance to the chord Q0Q3 is convex, so it is at most
+///    max(dist(Q1, chord), dist(Q2, chord)). The piece runs from Q0 to Q3,
+///    so every chord point is the foot of some curve point, no farther.
+///
+/// (1) is exact for a parabola-like piece; (2) sees that acceleration along
+/// the chord (a change of speed, not of direction) adds no distance.
+/// Computed relative to s.at(u0), so to within rounding of the coordinates.
+template <std::size_t D, class T>
+T flatness_bound(const cubic_segment<D, T>& s, T u0, T u1) {
+    using point = vec<D, T>;
+    const T w = u1 - u0;
+    // 1. (u1 - u0)^2 / 8 times |C''| at the worse end.
+    const T curvature = std::max(norm(s.du(u0, 2)), norm(s.du(u1, 2)));
+    const T by_second_difference = w * w / T(8) * curvature;
+    // 2. Bézier points of the piece relative to Q0: Q1 = Q0 + w/3 C'(u0),
+    //    Q2 = Q3 - w/3 C'(u1), and Q3 - Q0 = C(u1) - C(u0) factored as
+    //    w [c1 + (u0 + u1) c2 + (u0^2 + u0 u1 + u1^2) c3] (no cancellation).
+    const point chord = w * (s.c1 + (u0 + u1) * s.c2 + (u0 * u0 + u0 * u1 + u1 * u1) * s.c3);
+    const point q1 = (w / T(3)) * s.du(u0, 1);
+    const point q2 = chord - (w / T(3)) * s.du(u1, 1);
+    const T len2 = dot(chord, chord);
+    auto to_chord = [&](const point& q) {
+        const T f = len2 > 0 ? std::clamp(dot(q, chord) / len2, T(0), T(1)) : T(0);
+        return norm(q - f * chord);
+    };
+    const T by_hull = std::max(to_chord(q1), to_chord(q2));
+    return std::min(by_second_difference, by_hull);
+}
+
+/// Number of equal pieces in u that bound (1) of flatness_bound proves
+/// enough for a whole segment: ceil(sqrt(max|C''| / (8 tolerance))), at
+/// least 1 (pbrt-v4's subdivision count). tessellate() never uses more
+/// pieces on a segment than this.
+template <std::size_t D, class T>
+std::size_t uniform_piece_count(const cubic_segment<D, T>& s, std::type_identity_t<T> tolerance) {
+    const T curvature = std::max(norm(s.du(T(0), 2)), norm(s.du(T(1), 2)));
+    const double n = std::ceil(std::sqrt(double(curvature) / (8.0 * double(tolerance))));
+    return n > 1 ? std::size_t(n) : std::size_t(1);
+}
+
+/// The tolerance `relative` times the curve's bounding-box diagonal (the
+/// smallest normal number of T for a curve that is a single point, so that
+/// it is always a valid tolerance).
+template <std::size_t D, class T>
+T tessellation_tolerance(const catmull_rom<D, T>& c, double relative = default_tessellation_tolerance) {
+    const T tol = T(relative * double(bounding_box(c).diagonal()));
+    return tol > 0 ? tol : std::numeric_limits<T>::min();
+}
+
+/// Adaptive tessellation: a polyline whose distance to the curve (both ways,
+/// piece by piece) is at most `tolerance`, an absolute distance, up to the
+/// rounding of the coordinates.
+///
+/// - Vertices lie on the curve: points[k] == c.evaluate(t[k]) exactly.
+/// - Every knot is a vertex, once; the first vertex is the curve's start,
+///   the last its end (a closed curve ends at its first point exactly).
+/// - Each segment is cut greedily: from a vertex, the longest piece that
+///   flatness_bound proves within tolerance (bisection on t), so a segment
+///   gets at most uniform_piece_count pieces and usually fewer.
+/// - A constant segment (a repeated point) adds no vertex; a straight
+///   segment at constant speed is one piece; a curve that is a single point
+///   gives its two ends (t_min and t_max, equal when all knots coincide).
+///
+/// Throws invalid_input when the tolerance is not positive and finite.
+/// Tolerances below the rounding of the coordinates cannot be met; pieces
+/// then stop shrinking at adjacent floating-point parameters.
+template <std::size_t D, class T>
+polyline<D, T> tessellate(const catmull_rom<D, T>& c, std::type_identity_t<T> tolerance) {
+    if (!(tolerance > 0 && std::isfinite(tolerance)))
+        throw invalid_input("tolerance must be positive and finite, got " + detail::num(double(tolerance)));
+    polyline<D, T> out;
+    auto add = [&](T t) {
+        out.t.push_back(t);
+        out.points.push_back(c.evaluate_unchecked(t));
+    };
+    add(c.t_min());
+    const auto grid = c.grid();
+    for (std::size_t i = 0; i < c.segment_count(); ++i) {
+        const cubic_segment<D, T>& s = c.segment(i);
+        // A constant segment: its end is its start, already a vertex.
+        if (s.c1 == vec<D, T>{} && s.c2 == vec<D, T>{} && s.c3 == vec<D, T>{}) continue;
+        const T t_end = grid[i + 1];
+        // Local u of a vertex parameter, as evaluate() computes it.
+        auto u_of = [&](T t) { return t == t_end ? T(1) : s.local(t); };
+        T a = grid[i];
+        while (flatness_bound(s, u_of(a), T(1)) > tolerance) {
+            // Longest piece from a: lo is proved within tolerance, hi is not.
+            T lo = a, hi = t_end;
+            for (;;) {
+                const T mid = lo + (hi - lo) / 2;
+                if (!(mid > lo && mid < hi) || hi - lo <= (lo - a) * T(1e-6)) break;
+                (flatness_bound(s, u_of(a), u_of(mid)) <= tolerance ? lo : hi) = mid;
+            }
+            // Below rounding no piece qualifies: step to the next parameter.
+            if (lo == a) lo = hi;
+            if (lo == t_end) break;
+            add(lo);
+            a = lo;
+        }
+        add(t_end);
+    }
+    // Trailing constant segments: the last vertex is already the end point;
+    // a curve that is a single point gets its two ends.
+    if (out.t.size() == 1) {
+        add(c.t_max());
+    } else if (out.t.back() != c.t_max()) {
+        out.t.back() = c.t_max();
+        out.points.back() = c.evaluate_unchecked(c.t_max());
+    }
+    return out;
+}
+
+/// Adaptive tessellation at the default tolerance: default_tessellation_tolerance
+/// (1e-3) times the bounding-box diagonal.
+template <std::size_t D, class T>
+polyline<D, T> tessellate(const catmull_rom<D, T>& c) {
+    return tessellate(c, tessellation_tolerance(c));
+}
+
+}  // namespace crspline
