@@ -237,15 +237,21 @@ namespace detail {
 template <std::size_t D, class T>
 void classify_speed(segment_analysis<D, T>& a, const std::array<vec<D, T>, 4>& c, const span_frame<D, T>& f,
                     T thr) {
-    const vec<D, T> end_speed = c[1] + T(2) * c[2] + T(3) * c[3];
-    const bool zero0 = norm(c[1]) <= thr, zero1 = norm(end_speed) <= thr;
     const T merge = end_merge_distance<T>();
     std::vector<T> interior;
+    T speed0, speed1, zthr;
     if (f.rank == 1) {
-        // Along the line: q(u) = e . C'(u), a quadratic.
+        // Along the line: q(u) = e . C'(u), a quadratic; the parts of c1, c2,
+        // c3 off the line are each below thr, so C'(u) has up to 6 thr of
+        // noise off the line, and q's sign is only meaningful beyond that:
+        // the rank-1 threshold is 8 thr.
+        zthr = 8 * thr;
         const vec<D, T>& e = f.e[0];
         const std::array<T, 3> q{dot(e, c[1]), T(2) * dot(e, c[2]), T(3) * dot(e, c[3])};
-        T qmin = std::min(detail::horner(q, T(0)), detail::horner(q, T(1))), qmax = std::max(detail::horner(q, T(0)), detail::horner(q, T(1)));
+        speed0 = std::abs(detail::horner(q, T(0)));
+        speed1 = std::abs(detail::horner(q, T(1)));
+        T qmin = std::min(detail::horner(q, T(0)), detail::horner(q, T(1)));
+        T qmax = std::max(detail::horner(q, T(0)), detail::horner(q, T(1)));
         std::optional<T> vertex;
         if (q[2] != 0) {
             const T v = -q[1] / (2 * q[2]);
@@ -257,8 +263,8 @@ void classify_speed(segment_analysis<D, T>& a, const std::array<vec<D, T>, 4>& c
             }
         }
         // Non-monotone by more than rounding: the curve retraces itself.
-        a.fold = qmin < -thr && qmax > thr;
-        if (vertex && std::abs(detail::horner(q, *vertex)) <= thr) {
+        a.fold = qmin < -zthr && qmax > zthr;
+        if (vertex && std::abs(detail::horner(q, *vertex)) <= zthr) {
             interior.push_back(*vertex);  // touches zero: a double zero
         } else {
             for (T r : detail::real_roots(q, T(0), T(1))) interior.push_back(r);
@@ -266,11 +272,23 @@ void classify_speed(segment_analysis<D, T>& a, const std::array<vec<D, T>, 4>& c
     } else {
         // Minima of |C'(u)|^2: roots of C'.C'' (a cubic), then is the speed
         // zero there? C' = A + B u + C u^2 with A = c1, B = 2 c2, C = 3 c3.
+        zthr = thr;
+        speed0 = norm(c[1]);
+        speed1 = norm(c[1] + T(2) * c[2] + T(3) * c[3]);
         const std::array<vec<D, T>, 3> d1{c[1], T(2) * c[2], T(3) * c[3]};
         const std::array<vec<D, T>, 2> d2{T(2) * c[2], T(6) * c[3]};
         const auto g = dot_poly(d1, d2);
         for (T r : detail::real_roots(g, T(0), T(1)))
             if (norm(horner_vec(d1, r)) <= thr) interior.push_back(r);
+    }
+    bool zero0 = speed0 <= zthr, zero1 = speed1 <= zthr;
+    // A zero found within merge distance of an end whose own speed is at
+    // the rounding level (<= 2 zthr) is that end's zero: rounding of the
+    // small end tangent's direction can move the computed minimum of the
+    // speed a few ulps inside (a centripetal segment with theta ~ 1e-15).
+    for (T u : interior) {
+        if (u <= merge && speed0 <= 2 * zthr) zero0 = true;
+        if (u >= 1 - merge && speed1 <= 2 * zthr) zero1 = true;
     }
     if (zero0) a.zero_speed_u.push_back(T(0));
     for (T u : interior) {
@@ -317,14 +335,50 @@ void find_loop(segment_analysis<D, T>& a, const std::array<vec<D, T>, 4>& c, con
         t = s != 0 ? prod / s : (sigma + root) / 2;
     }
     if (s > t) std::swap(s, t);
+    // Far outside [0, 1]: no loop in the segment, whatever the rounding.
+    if (!(s > T(-0.5) && t < T(1.5))) return;
+    // Cramer's rule loses accuracy when c2 and c3 are nearly parallel:
+    // polish with Newton on C(s) - C(t) = 0 (Jacobian [C'(s), -C'(t)]),
+    // unconstrained, keeping the best iterate; then decide on the range.
+    auto plane = [&](const vec<D, T>& x) -> std::array<T, 2> {
+        if constexpr (D == 2) return {x[0], x[1]};
+        else return {dot(x, f.e[0]), dot(x, f.e[1])};
+    };
+    const std::array<vec<D, T>, 3> d1{c[1], T(2) * c[2], T(3) * c[3]};
+    auto gap_of = [&](T x, T y) { return norm(horner_vec(c, x) - horner_vec(c, y)); };
+    T gap = gap_of(s, t);
+    for (int it = 0; it < 30 && gap > 0; ++it) {
+        const auto g = plane(horner_vec(c, s) - horner_vec(c, t));
+        const auto js = plane(horner_vec(d1, s)), jt = plane(horner_vec(d1, t));
+        // Solve [js, -jt] (ds, dt)^T = -g by Cramer's rule.
+        const T dj = jt[0] * js[1] - js[0] * jt[1];
+        if (dj == 0) break;
+        const T ds = (g[0] * jt[1] - jt[0] * g[1]) / dj;
+        const T dt = (js[0] * g[1] - js[1] * g[0]) / -dj;
+        // Damped: halve the step until the gap shrinks (a shallow crossing
+        // is nearly tangential and the full step overshoots).
+        T lam = 1, ng = gap_of(s + ds, t + dt);
+        for (int h = 0; h < 40 && !(ng < gap); ++h) {
+            lam /= 2;
+            ng = gap_of(s + lam * ds, t + lam * dt);
+        }
+        if (!(ng < gap)) break;
+        s += lam * ds;
+        t += lam * dt;
+        gap = ng;
+    }
     // Allow the ends to be missed by a few ulps of rounding.
     const T slack = 8 * std::numeric_limits<T>::epsilon();
     if (!(s >= -slack && t <= 1 + slack && s < t)) return;
     s = std::max(s, T(0));
     t = std::min(t, T(1));
     // Guard against a nearly singular system: the two points must coincide.
-    const T gap = norm(horner_vec(c, s) - horner_vec(c, t));
     if (!(gap <= T(1e-8) * scale)) return;
+    // A loop of parameter width below end_merge_distance is at most about
+    // |C''| (t - s)^2 <= zero_speed_tolerance * eps * scale across: a cusp
+    // within rounding (and the speed there is within rounding of zero), not
+    // a loop one can tell from rounding noise.
+    if (t - s <= end_merge_distance<T>()) return;
     a.self_intersection.push_back({s, t});
 }
 
@@ -337,15 +391,18 @@ void keep_max(T& best, T& best_u, T u, F&& dist) {
 
 }  // namespace detail
 
-/// Analysis of a cubic segment on its own: classification, chord frame,
-/// measured distances. No paper bounds (those need the control points and
-/// knots: see the other overloads).
+namespace detail {
+
+// The analysis proper. rel = {B1 - B0, B2 - B0, B3 - B0} as accurately as
+// the caller knows them (from the Hermite tangents and the exact chord
+// P2 - P1 when the control points are known: the power basis loses
+// |c| / |chord| of relative accuracy on the chord when the tangents dwarf it).
 template <std::size_t D, class T>
-segment_analysis<D, T> analyze_segment(const cubic_segment<D, T>& seg) {
+segment_analysis<D, T> analyze_core(const cubic_segment<D, T>& seg, const std::array<vec<D, T>, 3>& rel) {
     using point = vec<D, T>;
     segment_analysis<D, T> a;
     a.segment = seg;
-    a.bezier = to_bezier(seg);
+    a.bezier = {seg.origin, seg.origin + rel[0], seg.origin + rel[1], seg.origin + rel[2]};
     const std::array<point, 4> c = detail::relative_coefficients(seg);
     const T scale = norm(c[1]) + norm(c[2]) + norm(c[3]);
     const T thr = T(zero_speed_tolerance) * std::numeric_limits<T>::epsilon() * scale;
@@ -358,9 +415,9 @@ segment_analysis<D, T> analyze_segment(const cubic_segment<D, T>& seg) {
     if (f.rank == 2 && a.cusp_u.empty()) detail::find_loop(a, c, f, scale);
 
     // 2. Chord frame: chord = B3 - B0 = c1 + c2 + c3 (relative to B0).
-    const point chord = c[1] + c[2] + c[3];
+    const point chord = rel[2];
     const T L2 = dot(chord, chord);
-    const point b1 = c[1] / T(3), b2 = (T(2) * c[1] + c[2]) / T(3);  // B1 - B0, B2 - B0
+    const point b1 = rel[0], b2 = rel[1];  // B1 - B0, B2 - B0
     const std::array<T, 7> dist0 = detail::dot_poly(c, c);           // |C(u) - B0|^2
     std::array<point, 4> cm = c;                                       // C(u) - B3
     cm[0] = -chord;
@@ -447,6 +504,17 @@ segment_analysis<D, T> analyze_segment(const cubic_segment<D, T>& seg) {
     return a;
 }
 
+}  // namespace detail
+
+/// Analysis of a cubic segment on its own: classification, chord frame,
+/// measured distances. No paper bounds (those need the control points and
+/// knots: see the other overloads).
+template <std::size_t D, class T>
+segment_analysis<D, T> analyze_segment(const cubic_segment<D, T>& seg) {
+    const vec<D, T> b1 = seg.c1 / T(3), b2 = (T(2) * seg.c1 + seg.c2) / T(3), b3 = seg.c1 + seg.c2 + seg.c3;
+    return detail::analyze_core(seg, {b1, b2, b3});
+}
+
 /// Analysis of the Catmull-Rom segment from p[1] to p[2] with knot intervals
 /// h = {t1 - t0, t2 - t1, t3 - t2} (zero intervals follow the library's
 /// convention: a zero chord velocity), with tangents scaled by 1 - tension.
@@ -465,8 +533,9 @@ segment_analysis<D, T> analyze_segment(const std::array<vec<D, T>, 4>& p, const 
     point in2 = s2 > 0 ? ((h[2]) * v1 + (h[1]) * v2) / s2 : point{};
     const T keep = T(1) - tension;
     if (keep != T(1)) { out1 *= keep; in2 *= keep; }
-    const auto seg = cubic_segment<D, T>::hermite(p[1], p[2], h[1] * out1, h[1] * in2, T(0), h[1]);
-    segment_analysis<D, T> a = analyze_segment(seg);
+    const point m0 = h[1] * out1, m1 = h[1] * in2, chord = p[2] - p[1];
+    const auto seg = cubic_segment<D, T>::hermite(p[1], p[2], m0, m1, T(0), h[1]);
+    segment_analysis<D, T> a = detail::analyze_core(seg, {m0 / T(3), chord - m1 / T(3), chord});
     a.bezier[3] = p[2];
     if (tension == T(0)) a.bounds = segment_paper_bounds(p, h);
     return a;
@@ -528,7 +597,11 @@ std::vector<segment_analysis<D, T>> analyze(const catmull_rom<D, T>& c) {
     std::vector<segment_analysis<D, T>> out;
     out.reserve(c.segment_count());
     for (std::size_t i = 0; i < c.segment_count(); ++i) {
-        segment_analysis<D, T> a = analyze_segment(c.segment(i));
+        const auto& seg = c.segment(i);
+        const auto pts = c.points();
+        const auto [v0, v1] = c.tangents(i);
+        const vec<D, T> chord = pts[(i + 1) % pts.size()] - pts[i];
+        segment_analysis<D, T> a = detail::analyze_core(seg, {(seg.h / T(3)) * v0, chord - (seg.h / T(3)) * v1, chord});
         a.index = i;
         a.bezier = c.bezier(i);
         if (const auto nb = detail::plain_neighbourhood(c, i)) a.bounds = segment_paper_bounds(nb->first, nb->second);
