@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 #include <cstddef>
 #include <limits>
 #include <optional>
@@ -79,9 +80,8 @@ struct length_piece {
     T length;  ///< arc length over [u0, u1]
 };
 
-/// Adaptive quadrature of the speed on [a, b] (no critical point of the
-/// speed inside): halves until the rule and its two halves agree to tol,
-/// appending accepted pieces in order.
+/// Halves [a, b] until the rule and its two halves agree to tol (an a
+/// posteriori check on top of the a priori cut), appending pieces in order.
 template <std::size_t D, class T>
 void adapt_length(const cubic_segment<D, T>& s, T a, T b, T whole, T tol, int depth,
                   std::vector<length_piece<T>>& out) {
@@ -96,7 +96,89 @@ void adapt_length(const cubic_segment<D, T>& s, T a, T b, T whole, T tol, int de
     adapt_length(s, m, b, right, tol / 2, depth + 1, out);
 }
 
-/// The pieces of a segment over [a, b] for relative accuracy acc.
+/// Complex roots of |C'(u)|^2, a quartic in u: the branch points of the
+/// speed sqrt(|C'|^2), i.e. the singularities that limit quadrature.
+/// Durand-Kerner (Weierstrass) iteration on the monic quartic; double roots
+/// come out to about sqrt(eps), which is all the caller needs.
+template <std::size_t D, class T>
+std::vector<std::complex<double>> speed_singularities(const cubic_segment<D, T>& s) {
+    using C = std::complex<double>;
+    vec<D, double> A, B, Cc;
+    for (std::size_t k = 0; k < D; ++k) {
+        A[k] = double(s.c1[k]);
+        B[k] = 2.0 * double(s.c2[k]);
+        Cc[k] = 3.0 * double(s.c3[k]);
+    }
+    // |A + B u + C u^2|^2 = a0 + a1 u + a2 u^2 + a3 u^3 + a4 u^4
+    std::array<double, 5> a{dot(A, A), 2 * dot(A, B), dot(B, B) + 2 * dot(A, Cc), 2 * dot(B, Cc), dot(Cc, Cc)};
+    std::size_t deg = 4;
+    const double scale = a[0] + a[2] + a[4];
+    while (deg > 0 && std::abs(a[deg]) <= 1e-14 * scale) --deg;
+    std::vector<C> z;
+    if (deg == 0) return z;
+    std::vector<C> c(deg + 1);
+    for (std::size_t i = 0; i <= deg; ++i) c[i] = a[i] / a[deg];
+    const C seed(0.4, 0.9);
+    for (std::size_t i = 0; i < deg; ++i) z.push_back(std::pow(seed, double(i)));
+    auto eval = [&](C x) {
+        C r = 0;
+        for (std::size_t i = deg + 1; i-- > 0;) r = r * x + c[i];
+        return r;
+    };
+    for (int it = 0; it < 500; ++it) {
+        double change = 0;
+        for (std::size_t i = 0; i < deg; ++i) {
+            C den = 1;
+            for (std::size_t j = 0; j < deg; ++j)
+                if (j != i) den *= z[i] - z[j];
+            if (den == C(0)) den = C(1e-300);
+            const C step = eval(z[i]) / den;
+            z[i] -= step;
+            change = std::max(change, std::abs(step));
+        }
+        if (change <= 1e-15 * (1 + std::abs(z[0]))) break;
+    }
+    return z;
+}
+
+/// Bernstein ellipse parameter of the point z for the interval [a, b]: the
+/// 8-point Gauss rule's error on a function analytic inside the ellipse with
+/// foci a, b and parameter rho decays like rho^-16.
+inline double ellipse_rho(std::complex<double> z, double a, double b) {
+    const std::complex<double> w = (2.0 * z - (a + b)) / (b - a);
+    const std::complex<double> r = w + std::sqrt(w - 1.0) * std::sqrt(w + 1.0);
+    return std::max(std::abs(r), 1.0 / std::abs(r));
+}
+
+/// Cuts [a, b] (no speed extremum inside) into pieces on which every
+/// singularity of the speed is far enough for the 8-point rule to reach the
+/// accuracy: rho^-16 (with a factor 100 of margin) below acc. Branch points
+/// within 1e-7 of a piece end and of the real axis are the double zeros of
+/// the speed at the cut points themselves (computed to ~sqrt(eps)): there
+/// the speed is |u - u0| times an analytic function, analytic on each side,
+/// and treating a genuine branch point that close as one changes the length
+/// by at most ~|C''| d^2 log(1/d) < 1e-12 of it.
+template <std::size_t D, class T>
+void cut_for_rule(const cubic_segment<D, T>& s, const std::vector<std::complex<double>>& sing, double a, double b,
+                  double rho_min, int depth, std::vector<length_piece<T>>& out) {
+    bool ok = true;
+    for (const auto& z : sing) {
+        const bool at_end = std::abs(z.imag()) < 1e-7 && (std::abs(z.real() - a) < 1e-7 || std::abs(z.real() - b) < 1e-7);
+        if (!at_end && ellipse_rho(z, a, b) < rho_min) { ok = false; break; }
+    }
+    const double m = a + (b - a) / 2;
+    if (ok || depth >= 60 || !(m > a && m < b)) {
+        out.push_back({T(a), T(b), gauss_length(s, T(a), T(b))});
+        return;
+    }
+    cut_for_rule(s, sing, a, m, rho_min, depth + 1, out);
+    cut_for_rule(s, sing, m, b, rho_min, depth + 1, out);
+}
+
+/// The pieces of a segment over [a, b] for relative accuracy acc: cut at
+/// the speed's extrema (where its zeros sit), then a priori by the distance
+/// of the speed's singularities, then checked a posteriori: a piece whose
+/// halves disagree with it is halved again.
 template <std::size_t D, class T>
 std::vector<length_piece<T>> length_pieces(const cubic_segment<D, T>& s, T a, T b, T acc) {
     std::vector<length_piece<T>> out;
@@ -104,16 +186,16 @@ std::vector<length_piece<T>> length_pieces(const cubic_segment<D, T>& s, T a, T 
     std::vector<T> cuts{a};
     for (T x : speed_critical_points(s, a, b)) cuts.push_back(x);
     cuts.push_back(b);
-    // First estimate of the length fixes the absolute tolerance.
+    const double eff = std::max(double(acc), 8.0 * double(std::numeric_limits<T>::epsilon()));
+    const double rho_min = std::pow(100.0 / eff, 1.0 / 16.0);
+    const auto sing = speed_singularities(s);
+    std::vector<length_piece<T>> coarse;
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
+        cut_for_rule(s, sing, double(cuts[i]), double(cuts[i + 1]), rho_min, 0, coarse);
     T estimate = 0;
-    std::vector<T> rough(cuts.size() - 1);
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) estimate += rough[i] = gauss_length(s, cuts[i], cuts[i + 1]);
-    const T floor = T(8) * std::numeric_limits<T>::epsilon();
-    const T tol = std::max(acc, floor) * estimate;
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-        const T share = tol * (cuts[i + 1] - cuts[i]) / (b - a);
-        adapt_length(s, cuts[i], cuts[i + 1], rough[i], share, 0, out);
-    }
+    for (const auto& p : coarse) estimate += p.length;
+    const T tol = T(eff) * estimate;
+    for (const auto& p : coarse) adapt_length(s, p.u0, p.u1, p.length, tol * (p.u1 - p.u0) / (b - a), 0, out);
     return out;
 }
 

@@ -2,11 +2,15 @@
 #pragma once
 
 #include "arc_length.hpp"
+#include "bounds.hpp"
 #include "catmull_rom.hpp"
 #include "end_condition.hpp"
 #include "error.hpp"
+#include "frames.hpp"
+#include "nearest.hpp"
 #include "parameterization.hpp"
 #include "point_traits.hpp"
 #include "segment.hpp"
+#include "tessellate.hpp"
 #include "vec.hpp"
 #include "version.hpp"
