@@ -278,8 +278,25 @@ void classify_speed(segment_analysis<D, T>& a, const std::array<vec<D, T>, 4>& c
         const std::array<vec<D, T>, 3> d1{c[1], T(2) * c[2], T(3) * c[3]};
         const std::array<vec<D, T>, 2> d2{T(2) * c[2], T(6) * c[3]};
         const auto g = dot_poly(d1, d2);
-        for (T r : detail::real_roots(g, T(0), T(1)))
-            if (norm(horner_vec(d1, r)) <= thr) interior.push_back(r);
+        for (T r : detail::real_roots(g, T(0), T(1))) {
+            // The root of C'.C'' is ill-conditioned where that cubic is flat
+            // (near-triple roots: a symmetric cusp); the speed itself is
+            // not. Polish by Gauss-Newton on C'(u) = 0, u -= C'.C'' / |C''|^2,
+            // which uses C' and C'' directly (rounding eps |c| / |C''| in u).
+            T u = r, sp = norm(horner_vec(d1, u));
+            for (int it = 0; it < 8 && sp > 0; ++it) {
+                const vec<D, T> v = horner_vec(d1, u), w = horner_vec(d2, u);
+                const T ww = dot(w, w);
+                if (!(ww > 0)) break;
+                const T nu = std::clamp(u - dot(v, w) / ww, T(0), T(1));
+                const T ns = norm(horner_vec(d1, nu));
+                if (!(ns < sp)) break;
+                u = nu;
+                sp = ns;
+            }
+            if (sp <= thr) interior.push_back(u);
+        }
+        std::sort(interior.begin(), interior.end());
     }
     bool zero0 = speed0 <= zthr, zero1 = speed1 <= zthr;
     // A zero found within merge distance of an end whose own speed is at
@@ -320,8 +337,19 @@ void find_loop(segment_analysis<D, T>& a, const std::array<vec<D, T>, 4>& c, con
     auto cross = [](const std::array<T, 2>& x, const std::array<T, 2>& y) { return x[0] * y[1] - x[1] * y[0]; };
     const T det = cross(q[2], q[3]);
     if (det == 0) return;  // c2 || c3 and c1 off their line: no solution
-    const T sigma = cross(q[3], q[1]) / det;
-    const T w = cross(q[1], q[2]) / det;
+    T sigma = cross(q[3], q[1]) / det;
+    T w = cross(q[1], q[2]) / det;
+    // Cramer's rule loses accuracy when c2 and c3 are nearly parallel:
+    // iterative refinement on the residual c1 + c2 sigma + c3 w (the
+    // divided difference (C(s) - C(t)) / (s - t), which, unlike C(s) - C(t),
+    // has no trivial solution s = t to slide into).
+    for (int it = 0; it < 3; ++it) {
+        const std::array<T, 2> r{q[1][0] + q[2][0] * sigma + q[3][0] * w, q[1][1] + q[2][1] * sigma + q[3][1] * w};
+        const T ds = cross(q[3], r) / det, dw = cross(r, q[2]) / det;
+        if (!(std::isfinite(ds) && std::isfinite(dw))) break;
+        sigma += ds;
+        w += dw;
+    }
     const T disc = 4 * w - 3 * sigma * sigma;  // (t - s)^2
     if (!(disc > 0) || !std::isfinite(disc)) return;  // disc == 0 is a cusp, < 0 no real pair
     const T root = std::sqrt(disc);
@@ -337,36 +365,9 @@ void find_loop(segment_analysis<D, T>& a, const std::array<vec<D, T>, 4>& c, con
     if (s > t) std::swap(s, t);
     // Far outside [0, 1]: no loop in the segment, whatever the rounding.
     if (!(s > T(-0.5) && t < T(1.5))) return;
-    // Cramer's rule loses accuracy when c2 and c3 are nearly parallel:
-    // polish with Newton on C(s) - C(t) = 0 (Jacobian [C'(s), -C'(t)]),
-    // unconstrained, keeping the best iterate; then decide on the range.
-    auto plane = [&](const vec<D, T>& x) -> std::array<T, 2> {
-        if constexpr (D == 2) return {x[0], x[1]};
-        else return {dot(x, f.e[0]), dot(x, f.e[1])};
-    };
-    const std::array<vec<D, T>, 3> d1{c[1], T(2) * c[2], T(3) * c[3]};
-    auto gap_of = [&](T x, T y) { return norm(horner_vec(c, x) - horner_vec(c, y)); };
-    T gap = gap_of(s, t);
-    for (int it = 0; it < 30 && gap > 0; ++it) {
-        const auto g = plane(horner_vec(c, s) - horner_vec(c, t));
-        const auto js = plane(horner_vec(d1, s)), jt = plane(horner_vec(d1, t));
-        // Solve [js, -jt] (ds, dt)^T = -g by Cramer's rule.
-        const T dj = jt[0] * js[1] - js[0] * jt[1];
-        if (dj == 0) break;
-        const T ds = (g[0] * jt[1] - jt[0] * g[1]) / dj;
-        const T dt = (js[0] * g[1] - js[1] * g[0]) / -dj;
-        // Damped: halve the step until the gap shrinks (a shallow crossing
-        // is nearly tangential and the full step overshoots).
-        T lam = 1, ng = gap_of(s + ds, t + dt);
-        for (int h = 0; h < 40 && !(ng < gap); ++h) {
-            lam /= 2;
-            ng = gap_of(s + lam * ds, t + lam * dt);
-        }
-        if (!(ng < gap)) break;
-        s += lam * ds;
-        t += lam * dt;
-        gap = ng;
-    }
+    // The residual of the divided difference at (s, t), relative to scale.
+    const T sum = s + t, sq = s * s + s * t + t * t;
+    const T gap = norm(c[1] + c[2] * sum + c[3] * sq);
     // Allow the ends to be missed by a few ulps of rounding.
     const T slack = 8 * std::numeric_limits<T>::epsilon();
     if (!(s >= -slack && t <= 1 + slack && s < t)) return;

@@ -77,7 +77,9 @@ TEST(SegmentProperties, CentripetalNeverCuspsOrLoops) {
         }
         EXPECT_GE(a.projection->range[0], -slack);
         EXPECT_LE(a.projection->range[1], 1 + slack);
-        if (!a.projection->theorem2) { ++near_degenerate; }
+        if (!a.projection->theorem2) {
+            ++near_degenerate;
+        }
         ++checked;
     }
     const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count() / double(n);
