@@ -66,13 +66,28 @@ T solve_bracketed(F f, DF df, T lo, T hi) noexcept {
     return std::abs(f(lo)) <= std::abs(f(hi)) ? lo : hi;
 }
 
+/// At most N values in place (no heap): the roots of a polynomial of
+/// degree < N. Iterable like a container.
+template <class T, std::size_t N>
+struct root_list {
+    std::array<T, (N > 0 ? N : 1)> v{};
+    std::size_t n = 0;
+    void push_back(T x) noexcept { v[n++] = x; }
+    bool empty() const noexcept { return n == 0; }
+    std::size_t size() const noexcept { return n; }
+    T back() const noexcept { return v[n - 1]; }
+    T operator[](std::size_t i) const noexcept { return v[i]; }
+    const T* begin() const noexcept { return v.data(); }
+    const T* end() const noexcept { return v.data() + n; }
+};
+
 /// Real roots of p in [a, b], sorted, each once. A root of even
 /// multiplicity (p touches zero without crossing) is reported only when p is
 /// exactly zero at that critical point; callers that care about
 /// near-tangencies examine the critical points themselves.
 template <class T, std::size_t N>
-std::vector<T> real_roots(const std::array<T, N>& c, T a, T b) {
-    std::vector<T> out;
+root_list<T, N> real_roots(const std::array<T, N>& c, T a, T b) {
+    root_list<T, N> out;
     if constexpr (N <= 1) {
         return out;
     } else if constexpr (N == 2) {
@@ -85,10 +100,12 @@ std::vector<T> real_roots(const std::array<T, N>& c, T a, T b) {
         if (c[N - 1] == 0) {  // lower degree
             std::array<T, N - 1> low{};
             for (std::size_t i = 0; i + 1 < N; ++i) low[i] = c[i];
-            return real_roots(low, a, b);
+            for (T r : real_roots(low, a, b)) out.push_back(r);
+            return out;
         }
         // Critical points split [a, b] into monotone pieces.
-        std::vector<T> cuts{a};
+        root_list<T, N + 1> cuts;
+        cuts.push_back(a);
         for (T x : real_roots(derivative(c), a, b))
             if (x > cuts.back() && x < b) cuts.push_back(x);
         cuts.push_back(b);
