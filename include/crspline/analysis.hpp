@@ -175,8 +175,11 @@ std::optional<paper_bounds<T>> segment_paper_bounds(const std::array<vec<D, T>, 
     // k1 sqrt(1 - c*^2).
     const T c1s = h[0] * h[0] * b.d2 / (h[1] * h[1] * b.d1);
     const T c2s = h[2] * h[2] * b.d2 / (h[1] * h[1] * b.d3);
-    b.eq8_start = c1s < 1 ? k1 * std::sqrt((1 - c1s) * (1 + c1s)) : T(0);
-    b.eq8_end = c2s < 1 ? k2 * std::sqrt((1 - c2s) * (1 + c2s)) : T(0);
+    // For alpha = 1/2, c* = 1 exactly (Eq. 8 is identically 0); its rounding
+    // (a few ulps) must not turn into a radius of sqrt(ulp).
+    const T one = 1 - T(16) * std::numeric_limits<T>::epsilon();
+    b.eq8_start = c1s < one ? k1 * std::sqrt((1 - c1s) * (1 + c1s)) : T(0);
+    b.eq8_end = c2s < one ? k2 * std::sqrt((1 - c2s) * (1 + c2s)) : T(0);
     return b;
 }
 

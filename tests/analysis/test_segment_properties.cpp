@@ -85,7 +85,9 @@ TEST(SegmentProperties, CentripetalNeverCuspsOrLoops) {
     const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count() / double(n);
     std::printf("centripetal: %zu segments, %zu on Theorem 2's boundary, %.2f us per segment\n", checked, near_degenerate, us);
     EXPECT_EQ(checked, n);
-    if (property_scale() >= 1) EXPECT_GE(checked, 100000u);
+    if (property_scale() >= 1) {
+        EXPECT_GE(checked, 100000u);
+    }
 }
 
 

@@ -1,0 +1,223 @@
+// crspline: intersections of a Catmull-Rom curve with itself.
+//
+// Between different segments: Bézier subdivision with bounding-box
+// rejection down to a tolerance, then a Gauss-Newton polish of
+// C_i(u) = C_j(v). In 2-D crossings are found exactly (the polish converges
+// to the crossing to rounding); in 3-D and higher, curves generically miss
+// each other, and what is reported are closest approaches closer than the
+// tolerance. Adjacent segments always share their joint: that trivial
+// meeting is excluded (near the joint the two pieces are checked to be
+// monotone along the joint tangent, so they cannot meet there again).
+// Within a segment: the exact loops of analyze_segment (segments {i, i}).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "analysis.hpp"
+#include "catmull_rom.hpp"
+#include "segment.hpp"
+#include "vec.hpp"
+
+namespace crspline {
+
+/// Default tolerance of find_intersections, relative to the curve's scale
+/// (the diagonal of the bounding box of its Bézier points).
+inline constexpr double default_intersection_tolerance = 1e-9;
+
+/// One meeting of the curve with itself.
+template <std::size_t D, class T = double>
+struct curve_intersection {
+    std::array<std::size_t, 2> segments{};  ///< i <= j; i == j is a loop inside segment i
+    std::array<T, 2> u{};                   ///< local parameters on segments[0] and segments[1]
+    vec<D, T> point{};                      ///< the meeting point (on segments[0])
+    T distance = 0;                         ///< |C_i(u_i) - C_j(u_j)|: 0 to rounding for a crossing
+};
+
+template <std::size_t D, class T = double>
+struct intersection_result {
+    std::vector<curve_intersection<D, T>> intersections;
+    std::vector<std::size_t> folds;  ///< collinear segments that retrace themselves (1-D folds)
+    bool complete = true;            ///< false if a pair of segments exhausted the work budget
+                                     ///< (overlapping collinear pieces meet in a continuum)
+    bool any() const noexcept { return !intersections.empty() || !folds.empty(); }
+};
+
+namespace detail {
+
+template <std::size_t D, class T>
+struct sub_bezier {
+    std::array<vec<D, T>, 4> b;
+    T u0, u1;
+};
+
+template <std::size_t D, class T>
+std::array<sub_bezier<D, T>, 2> split_half(const sub_bezier<D, T>& s) {
+    const auto& b = s.b;
+    const T h = T(0.5);
+    const auto a0 = lerp(b[0], b[1], h), a1 = lerp(b[1], b[2], h), a2 = lerp(b[2], b[3], h);
+    const auto q0 = lerp(a0, a1, h), q1 = lerp(a1, a2, h);
+    const auto m = lerp(q0, q1, h);
+    const T um = s.u0 + (s.u1 - s.u0) / 2;
+    return {sub_bezier<D, T>{{b[0], a0, q0, m}, s.u0, um}, sub_bezier<D, T>{{m, q1, a2, b[3]}, um, s.u1}};
+}
+
+template <std::size_t D, class T>
+std::array<vec<D, T>, 2> box_of(const std::array<vec<D, T>, 4>& b) {
+    vec<D, T> lo = b[0], hi = b[0];
+    for (const auto& p : b)
+        for (std::size_t k = 0; k < D; ++k) { lo[k] = std::min(lo[k], p[k]); hi[k] = std::max(hi[k], p[k]); }
+    return {lo, hi};
+}
+
+template <std::size_t D, class T>
+bool boxes_meet(const std::array<vec<D, T>, 2>& a, const std::array<vec<D, T>, 2>& b, T pad) {
+    for (std::size_t k = 0; k < D; ++k)
+        if (a[0][k] > b[1][k] + pad || b[0][k] > a[1][k] + pad) return false;
+    return true;
+}
+
+// Every hodograph control point of b has a positive component along d.
+template <std::size_t D, class T>
+bool monotone_along(const std::array<vec<D, T>, 4>& b, const vec<D, T>& d) {
+    for (std::size_t k = 0; k < 3; ++k)
+        if (!(dot(b[k + 1] - b[k], d) > 0)) return false;
+    return true;
+}
+
+// Gauss-Newton on |C_i(u) - C_j(v)|^2 from (u, v), clamped to [0, 1]^2.
+template <std::size_t D, class T>
+std::array<T, 3> polish(const cubic_segment<D, T>& A, const cubic_segment<D, T>& B, T u, T v) {
+    auto F = [&](T x, T y) { return (A.origin - B.origin) + (A.at(x) - A.origin) - (B.at(y) - B.origin); };
+    T best = norm(F(u, v));
+    for (int it = 0; it < 30 && best > 0; ++it) {
+        const vec<D, T> f = F(u, v), ja = A.du(u, 1), jb = -B.du(v, 1);
+        const T a11 = dot(ja, ja), a12 = dot(ja, jb), a22 = dot(jb, jb);
+        const T r1 = -dot(ja, f), r2 = -dot(jb, f);
+        const T det = a11 * a22 - a12 * a12;
+        if (!(det > 0)) break;
+        const T du = (r1 * a22 - a12 * r2) / det, dv = (a11 * r2 - a12 * r1) / det;
+        T lam = 1;
+        T nu = std::clamp(u + du, T(0), T(1)), nv = std::clamp(v + dv, T(0), T(1));
+        T n = norm(F(nu, nv));
+        for (int h = 0; h < 20 && !(n < best); ++h) {
+            lam /= 2;
+            nu = std::clamp(u + lam * du, T(0), T(1));
+            nv = std::clamp(v + lam * dv, T(0), T(1));
+            n = norm(F(nu, nv));
+        }
+        if (!(n < best)) break;
+        u = nu;
+        v = nv;
+        best = n;
+    }
+    return {u, v, best};
+}
+
+}  // namespace detail
+
+/// All meetings of the curve with itself closer than `tolerance` (a
+/// distance; 0 means default_intersection_tolerance times the curve's
+/// scale): between non-adjacent segments, between adjacent segments away
+/// from their shared joint, and loops inside segments.
+template <std::size_t D, class T>
+intersection_result<D, T> find_intersections(const catmull_rom<D, T>& c, T tolerance = T(0)) {
+    using point = vec<D, T>;
+    using sub = detail::sub_bezier<D, T>;
+    intersection_result<D, T> out;
+    const std::size_t n = c.segment_count();
+    const auto bez = c.bezier();
+    // Scale and tolerance.
+    point lo = bez[0][0], hi = bez[0][0];
+    for (const auto& b : bez) {
+        const auto bx = detail::box_of(b);
+        for (std::size_t k = 0; k < D; ++k) { lo[k] = std::min(lo[k], bx[0][k]); hi[k] = std::max(hi[k], bx[1][k]); }
+    }
+    const T scale = norm(hi - lo);
+    const T tol = tolerance > 0 ? tolerance : T(default_intersection_tolerance) * scale;
+    if (!(scale > 0)) return out;
+
+    // Within segments: exact.
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto a = analyze_segment(c.segment(i));
+        if (a.fold) out.folds.push_back(i);
+        for (const auto& [u, v] : a.self_intersection)
+            out.intersections.push_back({{i, i}, {u, v}, c.segment(i).at(u), norm(c.segment(i).at(u) - c.segment(i).at(v))});
+    }
+
+    std::vector<std::array<point, 2>> boxes(n);
+    for (std::size_t i = 0; i < n; ++i) boxes[i] = detail::box_of(bez[i]);
+    const std::size_t budget = 200000;  // sub-pair visits per segment pair
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i + 1; j < n; ++j) {
+            if (!detail::boxes_meet(boxes[i], boxes[j], tol)) continue;
+            // Joint of adjacent segments: (end of i, start of j) or, closing
+            // a closed curve, (start of i = 0, end of j = n - 1).
+            const bool next = j == i + 1;
+            const bool wrap = c.closed() && i == 0 && j == n - 1 && n > 2;
+            const bool adjacent = next || wrap || (c.closed() && n == 2);
+            const T ju = next ? T(1) : T(0), jv = next ? T(0) : T(1);
+            point joint{}, tangent{};
+            if (adjacent) {
+                joint = next ? bez[j][0] : bez[i][0];
+                const auto& S = c.segment(next ? j : i);
+                tangent = S.du(T(0), 1);
+                if (!(norm(tangent) > 0)) tangent = S.du(T(0), 2);  // zero speed at the joint
+                if (!(norm(tangent) > 0)) tangent = bez[next ? j : i][3] - joint;
+            }
+            const auto& A = c.segment(i);
+            const auto& B = c.segment(j);
+            std::vector<std::pair<sub, sub>> stack{{sub{bez[i], T(0), T(1)}, sub{bez[j], T(0), T(1)}}};
+            std::vector<std::array<T, 3>> found;
+            std::size_t visits = 0;
+            while (!stack.empty()) {
+                if (++visits > budget) { out.complete = false; break; }
+                auto [a, b] = stack.back();
+                stack.pop_back();
+                const auto ba = detail::box_of(a.b), bb = detail::box_of(b.b);
+                if (!detail::boxes_meet(ba, bb, tol)) continue;
+                const bool corner = adjacent && (a.u0 == ju || a.u1 == ju) && (b.u0 == jv || b.u1 == jv);
+                if (corner) {
+                    // Both pieces monotone along the joint tangent, on its two
+                    // sides: they meet only at the joint.
+                    const point d = next ? tangent : -tangent;  // direction of travel i -> j through the joint
+                    if (detail::monotone_along(a.b, d) && detail::monotone_along(b.b, d)) continue;
+                    if (!next && detail::monotone_along(a.b, tangent) && detail::monotone_along(b.b, tangent)) continue;
+                }
+                const T sa = norm(ba[1] - ba[0]), sb = norm(bb[1] - bb[0]);
+                const bool leaf = (sa <= tol && sb <= tol) || (a.u1 - a.u0 < T(1e-12) && b.u1 - b.u0 < T(1e-12));
+                if (leaf) {
+                    if (corner) continue;  // the joint itself
+                    const auto r = detail::polish(A, B, (a.u0 + a.u1) / 2, (b.u0 + b.u1) / 2);
+                    if (!(r[2] <= tol)) continue;
+                    // Not the joint (polish can slide into it).
+                    if (adjacent && std::abs(r[0] - ju) < T(1e-6) && std::abs(r[1] - jv) < T(1e-6)) continue;
+                    bool dup = false;
+                    for (const auto& f : found)
+                        if ((std::abs(f[0] - r[0]) < T(1e-7) && std::abs(f[1] - r[1]) < T(1e-7)) ||
+                            norm(A.at(f[0]) - A.at(r[0])) <= 2 * tol)
+                            dup = true;
+                    if (!dup) found.push_back(r);
+                    continue;
+                }
+                // Split the larger piece (both when similar).
+                if (sa >= sb) {
+                    const auto h = detail::split_half(a);
+                    stack.push_back({h[0], b});
+                    stack.push_back({h[1], b});
+                } else {
+                    const auto h = detail::split_half(b);
+                    stack.push_back({a, h[0]});
+                    stack.push_back({a, h[1]});
+                }
+            }
+            for (const auto& f : found) out.intersections.push_back({{i, j}, {f[0], f[1]}, A.at(f[0]), f[2]});
+        }
+    return out;
+}
+
+}  // namespace crspline

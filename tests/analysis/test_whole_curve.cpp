@@ -1,0 +1,347 @@
+// Whole-curve analysis: intersections between segments (2-D exact, 3-D
+// closest approaches), the Figure-5 bounding volumes (dense sampling), the
+// Section-5 certificate (a search for counterexamples among thousands of
+// certified curves) and curvature maxima (Section 6.4).
+#include <cstdlib>
+
+#include <crspline/certify.hpp>
+#include <crspline/intersections.hpp>
+
+#include "test_support.hpp"
+
+namespace {
+using namespace crspline;
+using P2 = vec<2>;
+using P3 = vec<3>;
+constexpr double pi = std::numbers::pi;
+
+double property_scale() {
+    if (const char* s = std::getenv("CRSPLINE_PROPERTY_SCALE")) return std::max(0.01, std::atof(s));
+    return 1.0;
+}
+
+// A polygon whose turn at every vertex is at most max_turn (so polygon angles
+// are at least pi - max_turn), with step lengths over `decades`.
+template <std::size_t D>
+std::vector<vec<D>> smooth_polygon(std::mt19937_64& rng, std::size_t n, double max_turn, double decades) {
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    std::normal_distribution<double> G(0.0, 1.0);
+    std::vector<vec<D>> p(n);
+    vec<D> dir{};
+    for (std::size_t k = 0; k < D; ++k) dir[k] = G(rng);
+    dir = dir / norm(dir);
+    for (std::size_t i = 1; i < n; ++i) {
+        // Rotate dir by a random angle <= max_turn in a random plane.
+        vec<D> r{};
+        for (std::size_t k = 0; k < D; ++k) r[k] = G(rng);
+        r = r - dot(r, dir) * dir;
+        if (norm(r) > 0) r = r / norm(r);
+        const double t = max_turn * (2 * U(rng) - 1);
+        dir = std::cos(t) * dir + std::sin(t) * r;
+        p[i] = p[i - 1] + std::pow(10.0, decades * (U(rng) - 0.5)) * dir;
+    }
+    return p;
+}
+
+// Polyline of every segment, m chords each.
+template <std::size_t D>
+std::vector<std::vector<vec<D>>> polylines(const catmull_rom<D>& c, int m) {
+    std::vector<std::vector<vec<D>>> out(c.segment_count());
+    for (std::size_t i = 0; i < c.segment_count(); ++i)
+        for (int k = 0; k <= m; ++k) out[i].push_back(c.segment(i).at(double(k) / m));
+    return out;
+}
+
+bool chords_cross(const P2& a, const P2& b, const P2& c, const P2& d) {
+    auto orient = [](const P2& p, const P2& q, const P2& r) {
+        return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+    };
+    const double o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+    return ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
+}
+
+// Polyline crossings between different segments, leaving out the chords at
+// a shared joint: (i, j, chord on i, chord on j).
+std::vector<std::array<std::size_t, 4>> polyline_crossings(const catmull_rom<2>& c, int m) {
+    const auto pl = polylines(c, m);
+    const std::size_t n = c.segment_count();
+    std::vector<std::array<std::size_t, 4>> out;
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i + 1; j < n; ++j)
+            for (int a = 0; a < m; ++a)
+                for (int b = 0; b < m; ++b) {
+                    const bool next = j == i + 1, wrap = c.closed() && i == 0 && j == n - 1;
+                    if (next && a == m - 1 && b == 0) continue;
+                    if (wrap && a == 0 && b == m - 1) continue;
+                    if (chords_cross(pl[i][a], pl[i][a + 1], pl[j][b], pl[j][b + 1])) out.push_back({i, j, std::size_t(a), std::size_t(b)});
+                }
+    return out;
+}
+
+TEST(Intersections, FigureEightCrossesOnce) {
+    const std::vector<P2> p{P2{{0, 0}}, P2{{4, 4}}, P2{{4, 0}}, P2{{0, 4}}};
+    catmull_rom<2> c(p);
+    const auto r = find_intersections(c);
+    ASSERT_EQ(r.intersections.size(), 1u);
+    const auto& x = r.intersections[0];
+    EXPECT_EQ(x.segments, (std::array<std::size_t, 2>{0, 2}));
+    EXPECT_LE(norm(c.segment(0).at(x.u[0]) - c.segment(2).at(x.u[1])), 1e-13 * 8);
+    EXPECT_TRUE(r.complete);
+}
+
+// Random 2-D curves: every polyline crossing between segments is reported
+// (with parameters within a chord), and every reported crossing closes to
+// rounding.
+TEST(Intersections, AgreeWithPolylinesOnRandomCurves) {
+    CRSPLINE_SEEDED(seed, 4001);
+    std::mt19937_64 rng(seed);
+    const int m = 64;
+    std::size_t curves = 0, reported = 0, crossings = 0;
+    const std::size_t count = std::size_t(300 * property_scale());
+    for (std::size_t rep = 0; rep < count; ++rep) {
+        const double alpha = std::array{0.0, 0.5, 1.0}[rep % 3];
+        auto p = crspline::test::random_polygon<2>(rng, 5 + rep % 5, 1.0);
+        catmull_rom<2> c(p, {.alpha = alpha, .closed = rep % 4 == 0});
+        const double scale = crspline::test::scale_of(p);
+        const auto r = find_intersections(c);
+        ASSERT_TRUE(r.complete);
+        for (const auto& x : r.intersections) {
+            const auto& A = c.segment(x.segments[0]);
+            const auto& B = c.segment(x.segments[1]);
+            EXPECT_LE(norm(A.at(x.u[0]) - B.at(x.u[1])), 1e-11 * scale) << "rep " << rep;
+            ++reported;
+        }
+        for (const auto& [i, j, a, b] : polyline_crossings(c, m)) {
+            bool found = false;
+            // A crossing through a polygon vertex may be reported on the
+            // neighbouring segment (u = 1 instead of v = 0): accept any
+            // reported point within two chords of the polyline crossing.
+            const auto pl = polylines(c, m);
+            const double reach = 2 * (norm(pl[i][a + 1] - pl[i][a]) + norm(pl[j][b + 1] - pl[j][b]));
+            for (const auto& x : r.intersections) found |= norm(x.point - pl[i][a]) <= reach;
+            for (const auto& x : r.intersections)
+                // Within a chord's width of the crossing chords (the polyline
+                // is off the curve by its sagitta, so it crosses a little away).
+                found |= x.segments[0] == i && x.segments[1] == j && x.u[0] >= double(a - 1) / m &&
+                         x.u[0] <= double(a + 2) / m && x.u[1] >= double(b - 1) / m && x.u[1] <= double(b + 2) / m;
+            EXPECT_TRUE(found) << "rep " << rep << " segments " << i << ", " << j << " chords " << a << ", " << b;
+            ++crossings;
+        }
+        ++curves;
+    }
+    std::printf("intersections: %zu curves, %zu reported, %zu polyline crossings\n", curves, reported, crossings);
+    EXPECT_EQ(curves, count);
+    EXPECT_GT(crossings, count / 10);
+}
+
+TEST(Intersections, ThreeDClosestApproaches) {
+    // The figure eight in the plane z = 0, then with one vertex lifted.
+    std::vector<P3> p{P3{{0, 0, 0}}, P3{{4, 4, 0}}, P3{{4, 0, 0}}, P3{{0, 4, 0}}};
+    EXPECT_EQ(find_intersections(catmull_rom<3>(p)).intersections.size(), 1u);
+    p[3][2] = 0.01;
+    const catmull_rom<3> lifted(p);
+    EXPECT_TRUE(find_intersections(lifted).intersections.empty());  // default: 1e-9 of the scale
+    const auto near = find_intersections(lifted, 0.05);
+    ASSERT_EQ(near.intersections.size(), 1u);
+    EXPECT_GT(near.intersections[0].distance, 0.0);
+    EXPECT_LT(near.intersections[0].distance, 0.01);
+}
+
+// Figure 5: the curve lies inside its bounding volumes (dense sampling),
+// local and tightened, for every alpha where the paper bounds it.
+TEST(BoundingVolumes, ContainTheCurve) {
+    CRSPLINE_SEEDED(seed, 4002);
+    std::mt19937_64 rng(seed);
+    std::size_t samples = 0, curves = 0;
+    const std::size_t count = std::size_t(400 * property_scale());
+    for (std::size_t rep = 0; rep < count; ++rep) {
+        const double alpha = std::array{0.0, 0.25, 0.5, 0.75, 1.0}[rep % 5];
+        auto p = crspline::test::random_polygon<2>(rng, 6, 3.0);
+        const catmull_rom<2> c(p, {.alpha = alpha, .closed = rep % 3 == 0});
+        const double slack = 1e-12 * crspline::test::scale_of(p);
+        for (auto kind : {volume_kind::tightened, volume_kind::local}) {
+            if (kind == volume_kind::local && alpha < 0.5) continue;  // unbounded (Eq. 6 grows like r^(1-2a))
+            const auto v = paper_bounding_volumes(c, alpha, kind);
+            ASSERT_EQ(v.boxes.size(), c.segment_count());
+            if (alpha == 0.5 && kind == volume_kind::tightened) {
+                // Centripetal needs no balls (Eq. 8 is identically 0).
+                EXPECT_TRUE(v.balls.empty());
+            }
+            for (std::size_t i = 0; i < c.segment_count(); ++i)
+                for (int k = 0; k <= 200; ++k) {
+                    const P2 x = c.segment(i).at(k / 200.0);
+                    EXPECT_TRUE(v.segment_contains(i, x, slack))
+                        << "rep " << rep << " alpha " << alpha << " segment " << i << " u " << k / 200.0
+                        << (kind == volume_kind::local ? " local" : " tightened");
+                    ++samples;
+                }
+        }
+        ++curves;
+    }
+    std::printf("volumes: %zu curves, %zu samples inside\n", curves, samples);
+    EXPECT_EQ(curves, count);
+    EXPECT_GE(samples, count * 6 * 201);
+}
+
+// The certificate is a guarantee: among thousands of random certified
+// centripetal curves (2-D and 3-D, open and closed), none intersects itself
+// (exact search and dense polylines).
+TEST(Certify, NoCounterexampleAmongCertifiedCurves) {
+    CRSPLINE_SEEDED(seed, 4003);
+    std::mt19937_64 rng(seed);
+    const std::size_t tries = std::size_t(6000 * property_scale());
+    std::size_t certified = 0, certified3 = 0;
+    std::array<std::size_t, 5> failures{};
+    for (std::size_t rep = 0; rep < tries; ++rep) {
+        const bool closed = rep % 5 == 0;
+        const std::size_t n = 4 + rep % 9;
+        const double turn = (0.4 + 0.8 * double(rep % 7) / 6) * 2 * pi / 3;  // up to 160 degrees of turn
+        if (rep % 6 == 5) {
+            const auto p = smooth_polygon<3>(rng, n, turn, 1.5);
+            const catmull_rom<3> c(p, {.closed = closed});
+            const auto cert = certify_intersection_free(c, {.search_on_failure = false});
+            ++failures[std::size_t(cert.failed_rule)];
+            if (!cert.certified) continue;
+            ++certified3;
+            EXPECT_TRUE(find_intersections(c).intersections.empty()) << "rep " << rep;
+            continue;
+        }
+        const auto p = smooth_polygon<2>(rng, n, turn, 1.5);
+        const catmull_rom<2> c(p, {.closed = closed});
+        const auto cert = certify_intersection_free(c, {.search_on_failure = false});
+        ++failures[std::size_t(cert.failed_rule)];
+        if (!cert.certified) continue;
+        ++certified;
+        const auto r = find_intersections(c);
+        EXPECT_FALSE(r.any()) << "rep " << rep << ": certified but intersects";
+        EXPECT_TRUE(polyline_crossings(c, 24).empty()) << "rep " << rep << ": certified but the polyline crosses";
+    }
+    std::printf("certify: %zu tries, %zu certified in 2-D, %zu in 3-D; failures: centripetal %zu, coincident %zu, "
+                "angle %zu, boxes %zu\n",
+                tries, certified, certified3, failures[1], failures[2], failures[3], failures[4]);
+    if (property_scale() >= 1) {
+        EXPECT_GE(certified, 2000u);
+        EXPECT_GE(certified3, 200u);
+    }
+    EXPECT_GT(failures[3], 0u);
+    EXPECT_GT(failures[4], 0u);
+}
+
+TEST(Certify, ReportsTheFailedRuleAndWhetherItIntersects) {
+    // Figure eight: boxes of segments 0 and 2 overlap, and they do cross.
+    {
+        const catmull_rom<2> c({P2{{0, 0}}, P2{{4, 4}}, P2{{4, 0}}, P2{{0, 4}}});
+        const auto cert = certify_intersection_free(c);
+        EXPECT_FALSE(cert.certified);
+        EXPECT_EQ(cert.failed_rule, certify_rule::adjacent_angle);  // 45 degrees at vertex 1
+        EXPECT_EQ(cert.vertex, std::optional<std::size_t>(1));
+        EXPECT_NEAR(cert.angle, pi / 4, 1e-12);
+        ASSERT_TRUE(cert.intersects.has_value());
+        EXPECT_TRUE(*cert.intersects);
+    }
+    // A U with right angles whose end turns back towards the start: all
+    // angles 90 degrees, boxes apart: certified, and the search is not run.
+    {
+        const catmull_rom<2> c({P2{{0, 0}}, P2{{10, 0}}, P2{{10, 2}}, P2{{0, 2}}, P2{{0, 1.05}}});
+        const auto cert = certify_intersection_free(c);
+        EXPECT_TRUE(cert.certified) << cert.detail;
+        EXPECT_FALSE(find_intersections(c).any());
+    }
+    {
+        const catmull_rom<2> c({P2{{0, 0}}, P2{{10, 0}}, P2{{14, 4}}, P2{{10, 8}}, P2{{0, 8}}, P2{{-3, 4.5}},
+                                P2{{1, 1.2}}});
+        const auto cert = certify_intersection_free(c);
+        EXPECT_EQ(cert.failed_rule, certify_rule::overlapping_boxes) << cert.detail;
+        ASSERT_TRUE(cert.segments.has_value());
+        EXPECT_TRUE(cert.intersects.has_value());
+    }
+    // Not centripetal: chordal knots, or tension.
+    {
+        const std::vector<P2> p{P2{{0, 0}}, P2{{4, 1}}, P2{{8, 0}}, P2{{12, 1}}};
+        EXPECT_EQ(certify_intersection_free(catmull_rom<2>(p, {.alpha = 1.0})).failed_rule,
+                  certify_rule::not_centripetal);
+        EXPECT_EQ(certify_intersection_free(catmull_rom<2>(p, {.tension = 0.5})).failed_rule,
+                  certify_rule::not_centripetal);
+        const auto ok = certify_intersection_free(catmull_rom<2>(p));
+        EXPECT_TRUE(ok.certified) << ok.detail;
+        EXPECT_FALSE(ok.intersects.has_value());
+    }
+    // Coincident points.
+    EXPECT_EQ(certify_intersection_free(catmull_rom<2>({P2{{0, 0}}, P2{{1, 0}}, P2{{1, 0}}, P2{{2, 1}}})).failed_rule,
+              certify_rule::coincident_points);
+}
+
+// The angle rule is needed: adjacent centripetal segments do cross at small
+// polygon angles (SOURCES.md: one crossing at 20.9 degrees); search for one.
+TEST(Certify, AdjacentSegmentsCrossAtSmallAngles) {
+    CRSPLINE_SEEDED(seed, 4004);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    std::size_t crossings = 0, tries = 0;
+    double largest = 0;
+    for (; tries < 20000 && crossings < 50; ++tries) {
+        const double ang = (5 + 55 * U(rng)) * pi / 180;
+        const double a = std::pow(10.0, 2 * U(rng) - 1), b = std::pow(10.0, 2 * U(rng) - 1);
+        const double e = std::pow(10.0, 2 * U(rng) - 1), f = 2 * pi * U(rng);
+        const P2 p1{{0, 0}}, p0{{-e * std::cos(f), -e * std::sin(f)}};
+        const P2 p2{{a, 0}}, p3{{a + b * std::cos(pi - ang), b * std::sin(pi - ang)}};
+        const catmull_rom<2> c({p0, p1, p2, p3, P2{{p3[0] + e * std::cos(f), p3[1] + e * std::sin(f)}}});
+        const auto r = find_intersections(c);
+        for (const auto& x : r.intersections)
+            if (x.segments[1] == x.segments[0] + 1) {
+                ++crossings;
+                largest = std::max(largest, detail::angle_between(c.points()[1] - c.points()[2], c.points()[3] - c.points()[2]));
+                const auto cert = certify_intersection_free(c);
+                EXPECT_FALSE(cert.certified);
+                EXPECT_EQ(cert.failed_rule, certify_rule::adjacent_angle);
+                EXPECT_TRUE(cert.intersects.value_or(false));
+                break;
+            }
+    }
+    std::printf("adjacent crossings: %zu in %zu tries, largest polygon angle %.1f degrees\n", crossings, tries,
+                largest * 180 / pi);
+    EXPECT_GT(crossings, 0u);
+    EXPECT_LT(largest, safe_adjacent_angle);
+}
+
+// Section 6.4: centripetal segments tend to peak in curvature at their
+// control points; not always. Also: the maxima are exact (dense sampling).
+TEST(Curvature, MaximaAtControlPointsMostlyForCentripetal) {
+    CRSPLINE_SEEDED(seed, 4005);
+    std::mt19937_64 rng(seed);
+    std::array<std::size_t, 3> at_points{}, total{};
+    std::size_t centripetal_counterexamples = 0;
+    const std::size_t count = std::size_t(600 * property_scale());
+    for (std::size_t rep = 0; rep < count; ++rep) {
+        auto p = crspline::test::random_polygon<2>(rng, 6, 1.5);
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double alpha = std::array{0.0, 0.5, 1.0}[k];
+            const catmull_rom<2> c(p, {.alpha = alpha});
+            for (std::size_t i = 1; i + 1 < c.segment_count(); ++i) {
+                const auto& s = c.segment(i);
+                const auto m = segment_curvature_maxima(s);
+                if (!std::isfinite(m.max)) continue;  // a cusp
+                double sampled = 0;
+                for (int q = 0; q <= 1000; ++q) sampled = std::max(sampled, curvature(s, q / 1000.0).value_or(0.0));
+                // No sample beats the reported maximum, which is the
+                // curvature at max_u and a local maximum there.
+                EXPECT_LE(sampled, m.max * (1 + 1e-9)) << "rep " << rep << " alpha " << alpha;
+                EXPECT_NEAR(curvature(s, m.max_u).value_or(0.0), m.max, 1e-12 * m.max);
+                for (double du : {-1e-6, 1e-6}) {
+                    const double u = std::clamp(m.max_u + du, 0.0, 1.0);
+                    EXPECT_LE(curvature(s, u).value_or(0.0), m.max * (1 + 1e-12));
+                }
+                ++total[k];
+                if (m.max_at_control_point()) ++at_points[k];
+                else if (alpha == 0.5) ++centripetal_counterexamples;
+            }
+        }
+    }
+    std::printf("curvature max at a control point: uniform %zu/%zu, centripetal %zu/%zu, chordal %zu/%zu\n",
+                at_points[0], total[0], at_points[1], total[1], at_points[2], total[2]);
+    EXPECT_GT(double(at_points[1]) / double(total[1]), double(at_points[0]) / double(total[0]));
+    EXPECT_GT(double(at_points[1]) / double(total[1]), 0.5);
+    EXPECT_GT(centripetal_counterexamples, 0u);  // "not guaranteed"
+}
+
+}  // namespace
