@@ -1,0 +1,721 @@
+// crspline for JavaScript: Embind bindings of the public headers.
+//
+// One class, Spline, holds a curve of dimension 1 to 4 (chosen at run time);
+// every array crosses the boundary as a flat Float64Array copy (safe across
+// memory growth). Names are camelCase here only. A C++ exception never
+// escapes as a number: each entry point catches it and throws a JavaScript
+// Error carrying the library's message.
+//
+// Kept inside the subset of libc++ 13 that Emscripten 3.1.6 ships: no
+// std::ranges, std::format, constexpr std::vector or std::bit_cast.
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <crspline/arc_length.hpp>
+#include <crspline/bounds.hpp>
+#include <crspline/catmull_rom.hpp>
+#include <crspline/nearest.hpp>
+#include <crspline/tessellate.hpp>
+#include <crspline/version.hpp>
+#include <crspline/analysis.hpp>
+#include <crspline/certify.hpp>
+#include <crspline/intersections.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <exception>
+#include <optional>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace {
+
+using emscripten::val;
+namespace cr = crspline;
+
+// ---------------------------------------------------------------------------
+// Errors: the library's message becomes a JavaScript Error.
+// ---------------------------------------------------------------------------
+
+[[noreturn]] void throw_js(const std::string& message) {
+    val error = val::global("Error").new_(message);
+    error.throw_();
+    __builtin_unreachable();
+}
+
+// Runs f; a C++ exception becomes a JavaScript Error with the same message.
+// The message is copied out of the catch block first, so the C++ exception
+// is freed before JavaScript unwinds the stack.
+template <class F>
+auto guarded(F&& f) -> decltype(f()) {
+    std::string message;
+    try {
+        return f();
+    } catch (const std::exception& e) {
+        message = e.what();
+    } catch (...) {
+        message = "crspline: unknown error";
+    }
+    throw_js(message);
+}
+
+// ---------------------------------------------------------------------------
+// Arrays across the boundary.
+// ---------------------------------------------------------------------------
+
+val float64_array(const double* data, std::size_t n) {
+    // A copy: the view into WASM memory dies with the next allocation.
+    return val::global("Float64Array").new_(emscripten::typed_memory_view(n, data));
+}
+val float64_array(const std::vector<double>& v) { return float64_array(v.data(), v.size()); }
+
+template <std::size_t D>
+val points_array(const std::vector<cr::vec<D>>& p) {
+    return float64_array(p.empty() ? nullptr : p.front().data(), p.size() * D);
+}
+
+bool is_nullish(const val& v) { return v.isUndefined() || v.isNull(); }
+
+// Numbers from a JavaScript array, typed array, or array of arrays (points).
+std::vector<double> numbers(const val& a, const char* what) {
+    if (is_nullish(a)) throw cr::invalid_input(std::string(what) + " is missing");
+    const val length = a["length"];
+    if (!length.isNumber()) throw cr::invalid_input(std::string(what) + " must be an array of numbers");
+    const std::size_t n = length.as<std::size_t>();
+    if (n > 0 && !a[0].isNumber() && !is_nullish(a[0]["length"])) {
+        // Nested [[x, y], ...]: flatten.
+        std::vector<double> out;
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::vector<double> p = emscripten::convertJSArrayToNumberVector<double>(a[i]);
+            out.insert(out.end(), p.begin(), p.end());
+        }
+        return out;
+    }
+    return emscripten::convertJSArrayToNumberVector<double>(a);
+}
+
+template <std::size_t D>
+std::vector<cr::vec<D>> to_points(const std::vector<double>& flat, const char* what) {
+    if (flat.size() % D != 0)
+        throw cr::invalid_input(std::string(what) + " has " + std::to_string(flat.size()) +
+                                " coordinates, not a multiple of the dimension " + std::to_string(D));
+    std::vector<cr::vec<D>> p(flat.size() / D);
+    for (std::size_t i = 0; i < p.size(); ++i)
+        for (std::size_t k = 0; k < D; ++k) p[i][k] = flat[i * D + k];
+    return p;
+}
+
+template <std::size_t D>
+cr::vec<D> to_point(const val& a, const char* what) {
+    const std::vector<double> v = numbers(a, what);
+    if (v.size() != D)
+        throw cr::invalid_input(std::string(what) + " has " + std::to_string(v.size()) + " coordinates, expected " +
+                                std::to_string(D));
+    cr::vec<D> p;
+    for (std::size_t k = 0; k < D; ++k) p[k] = v[k];
+    return p;
+}
+
+// ---------------------------------------------------------------------------
+// Options: { alpha, grid, closed, tension, start, end, strict, kb }.
+// ---------------------------------------------------------------------------
+
+template <std::size_t D>
+cr::end_condition<D> end_from(const val& e, const char* which) {
+    using ec = cr::end_condition<D>;
+    if (is_nullish(e)) return ec::natural();
+    if (e.isString()) {
+        const std::string s = e.as<std::string>();
+        if (s == "natural") return ec::natural();
+        if (s == "reflect") return ec::reflect();
+        throw cr::invalid_input(std::string(which) + " end condition must be \"natural\", \"reflect\" or " +
+                                "{tangent: [...]}, got \"" + s + "\"");
+    }
+    if (!is_nullish(e["tangent"])) return ec::tangent(to_point<D>(e["tangent"], "tangent"));
+    return ec::tangent(to_point<D>(e, "tangent"));
+}
+
+template <std::size_t D>
+cr::options<D> options_from(const val& o) {
+    cr::options<D> opt;
+    if (is_nullish(o)) return opt;
+    auto number = [&](const char* key) -> std::optional<double> {
+        const val v = o[key];
+        if (is_nullish(v)) return std::nullopt;
+        if (!v.isNumber()) throw cr::invalid_input(std::string(key) + " must be a number");
+        return v.as<double>();
+    };
+    opt.alpha = number("alpha");
+    if (!is_nullish(o["grid"])) opt.grid = numbers(o["grid"], "grid");
+    if (!is_nullish(o["closed"])) opt.closed = o["closed"].as<bool>();
+    if (!is_nullish(o["strict"])) opt.strict = o["strict"].as<bool>();
+    if (const auto t = number("tension")) opt.tension = *t;
+    opt.start = end_from<D>(o["start"], "start");
+    opt.end = end_from<D>(o["end"], "end");
+    const val kb = o["kb"];
+    if (!is_nullish(kb)) {
+        // null entries (the ends of an open curve) read as 0.
+        auto tcb = [&](const char* key) {
+            std::vector<double> out;
+            const val a = kb[key];
+            if (is_nullish(a)) return out;
+            const std::size_t n = a["length"].as<std::size_t>();
+            for (std::size_t i = 0; i < n; ++i) out.push_back(is_nullish(a[i]) ? 0.0 : a[i].as<double>());
+            return out;
+        };
+        opt.kb.tension = tcb("tension");
+        opt.kb.continuity = tcb("continuity");
+        opt.kb.bias = tcb("bias");
+    }
+    return opt;
+}
+
+// ---------------------------------------------------------------------------
+// Reports as plain JavaScript objects.
+// ---------------------------------------------------------------------------
+
+template <std::size_t D>
+val segment_report(const cr::segment_analysis<D>& a) {
+    val r = val::object();
+    r.set("index", double(a.index));
+    r.set("rank", double(a.rank));
+    r.set("bezier", points_array(std::vector<cr::vec<D>>(a.bezier.begin(), a.bezier.end())));
+    r.set("zeroSpeedU", float64_array(a.zero_speed_u));
+    r.set("cuspU", float64_array(a.cusp_u));
+    val loops = val::array();
+    for (const auto& uv : a.self_intersection) loops.call<void>("push", float64_array(uv.data(), 2));
+    r.set("selfIntersections", loops);
+    r.set("fold", a.fold);
+    r.set("hasCusp", a.has_cusp());
+    r.set("hasSelfIntersection", a.has_self_intersection());
+    r.set("bezierHeight", float64_array(a.bezier_height.data(), 2));
+    r.set("bezierBound", a.bezier_bound);
+    r.set("maxChordLineDistance", a.max_chord_line_distance);
+    r.set("maxChordLineDistanceU", a.max_chord_line_distance_u);
+    r.set("maxChordDistance", a.max_chord_distance);
+    r.set("maxChordDistanceU", a.max_chord_distance_u);
+    r.set("overshoot", float64_array(a.overshoot.data(), 2));
+    if (a.projection) {
+        val p = val::object();
+        p.set("bezier", float64_array(a.projection->bezier.data(), 2));
+        p.set("theorem2", a.projection->theorem2);
+        p.set("derivativeMin", a.projection->derivative_min);
+        p.set("derivativeMinU", a.projection->derivative_min_u);
+        p.set("range", float64_array(a.projection->range.data(), 2));
+        r.set("projection", p);
+    } else {
+        r.set("projection", val::null());
+    }
+    if (a.bounds) {
+        const auto& b = *a.bounds;
+        val p = val::object();
+        p.set("d1", b.d1);
+        p.set("d2", b.d2);
+        p.set("d3", b.d3);
+        p.set("theta1", b.theta1);
+        p.set("theta2", b.theta2);
+        p.set("h1", b.h1);
+        p.set("h2", b.h2);
+        p.set("eq6OneSided", b.eq6_one_sided);
+        p.set("eq6", b.eq6);
+        p.set("eq8Start", b.eq8_start);
+        p.set("eq8End", b.eq8_end);
+        r.set("bounds", p);
+    } else {
+        r.set("bounds", val::null());
+    }
+    return r;
+}
+
+template <std::size_t D>
+val intersections_report(const cr::intersection_result<D>& res) {
+    val r = val::object();
+    val items = val::array();
+    for (const auto& x : res.intersections) {
+        val item = val::object();
+        val seg = val::array();
+        seg.call<void>("push", double(x.segments[0]));
+        seg.call<void>("push", double(x.segments[1]));
+        item.set("segments", seg);
+        item.set("u", float64_array(x.u.data(), 2));
+        item.set("point", float64_array(x.point.data(), D));
+        item.set("distance", x.distance);
+        items.call<void>("push", item);
+    }
+    r.set("intersections", items);
+    val folds = val::array();
+    for (std::size_t f : res.folds) folds.call<void>("push", double(f));
+    r.set("folds", folds);
+    r.set("complete", res.complete);
+    r.set("any", res.any());
+    return r;
+}
+
+template <std::size_t D>
+val certificate_report(const cr::certificate<D>& c) {
+    val r = val::object();
+    r.set("certified", c.certified);
+    r.set("failedRule", std::string(cr::to_string(c.failed_rule)));
+    r.set("detail", c.detail);
+    r.set("vertex", c.vertex ? val(double(*c.vertex)) : val::null());
+    r.set("segment", c.segment ? val(double(*c.segment)) : val::null());
+    if (c.segments) {
+        val s = val::array();
+        s.call<void>("push", double((*c.segments)[0]));
+        s.call<void>("push", double((*c.segments)[1]));
+        r.set("segments", s);
+    } else {
+        r.set("segments", val::null());
+    }
+    r.set("angle", c.angle);
+    r.set("intersects", c.intersects ? val(*c.intersects) : val::null());
+    r.set("search", c.intersects ? intersections_report(c.search) : val::null());
+    return r;
+}
+
+// ---------------------------------------------------------------------------
+// The curve, any dimension 1-4.
+// ---------------------------------------------------------------------------
+
+template <std::size_t D>
+struct curve_of {
+    cr::catmull_rom<D> curve;
+    std::optional<cr::arc_length_table<D>> table;  // built on first use
+    double alpha;                                  // NaN when built from a grid
+
+    const cr::arc_length_table<D>& lengths() {
+        if (!table) table.emplace(curve);
+        return *table;
+    }
+};
+
+template <std::size_t D>
+curve_of<D> make_curve(const std::vector<double>& flat, const val& o) {
+    const cr::options<D> opt = options_from<D>(o);
+    const double alpha = opt.grid ? std::nan("") : opt.alpha.value_or(cr::centripetal);
+    return curve_of<D>{cr::catmull_rom<D>(to_points<D>(flat, "points"), opt), std::nullopt, alpha};
+}
+
+class Spline {
+    using any_curve = std::variant<curve_of<1>, curve_of<2>, curve_of<3>, curve_of<4>>;
+    any_curve c_;
+
+    static any_curve build(const val& points, int dimension, const val& opt) {
+        return guarded([&]() -> any_curve {
+            const std::vector<double> flat = numbers(points, "points");
+            switch (dimension) {
+                case 1: return make_curve<1>(flat, opt);
+                case 2: return make_curve<2>(flat, opt);
+                case 3: return make_curve<3>(flat, opt);
+                case 4: return make_curve<4>(flat, opt);
+                default: throw cr::invalid_input("dimension must be 1, 2, 3 or 4, got " + std::to_string(dimension));
+            }
+        });
+    }
+
+    template <class F>
+    decltype(auto) visit(F&& f) const { return std::visit(std::forward<F>(f), c_); }
+    template <class F>
+    decltype(auto) visit(F&& f) { return std::visit(std::forward<F>(f), c_); }
+
+    // Segments [first, first + n) clipped to [0, nseg); first and n integers.
+    static std::pair<std::size_t, std::size_t> range(double first, double n, std::size_t nseg) {
+        if (!(first >= 0 && n >= 0 && first == std::floor(first) && n == std::floor(n)))
+            throw cr::invalid_input("segment range must be two non-negative integers, got " + cr::detail::num(first) +
+                                    ", " + cr::detail::num(n));
+        const std::size_t i0 = std::size_t(std::min(first, double(nseg)));
+        return {i0, std::size_t(std::min(double(nseg), double(i0) + n))};
+    }
+
+    static std::size_t count(double n, double minimum = 2) {
+        if (!(n >= minimum && n <= 1e8 && n == std::floor(n)))
+            throw cr::invalid_input("count must be an integer in [" + cr::detail::num(minimum) + ", 1e8], got " +
+                                    cr::detail::num(n));
+        return std::size_t(n);
+    }
+
+public:
+    Spline(val points, int dimension, val opt) : c_(build(points, dimension, opt)) {}
+    Spline(val points, int dimension) : Spline(std::move(points), dimension, val::undefined()) {}
+
+    // --- what the curve is made of ------------------------------------------
+    int dimension() const { return visit([](const auto& c) { return int(c.curve.dimension); }); }
+    double pointCount() const { return visit([](const auto& c) { return double(c.curve.points().size()); }); }
+    double segmentCount() const { return visit([](const auto& c) { return double(c.curve.segment_count()); }); }
+    bool closed() const { return visit([](const auto& c) { return c.curve.closed(); }); }
+    double tMin() const { return visit([](const auto& c) { return c.curve.t_min(); }); }
+    double tMax() const { return visit([](const auto& c) { return c.curve.t_max(); }); }
+    val points() const {
+        return visit([](const auto& c) {
+            const auto p = c.curve.points();
+            return float64_array(p.front().data(), p.size() * c.curve.dimension);
+        });
+    }
+    val grid() const {
+        return visit([](const auto& c) { return float64_array(c.curve.grid().data(), c.curve.grid().size()); });
+    }
+    double locate(double t) const { return visit([&](const auto& c) { return double(c.curve.locate(t)); }); }
+
+    // --- evaluation -----------------------------------------------------------
+    val evaluate(double t, int order) const {
+        return guarded([&] {
+            return visit([&](const auto& c) { return float64_array(c.curve.evaluate(t, order).data(), c.curve.dimension); });
+        });
+    }
+    val evaluate0(double t) const { return evaluate(t, 0); }
+    val evaluateMany(val t, int order) const {
+        return guarded([&] {
+            const std::vector<double> ts = numbers(t, "t");
+            return visit([&](const auto& c) { return points_array(c.curve.evaluate(std::span<const double>(ts), order)); });
+        });
+    }
+    val evaluateMany0(val t) const { return evaluateMany(std::move(t), 0); }
+
+    // --- Bézier form ----------------------------------------------------------
+    val bezier(double i) const {
+        return guarded([&] {
+            return visit([&](const auto& c) {
+                if (!(i >= 0 && i < double(c.curve.segment_count()) && i == std::floor(i)))
+                    throw cr::invalid_input("segment index " + cr::detail::num(i) + " is outside [0, " +
+                                            std::to_string(c.curve.segment_count()) + ")");
+                const auto b = c.curve.bezier(std::size_t(i));
+                return points_array(std::vector<std::decay_t<decltype(b[0])>>(b.begin(), b.end()));
+            });
+        });
+    }
+    // Every segment's B0..B3, segment after segment: 4 D numbers per
+    // segment. The editor draws a frame from this one call.
+    val bezierAll() const {
+        return visit([](const auto& c) {
+            constexpr std::size_t D = std::decay_t<decltype(c.curve)>::dimension;
+            const std::size_t n = c.curve.segment_count();
+            std::vector<double> out(n * 4 * D);
+            for (std::size_t i = 0; i < n; ++i) {
+                const auto b = c.curve.bezier(i);
+                for (std::size_t k = 0; k < 4; ++k)
+                    for (std::size_t d = 0; d < D; ++d) out[(i * 4 + k) * D + d] = b[k][d];
+            }
+            return float64_array(out);
+        });
+    }
+
+    // --- sampling -------------------------------------------------------------
+    val sampleT(double n) const {
+        return guarded([&] { return visit([&](const auto& c) { return points_array(cr::sample_t(c.curve, count(n))); }); });
+    }
+    val tessellate(double tolerance) const {
+        return guarded([&] {
+            return visit([&](const auto& c) {
+                const auto p = tolerance > 0 ? cr::tessellate(c.curve, tolerance) : cr::tessellate(c.curve);
+                val r = val::object();
+                r.set("points", points_array(p.points));
+                r.set("t", float64_array(p.t));
+                return r;
+            });
+        });
+    }
+    val boundingBox() const {
+        return visit([](const auto& c) {
+            const auto b = cr::bounding_box(c.curve);
+            constexpr std::size_t D = std::decay_t<decltype(c.curve)>::dimension;
+            val r = val::object();
+            r.set("lo", float64_array(b.lo.data(), D));
+            r.set("hi", float64_array(b.hi.data(), D));
+            return r;
+        });
+    }
+    val nearest(val q) const {
+        return guarded([&] {
+            return visit([&](const auto& c) {
+                constexpr std::size_t D = std::decay_t<decltype(c.curve)>::dimension;
+                const auto n = cr::nearest(c.curve, to_point<D>(q, "query point"));
+                val r = val::object();
+                r.set("t", n.t);
+                r.set("distanceSq", n.distance_sq);
+                r.set("segment", double(n.segment));
+                r.set("point", float64_array(n.point.data(), D));
+                return r;
+            });
+        });
+    }
+
+    // --- arc length -----------------------------------------------------------
+    double arcLength() { return guarded([&] { return visit([](auto& c) { return c.lengths().total(); }); }); }
+    double arcLengthAccuracy(double accuracy) const {
+        return guarded([&] { return visit([&](const auto& c) { return cr::arc_length(c.curve, accuracy); }); });
+    }
+    double arcLengthBetween(double ta, double tb) const {
+        return guarded([&] { return visit([&](const auto& c) { return cr::arc_length(c.curve, ta, tb); }); });
+    }
+    val knotLengths() {
+        return visit([](auto& c) {
+            const auto s = c.lengths().knot_lengths();
+            return float64_array(s.data(), s.size());
+        });
+    }
+    double sAt(double t) { return guarded([&] { return visit([&](auto& c) { return c.lengths().s_at(t); }); }); }
+    double tAtArcLength(double s) { return guarded([&] { return visit([&](auto& c) { return c.lengths().t_at(s); }); }); }
+    val sampleArcLength(double n, double accuracy) const {
+        return guarded([&] {
+            return visit([&](const auto& c) {
+                const auto smp = cr::sample_arc_length(c.curve, count(n), accuracy > 0 ? accuracy : cr::default_accuracy);
+                val r = val::object();
+                r.set("t", float64_array(smp.t));
+                r.set("s", float64_array(smp.s));
+                r.set("points", points_array(smp.points));
+                return r;
+            });
+        });
+    }
+    val sampleArcLength0(double n) const { return sampleArcLength(n, 0); }
+    // Points every `spacing` of arc length from the start (ticks): the
+    // points flat, then their tangents flat (unit, 0 where undefined).
+    val arcLengthTicks(double spacing, double max_ticks) {
+        return guarded([&] {
+            return visit([&](auto& c) {
+                constexpr std::size_t D = std::decay_t<decltype(c.curve)>::dimension;
+                if (!(spacing > 0)) throw cr::invalid_input("tick spacing must be positive, got " + cr::detail::num(spacing));
+                const auto& table = c.lengths();
+                const double total = table.total();
+                const std::size_t n = std::size_t(std::min(std::floor(total / spacing), std::max(0.0, max_ticks - 1))) + 1;
+                std::vector<double> s(n);
+                for (std::size_t k = 0; k < n; ++k) s[k] = std::min(total, double(k) * spacing);
+                std::vector<double> t = table.t_at(std::span<const double>(s));
+                for (double& x : t) x = std::clamp(x, c.curve.t_min(), c.curve.t_max());
+                const auto pos = c.curve.evaluate(std::span<const double>(t), 0);
+                const auto vel = c.curve.evaluate(std::span<const double>(t), 1);
+                std::vector<double> out(2 * n * D);
+                for (std::size_t k = 0; k < n; ++k) {
+                    const double speed = cr::norm(vel[k]);
+                    for (std::size_t d = 0; d < D; ++d) {
+                        out[k * D + d] = pos[k][d];
+                        out[(n + k) * D + d] = speed > 0 ? vel[k][d] / speed : 0.0;
+                    }
+                }
+                return float64_array(out);
+            });
+        });
+    }
+
+    // --- curvature ------------------------------------------------------------
+    // Curvature at t (checked), or null where the speed is zero.
+    // (frames.hpp's curvature(curve, t) cannot be used here: frames.hpp and
+    // analysis.hpp both define detail::perpendicular for the same arguments.)
+    val curvature(double t) const {
+        return guarded([&] {
+            return visit([&](const auto& c) {
+                c.curve.evaluate(t);  // the domain check
+                const auto& s = c.curve.segment(c.curve.locate(t));
+                const auto k = cr::curvature(s, s.local(t));
+                return k ? val(*k) : val::null();
+            });
+        });
+    }
+    // Curvature comb of a plane curve over segments first .. first + count
+    // - 1: per segment per_segment + 1 samples (u = k / per_segment, both
+    // ends included), five numbers each: x, y, the unit normal left of
+    // travel nx, ny, and the signed curvature (0 where the speed is zero).
+    val curvatureComb(double per_segment, double first, double n) const {
+        return guarded([&] {
+            const auto* c = std::get_if<curve_of<2>>(&c_);
+            if (!c) throw cr::invalid_input("the curvature comb needs a plane curve (dimension 2)");
+            const std::size_t m = count(per_segment, 1);
+            const auto [i0, i1] = range(first, n, c->curve.segment_count());
+            std::vector<double> out;
+            out.reserve((i1 - i0) * (m + 1) * 5);
+            for (std::size_t i = i0; i < i1; ++i) {
+                const auto& s = c->curve.segment(i);
+                for (std::size_t j = 0; j <= m; ++j) {
+                    const double u = double(j) / double(m);
+                    const auto d1 = s.du(u, 1), d2 = s.du(u, 2);
+                    const double speed = cr::norm(d1);
+                    const auto p = s.at(u);
+                    double k = 0, nx = 0, ny = 0;
+                    if (speed > 0) {
+                        nx = -d1[1] / speed;
+                        ny = d1[0] / speed;
+                        k = (d1[0] * d2[1] - d1[1] * d2[0]) / (speed * speed * speed);
+                    }
+                    out.insert(out.end(), {p[0], p[1], nx, ny, k});
+                }
+            }
+            return float64_array(out);
+        });
+    }
+    val curvatureComb1(double per_segment) const { return curvatureComb(per_segment, 0, segmentCount()); }
+
+    // --- analysis -------------------------------------------------------------
+    // Cusps of segments first .. first + count - 1: (segment, u, t,
+    // point...) per cusp, flat. The editor asks only for the segments an
+    // edit changed and keeps the rest.
+    val cuspsIn(double first, double n) const {
+        return guarded([&] {
+            return visit([&](const auto& c) {
+                constexpr std::size_t D = std::decay_t<decltype(c.curve)>::dimension;
+                const auto [i0, i1] = range(first, n, c.curve.segment_count());
+                std::vector<double> out;
+                for (std::size_t i = i0; i < i1; ++i) {
+                    const auto& s = c.curve.segment(i);
+                    for (double u : cr::analyze_segment(s).cusp_u) {
+                        const auto p = s.at(u);
+                        out.insert(out.end(), {double(i), u, s.t0 + u * s.h});
+                        for (std::size_t d = 0; d < D; ++d) out.push_back(p[d]);
+                    }
+                }
+                return float64_array(out);
+            });
+        });
+    }
+    val cusps() const { return cuspsIn(0, segmentCount()); }
+    // Lengths of segments first .. first + count - 1 (default accuracy).
+    val segmentLengths(double first, double n) const {
+        return guarded([&] {
+            return visit([&](const auto& c) {
+                const auto [i0, i1] = range(first, n, c.curve.segment_count());
+                std::vector<double> out;
+                out.reserve(i1 - i0);
+                for (std::size_t i = i0; i < i1; ++i) out.push_back(cr::arc_length(c.curve.segment(i)));
+                return float64_array(out);
+            });
+        });
+    }
+    val analyze() const {
+        return guarded([&] {
+            return visit([](const auto& c) {
+                val list = val::array();
+                for (const auto& a : cr::analyze(c.curve)) list.call<void>("push", segment_report(a));
+                return list;
+            });
+        });
+    }
+    val intersections(double tolerance) const {
+        return guarded([&] {
+            return visit([&](const auto& c) { return intersections_report(cr::find_intersections(c.curve, tolerance)); });
+        });
+    }
+    val intersections0() const { return intersections(0); }
+    val certify(val o) const {
+        return guarded([&] {
+            cr::certify_options opt;
+            if (!is_nullish(o)) {
+                if (!is_nullish(o["safeAngle"])) opt.safe_angle = o["safeAngle"].as<double>();
+                if (!is_nullish(o["searchOnFailure"])) opt.search_on_failure = o["searchOnFailure"].as<bool>();
+                if (!is_nullish(o["tolerance"])) opt.tolerance = o["tolerance"].as<double>();
+            }
+            return visit([&](const auto& c) { return certificate_report(cr::certify_intersection_free(c.curve, opt)); });
+        });
+    }
+    val certify0() const { return certify(val::undefined()); }
+    // The paper's bounding volumes (Figure 5), for the alpha the curve was
+    // built with. boxes: per segment (segment, a..., b..., lambdaMin,
+    // lambdaMax, halfWidth); balls: per vertex (vertex, center..., radius).
+    val boundingVolumes(std::string kind) const {
+        return guarded([&] {
+            return visit([&](const auto& c) {
+                constexpr std::size_t D = std::decay_t<decltype(c.curve)>::dimension;
+                if (std::isnan(c.alpha)) throw cr::invalid_input("bounding volumes need a curve built from alpha, not a grid");
+                cr::volume_kind k;
+                if (kind == "tightened") k = cr::volume_kind::tightened;
+                else if (kind == "local") k = cr::volume_kind::local;
+                else throw cr::invalid_input("volume kind must be \"tightened\" or \"local\", got \"" + kind + "\"");
+                const auto v = cr::paper_bounding_volumes(c.curve, c.alpha, k);
+                std::vector<double> boxes, balls;
+                for (const auto& b : v.boxes) {
+                    boxes.push_back(double(b.segment));
+                    for (std::size_t d = 0; d < D; ++d) boxes.push_back(b.a[d]);
+                    for (std::size_t d = 0; d < D; ++d) boxes.push_back(b.b[d]);
+                    boxes.insert(boxes.end(), {b.lambda_min, b.lambda_max, b.half_width});
+                }
+                for (const auto& b : v.balls) {
+                    balls.push_back(double(b.vertex));
+                    for (std::size_t d = 0; d < D; ++d) balls.push_back(b.center[d]);
+                    balls.push_back(b.radius);
+                }
+                val r = val::object();
+                r.set("boxes", float64_array(boxes));
+                r.set("boxStride", double(2 * D + 4));
+                r.set("balls", float64_array(balls));
+                r.set("ballStride", double(D + 2));
+                return r;
+            });
+        });
+    }
+
+};
+
+// One segment analysed from its four control points (the oracle's case):
+// alpha, tension as in options.
+template <std::size_t D>
+val analyze_segment_d(const std::vector<double>& flat, double alpha, double tension) {
+    const auto p = to_points<D>(flat, "points");
+    if (p.size() != 4) throw cr::invalid_input("a segment needs 4 points, got " + std::to_string(p.size()));
+    return segment_report(cr::analyze_segment(std::array<cr::vec<D>, 4>{p[0], p[1], p[2], p[3]}, alpha, tension));
+}
+
+val analyzeSegment(val points, int dimension, double alpha, double tension) {
+    return guarded([&] {
+        const std::vector<double> flat = numbers(points, "points");
+        switch (dimension) {
+            case 1: return analyze_segment_d<1>(flat, alpha, tension);
+            case 2: return analyze_segment_d<2>(flat, alpha, tension);
+            case 3: return analyze_segment_d<3>(flat, alpha, tension);
+            case 4: return analyze_segment_d<4>(flat, alpha, tension);
+            default: throw cr::invalid_input("dimension must be 1, 2, 3 or 4, got " + std::to_string(dimension));
+        }
+    });
+}
+
+std::string version() { return cr::version; }
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(crspline) {
+    using namespace emscripten;
+    class_<Spline>("Spline")
+        .constructor<val, int, val>()
+        .constructor<val, int>()
+        .function("dimension", &Spline::dimension)
+        .function("pointCount", &Spline::pointCount)
+        .function("segmentCount", &Spline::segmentCount)
+        .function("closed", &Spline::closed)
+        .function("tMin", &Spline::tMin)
+        .function("tMax", &Spline::tMax)
+        .function("points", &Spline::points)
+        .function("grid", &Spline::grid)
+        .function("locate", &Spline::locate)
+        .function("evaluate", &Spline::evaluate)
+        .function("evaluate", &Spline::evaluate0)
+        .function("evaluateMany", &Spline::evaluateMany)
+        .function("evaluateMany", &Spline::evaluateMany0)
+        .function("bezier", &Spline::bezier)
+        .function("bezierAll", &Spline::bezierAll)
+        .function("sampleT", &Spline::sampleT)
+        .function("tessellate", &Spline::tessellate)
+        .function("boundingBox", &Spline::boundingBox)
+        .function("nearest", &Spline::nearest)
+        .function("arcLength", &Spline::arcLength)
+        .function("arcLength", &Spline::arcLengthAccuracy)
+        .function("arcLengthBetween", &Spline::arcLengthBetween)
+        .function("knotLengths", &Spline::knotLengths)
+        .function("sAt", &Spline::sAt)
+        .function("tAtArcLength", &Spline::tAtArcLength)
+        .function("sampleArcLength", &Spline::sampleArcLength)
+        .function("sampleArcLength", &Spline::sampleArcLength0)
+        .function("arcLengthTicks", &Spline::arcLengthTicks)
+        .function("curvature", &Spline::curvature)
+        .function("curvatureComb", &Spline::curvatureComb)
+        .function("curvatureComb", &Spline::curvatureComb1)
+        .function("cusps", &Spline::cuspsIn)
+        .function("cusps", &Spline::cusps)
+        .function("segmentLengths", &Spline::segmentLengths)
+        .function("analyze", &Spline::analyze)
+        .function("intersections", &Spline::intersections)
+        .function("intersections", &Spline::intersections0)
+        .function("certify", &Spline::certify)
+        .function("certify", &Spline::certify0)
+        .function("boundingVolumes", &Spline::boundingVolumes);
+    function("analyzeSegment", &analyzeSegment);
+    function("version", &version);
+}
