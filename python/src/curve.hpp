@@ -1,0 +1,146 @@
+// crspline Python module: the run-time curve and the helpers every binding
+// file shares.
+//
+// The library fixes dimension and scalar at compile time (catmull_rom<D, T>);
+// NumPy fixes them at run time. A curve here is a std::variant over D = 1..4
+// and T = float, double; each binding visits it and instantiates its body
+// once per alternative. Only public headers are used.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>  // in every file: type casters must agree across translation units
+
+#include <crspline/catmull_rom.hpp>
+#include <crspline/error.hpp>
+
+namespace crspline::python {
+
+namespace py = pybind11;
+
+/// Dimensions compiled into the module (like the CLI's with_dimension).
+inline constexpr std::size_t max_dimension = 4;
+
+/// f(std::integral_constant<std::size_t, D>{}) for D = 1..max_dimension.
+template <class F>
+decltype(auto) with_dimension(std::size_t dimension, F&& f) {
+    switch (dimension) {
+        case 1: return std::forward<F>(f)(std::integral_constant<std::size_t, 1>{});
+        case 2: return std::forward<F>(f)(std::integral_constant<std::size_t, 2>{});
+        case 3: return std::forward<F>(f)(std::integral_constant<std::size_t, 3>{});
+        case 4: return std::forward<F>(f)(std::integral_constant<std::size_t, 4>{});
+        default:
+            throw invalid_input("points must have 1 to " + std::to_string(max_dimension) +
+                                " coordinates each, got " + std::to_string(dimension));
+    }
+}
+
+/// f(T{}) for the scalar of a NumPy array that is float32 or float64.
+template <class F>
+decltype(auto) with_scalar(const py::array& a, F&& f) {
+    if (a.dtype().is(py::dtype::of<float>())) return std::forward<F>(f)(float{});
+    if (a.dtype().is(py::dtype::of<double>())) return std::forward<F>(f)(double{});
+    throw py::type_error("expected a float32 or float64 array, got dtype " +
+                         std::string(py::str(a.dtype())));
+}
+
+template <class Tag>
+struct all_curves;
+template <std::size_t... D>
+struct all_curves<std::index_sequence<D...>> {
+    using type = std::variant<catmull_rom<D + 1, double>..., catmull_rom<D + 1, float>...>;
+};
+
+/// Every curve type the module knows.
+using curve_variant = all_curves<std::make_index_sequence<max_dimension>>::type;
+
+/// A curve of run-time dimension and scalar: what Python's _Curve holds.
+struct curve {
+    curve_variant v;
+
+    template <class F>
+    decltype(auto) visit(F&& f) const { return std::visit(std::forward<F>(f), v); }
+};
+
+template <class C>
+using scalar_t = typename std::remove_cvref_t<C>::scalar;
+template <class C>
+inline constexpr std::size_t dimension_v = std::remove_cvref_t<C>::dimension;
+
+/// A C-contiguous array of T: the argument itself when it already is one,
+/// else a converted copy (the caller keeps it alive while using its data).
+template <class T>
+py::array_t<T, py::array::c_style> contiguous(const py::handle& a) {
+    auto r = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(a);
+    if (!r) throw py::error_already_set();
+    return r;
+}
+
+/// The shape of a, as a vector, with `extra` appended.
+inline std::vector<py::ssize_t> shape_plus(const py::array& a, std::initializer_list<py::ssize_t> extra) {
+    std::vector<py::ssize_t> s(a.shape(), a.shape() + a.ndim());
+    s.insert(s.end(), extra);
+    return s;
+}
+
+/// The data of a C-contiguous array of N x D values as points. vec<D, T> is
+/// an implicit-lifetime aggregate of exactly D scalars, so a C-contiguous
+/// buffer of scalars holds an array of them.
+template <std::size_t D, class T>
+vec<D, T>* as_points(py::array_t<T, py::array::c_style>& a) {
+    static_assert(sizeof(vec<D, T>) == D * sizeof(T) && alignof(vec<D, T>) == alignof(T));
+    return reinterpret_cast<vec<D, T>*>(a.mutable_data());
+}
+template <std::size_t D, class T>
+const vec<D, T>* as_points(const py::array_t<T, py::array::c_style>& a) {
+    static_assert(sizeof(vec<D, T>) == D * sizeof(T) && alignof(vec<D, T>) == alignof(T));
+    return reinterpret_cast<const vec<D, T>*>(a.data());
+}
+
+/// A new array of points (shape ... x D) filled from a vector of vec<D, T>.
+template <std::size_t D, class T>
+py::array_t<T> points_array(std::span<const vec<D, T>> p, std::vector<py::ssize_t> shape = {}) {
+    if (shape.empty()) shape = {py::ssize_t(p.size())};
+    shape.push_back(py::ssize_t(D));
+    py::array_t<T> out(shape);
+    T* o = out.mutable_data();
+    for (std::size_t i = 0; i < p.size(); ++i)
+        for (std::size_t k = 0; k < D; ++k) o[i * D + k] = p[i][k];
+    return out;
+}
+
+/// A new 1-D array copied from a span.
+template <class T>
+py::array_t<T> vector_array(std::span<const T> v) {
+    py::array_t<T> out(py::ssize_t(v.size()));
+    std::copy(v.begin(), v.end(), out.mutable_data());
+    return out;
+}
+
+/// A query point of dimension D from a 1-D sequence (validated length).
+template <std::size_t D, class T>
+vec<D, T> to_vec(const std::vector<double>& c, const char* what) {
+    if (c.size() != D)
+        throw invalid_input(std::string(what) + " has " + std::to_string(c.size()) + " coordinates, expected " +
+                            std::to_string(D));
+    vec<D, T> p;
+    for (std::size_t k = 0; k < D; ++k) p[k] = T(c[k]);
+    return p;
+}
+
+// Each binding file adds its part of the module.
+void bind_curve(py::module_& m, py::class_<curve>& cls);
+void bind_arc_length(py::module_& m, py::class_<curve>& cls);
+void bind_geometry(py::module_& m, py::class_<curve>& cls);
+void bind_frames(py::module_& m, py::class_<curve>& cls);
+void bind_analysis(py::module_& m, py::class_<curve>& cls);
+
+}  // namespace crspline::python

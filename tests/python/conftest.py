@@ -1,0 +1,46 @@
+"""Shared helpers of the Python tests.
+
+Run with Debian's interpreter on the built package, e.g.
+    PYTHONPATH=build-py/python /usr/bin/python3 -m pytest -q -p no:cacheprovider tests/python
+(CTest's python.pytest case sets this up.)
+"""
+import json
+import os
+import pathlib
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, settings
+
+# Hypothesis: derandomized (the same examples every run, so a failure
+# reproduces), no example database on disk, no deadline on a shared machine.
+settings.register_profile("crspline", derandomize=True, database=None, deadline=None, max_examples=60,
+                          suppress_health_check=[HealthCheck.too_slow])
+settings.load_profile(os.environ.get("CRSPLINE_HYPOTHESIS_PROFILE", "crspline"))
+
+REPO = pathlib.Path(__file__).resolve().parents[2]
+REFERENCE_DIR = pathlib.Path(os.environ.get("CRSPLINE_REFERENCE_DIR", REPO / "tests" / "reference"))
+
+EPS = np.finfo(np.float64).eps
+
+
+def load_reference(name):
+    with open(REFERENCE_DIR / name) as f:
+        return json.load(f)
+
+
+def scale_of(points):
+    """Bounding-box diagonal of the points (at least 1e-300)."""
+    p = np.asarray(points, dtype=float).reshape(len(points), -1)
+    return max(float(np.linalg.norm(p.max(axis=0) - p.min(axis=0))), 1e-300)
+
+
+def magnitude_of(points):
+    """Largest absolute coordinate (for rounding of the coordinates themselves)."""
+    return float(np.max(np.abs(np.asarray(points, dtype=float))))
+
+
+@pytest.fixture(scope="session")
+def crspline():
+    import crspline as module
+    return module

@@ -1,0 +1,105 @@
+"""Errors: ValueError (InvalidInput, OutOfDomain) with the core's messages,
+TypeError for arguments of the wrong kind."""
+import numpy as np
+import pytest
+
+import crspline
+
+P = [[0, 0], [1, 2], [3, 2], [4, 0]]
+
+
+@pytest.mark.parametrize("args, kwargs, exc, message", [
+    (([[0, 0]],), {}, crspline.InvalidInput, "a curve needs at least 2 points, got 1"),
+    (([[0, 0], [1, 1]],), {"endconditions": "closed"}, crspline.InvalidInput,
+     "a closed curve needs at least 3 points, got 2"),
+    (([[0, 0], [1, np.nan]],), {}, crspline.InvalidInput, "point 1, coordinate 1 is not finite (nan)"),
+    (([[0, 0], [np.inf, 1]],), {}, crspline.InvalidInput, "point 1, coordinate 0 is not finite (inf)"),
+    ((P,), {"alpha": 1.5}, crspline.InvalidInput, "alpha must be in [0, 1], got 1.5"),
+    ((P,), {"alpha": -0.1}, crspline.InvalidInput, "alpha must be in [0, 1], got -0.1"),
+    ((P,), {"alpha": 0.5, "grid": [0, 1, 2, 3]}, crspline.InvalidInput, "give alpha or grid, not both"),
+    ((P,), {"grid": [0, 1, 2]}, crspline.InvalidInput, "grid has 3 values, expected 4 (one per point)"),
+    ((P,), {"grid": [0, 1, 1, 3]}, crspline.InvalidInput,
+     "grid must be strictly increasing: grid[2] = 1 is not greater than grid[1] = 1"),
+    ((P,), {"grid": [0, 1, 2, 3], "endconditions": "closed"}, crspline.InvalidInput,
+     "grid has 4 values, expected 5"),
+    ((P,), {"tension": 2}, crspline.InvalidInput, "tension must be in [0, 1], got 2"),
+    ((P,), {"endconditions": ([np.nan, 0], "natural")}, crspline.InvalidInput,
+     "start tangent coordinate 0 is not finite (nan)"),
+    ((np.zeros((3, 5)),), {}, crspline.InvalidInput, "points must have 1 to 4 coordinates each, got 5"),
+    ((np.zeros((2, 2, 2)),), {}, ValueError, "points must be an N x dim array"),
+    ((np.zeros((3, 0)),), {}, ValueError, "at least 1 coordinate"),
+    ((P,), {"endconditions": "periodic"}, ValueError, "endconditions must be 'natural', 'closed', 'reflect'"),
+    ((P,), {"endconditions": ("natural", "closed")}, ValueError, "end end condition must be"),
+    ((P,), {"endconditions": ([1, 2, 3], "natural")}, ValueError, "start tangent must have 2 coordinates"),
+    ((P,), {"endconditions": {"start": "natural"}}, ValueError, "exactly the keys"),
+    ((P,), {"endconditions": 5}, TypeError, "endconditions must be a string or a pair"),
+    ((P,), {"endconditions": ("natural", "natural", "natural")}, TypeError, "a pair"),
+    (([["a", "b"], ["c", "d"]],), {}, TypeError, "points must be real numbers"),
+    (([[1j, 0], [0, 1]],), {}, TypeError, "complex"),
+    ((P,), {"alpha": "0.5"}, TypeError, "alpha must be a real number"),
+    ((P,), {"tension": None}, TypeError, "tension must be a real number"),
+    ((P,), {"grid": ["a", "b", "c", "d"]}, TypeError, "grid must be real numbers"),
+])
+def test_construction_errors(args, kwargs, exc, message):
+    with pytest.raises(exc) as info:
+        crspline.CatmullRom(*args, **kwargs)
+    assert message in str(info.value)
+
+
+def test_strict_message_names_the_points():
+    with pytest.raises(crspline.InvalidInput,
+                       match=r"^coincident consecutive points \(strict mode\): 1 and 2$"):
+        crspline.CatmullRom([[0, 0], [1, 1], [1, 1], [2, 0]], strict=True)
+
+
+def test_evaluation_errors():
+    c = crspline.CatmullRom(P, alpha=0)
+    with pytest.raises(crspline.OutOfDomain, match=r"^t = 3.5 is outside the domain \[0, 3\]$"):
+        c.evaluate(3.5)
+    with pytest.raises(crspline.OutOfDomain, match=r"^t = -1 \(index 2\) is outside the domain \[0, 3\]$"):
+        c.evaluate([0, 1, -1, 2])
+    with pytest.raises(crspline.OutOfDomain, match=r"t = nan \(index 1\)"):
+        c.evaluate([0, np.nan])
+    with pytest.raises(crspline.InvalidInput, match="derivative order must be 0, 1, 2 or 3, got 4"):
+        c.evaluate(1.0, 4)
+    with pytest.raises(ValueError, match="derivative order"):
+        c.evaluate(1.0, -1)
+    with pytest.raises(TypeError):
+        c.evaluate(1.0, 1.5)  # the order is an integer
+    with pytest.raises(TypeError, match="t must be real numbers"):
+        c.evaluate("1.0")
+    with pytest.raises(TypeError):
+        c.evaluate([1 + 1j])
+    # ValueError catches both library errors.
+    with pytest.raises(ValueError):
+        c.evaluate(10)
+
+
+def test_arc_length_errors():
+    c = crspline.CatmullRom(P)
+    L = c.arc_length()
+    with pytest.raises(crspline.OutOfDomain, match=r"^s = -1 is outside the arc-length range \[0, "):
+        c.t_at_arc_length(-1.0)
+    with pytest.raises(crspline.OutOfDomain, match=r"\(index 1\) is outside the arc-length range"):
+        c.t_at_arc_length([0.0, 2 * L])
+    with pytest.raises(crspline.InvalidInput, match="accuracy must be in"):
+        c.arc_length(accuracy=0)
+    with pytest.raises(crspline.InvalidInput, match="is reversed"):
+        c.arc_length(2.0, 1.0)
+    with pytest.raises(crspline.OutOfDomain):
+        c.arc_length(0.0, 100.0)
+    with pytest.raises(ValueError, match="need at least 2 samples, got 1"):
+        c.sample(1)
+    with pytest.raises(ValueError, match="by must be"):
+        c.sample(5, by="length")
+
+
+def test_kochanek_bartels_errors():
+    with pytest.raises(crspline.InvalidInput, match="give alpha or grid, not both"):
+        crspline.KochanekBartels(P, grid=[0, 1, 2, 3], alpha=0.5)
+    with pytest.raises(ValueError, match="tcb has 4 triples"):
+        crspline.KochanekBartels(P, tcb=np.zeros((4, 3)))
+    with pytest.raises(crspline.InvalidInput, match=r"kb tension\[1\] is not finite"):
+        crspline.KochanekBartels(P, tcb=[(np.nan, 0, 0), (0, 0, 0)])
+    with pytest.raises(TypeError):
+        crspline.KochanekBartels(P, tcb="tcb")
