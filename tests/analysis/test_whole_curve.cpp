@@ -290,7 +290,9 @@ TEST(Certify, AdjacentSegmentsCrossAtSmallAngles) {
         for (const auto& x : r.intersections)
             if (x.segments[1] == x.segments[0] + 1) {
                 ++crossings;
-                largest = std::max(largest, detail::angle_between(c.points()[1] - c.points()[2], c.points()[3] - c.points()[2]));
+                const std::size_t k = x.segments[1];  // the shared vertex
+                const auto q = c.points();
+                largest = std::max(largest, detail::angle_between(q[k - 1] - q[k], q[k + 1] - q[k]));
                 const auto cert = certify_intersection_free(c);
                 EXPECT_FALSE(cert.certified);
                 EXPECT_EQ(cert.failed_rule, certify_rule::adjacent_angle);
