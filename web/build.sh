@@ -18,7 +18,7 @@ em++ -std=c++20 "${opt[@]}" -fexceptions -Wall -Wextra \
     "$here/src/bindings.cpp" \
     -lembind \
     -fexceptions \
-    -sMODULARIZE -sEXPORT_ES6 -sEXPORT_NAME=CrSpline -sENVIRONMENT=web \
+    -sMODULARIZE -sEXPORT_ES6 -sEXPORT_NAME=CrSpline -sENVIRONMENT=web,worker \
     -sALLOW_MEMORY_GROWTH -sINITIAL_MEMORY=33554432 \
     -o "$out/crspline.mjs"
 echo "built $out/crspline.mjs and $out/crspline.wasm"

@@ -1,0 +1,148 @@
+// Import and export of the editor's points and curve. Pure functions (no
+// DOM): the node tests use them too. Numbers are written with JavaScript's
+// shortest round-trip form, so an export read back gives the same doubles.
+
+/// Options the editor understands, with their defaults.
+export const defaultOptions = Object.freeze({
+  alpha: 0.5,
+  tension: 0,
+  closed: false,
+  start: 'natural',
+  end: 'natural',
+});
+
+const endKinds = ['natural', 'reflect', 'zero'];
+
+/// Options as the WASM Spline takes them ('zero' is a zero tangent, d3's end).
+export function splineOptions(o) {
+  const end = (e) => (e === 'zero' ? { tangent: [0, 0] } : e);
+  const opt = { alpha: o.alpha, tension: o.tension, closed: o.closed };
+  if (!o.closed) {
+    opt.start = end(o.start);
+    opt.end = end(o.end);
+  }
+  return opt;
+}
+
+function checkPoints(points, where) {
+  if (!Array.isArray(points)) throw new Error(`${where}: "points" must be an array of [x, y]`);
+  const flat = new Float64Array(points.length * 2);
+  points.forEach((p, i) => {
+    const xy = Array.isArray(p) ? p : p && typeof p === 'object' ? [p.x, p.y] : null;
+    if (!xy || xy.length < 2) throw new Error(`${where}: point ${i} is not [x, y]`);
+    for (let k = 0; k < 2; ++k) {
+      const v = Number(xy[k]);
+      if (!Number.isFinite(v)) throw new Error(`${where}: point ${i}, coordinate ${k} is not a finite number (${xy[k]})`);
+      flat[2 * i + k] = v;
+    }
+  });
+  return flat;
+}
+
+function checkOptions(o, where) {
+  const out = { ...defaultOptions };
+  if (o == null) return out;
+  if (typeof o !== 'object') throw new Error(`${where}: "options" must be an object`);
+  for (const key of ['alpha', 'tension']) {
+    if (o[key] === undefined) continue;
+    const v = Number(o[key]);
+    if (!(v >= 0 && v <= 1)) throw new Error(`${where}: ${key} must be in [0, 1], got ${o[key]}`);
+    out[key] = v;
+  }
+  if (o.closed !== undefined) out.closed = Boolean(o.closed);
+  for (const key of ['start', 'end']) {
+    if (o[key] === undefined) continue;
+    if (!endKinds.includes(o[key])) throw new Error(`${where}: ${key} must be one of ${endKinds.join(', ')}, got ${JSON.stringify(o[key])}`);
+    out[key] = o[key];
+  }
+  return out;
+}
+
+/// Parse an export back: JSON ({points, options} or a bare [[x, y], ...])
+/// or CSV (x,y per line; a header line and # comments are skipped).
+/// Returns { points: Float64Array (flat x, y), options }. Throws Error with
+/// the line or index at fault.
+export function parsePoints(text, name = '') {
+  const trimmed = text.trim();
+  const looksJson = /\.json$/i.test(name) || trimmed.startsWith('{') || trimmed.startsWith('[');
+  if (looksJson) {
+    let data;
+    try {
+      data = JSON.parse(trimmed);
+    } catch (e) {
+      throw new Error(`JSON: ${e.message}`);
+    }
+    if (Array.isArray(data)) return { points: checkPoints(data, 'JSON'), options: { ...defaultOptions } };
+    if (data && typeof data === 'object') {
+      if (data.dimension !== undefined && data.dimension !== 2) throw new Error(`JSON: the editor is 2-D, got dimension ${data.dimension}`);
+      return { points: checkPoints(data.points, 'JSON'), options: checkOptions(data.options, 'JSON') };
+    }
+    throw new Error('JSON: expected {"points": [[x, y], ...]} or [[x, y], ...]');
+  }
+  const xs = [];
+  const lines = trimmed.split(/\r?\n/);
+  lines.forEach((line, i) => {
+    const l = line.trim();
+    if (!l || l.startsWith('#')) return;
+    const cells = l.split(/[,;\t ]+/);
+    if (cells.length < 2) throw new Error(`CSV line ${i + 1}: expected x,y, got "${l}"`);
+    const x = Number(cells[0]), y = Number(cells[1]);
+    if (!Number.isFinite(x) || !Number.isFinite(y) || cells[0] === '' || cells[1] === '') {
+      if (xs.length === 0 && /[a-z]/i.test(l)) return;  // a header
+      throw new Error(`CSV line ${i + 1}: "${l}" is not two finite numbers`);
+    }
+    xs.push(x, y);
+  });
+  return { points: Float64Array.from(xs), options: { ...defaultOptions } };
+}
+
+const pairs = (flat) => Array.from({ length: flat.length / 2 }, (_, i) => [flat[2 * i], flat[2 * i + 1]]);
+
+export function pointsToJson(flat, options) {
+  const body = pairs(flat).map((p) => `    [${p[0]}, ${p[1]}]`).join(',\n');
+  return `{\n  "format": "crspline-points",\n  "dimension": 2,\n  "options": ${JSON.stringify(checkOptions(options, 'options'))},\n  "points": [\n${body}\n  ]\n}\n`;
+}
+
+export function pointsToCsv(flat) {
+  return 'x,y\n' + pairs(flat).map((p) => `${p[0]},${p[1]}`).join('\n') + '\n';
+}
+
+/// SVG path data of the curve from bezierAll()'s flat B0..B3 per segment.
+export function bezierPathData(bez) {
+  const n = bez.length / 8;
+  if (n === 0) return '';
+  let d = `M${bez[0]} ${bez[1]}`;
+  for (let i = 0; i < n; ++i) {
+    const o = 8 * i;
+    // A new subpath only if a segment does not start where the last ended.
+    if (i > 0 && (bez[o] !== bez[o - 2] || bez[o + 1] !== bez[o - 1])) d += `M${bez[o]} ${bez[o + 1]}`;
+    d += `C${bez[o + 2]} ${bez[o + 3]} ${bez[o + 4]} ${bez[o + 5]} ${bez[o + 6]} ${bez[o + 7]}`;
+  }
+  return d;
+}
+
+/// A standalone SVG of the curve (exact cubic Béziers, no sampling), with
+/// the control points as small circles when showPoints.
+export function curveToSvg(bez, flat, { showPoints = true, closed = false, stroke = '#1f5fbf' } = {}) {
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  const grow = (x, y) => { x0 = Math.min(x0, x); y0 = Math.min(y0, y); x1 = Math.max(x1, x); y1 = Math.max(y1, y); };
+  for (let i = 0; i < bez.length; i += 2) grow(bez[i], bez[i + 1]);
+  for (let i = 0; i < flat.length; i += 2) grow(flat[i], flat[i + 1]);
+  if (!Number.isFinite(x0)) { x0 = y0 = 0; x1 = y1 = 1; }
+  const pad = 0.05 * Math.max(x1 - x0, y1 - y0, 1e-9);
+  const w = x1 - x0 + 2 * pad, h = y1 - y0 + 2 * pad;
+  const r = 0.006 * Math.max(w, h);
+  const d = bezierPathData(bez) + (closed && bez.length ? 'Z' : '');
+  const dots = showPoints
+    ? pairs(flat).map((p) => `  <circle cx="${p[0]}" cy="${p[1]}" r="${r}"/>`).join('\n')
+    : '';
+  return `<?xml version="1.0" encoding="UTF-8"?>
+<svg xmlns="http://www.w3.org/2000/svg" viewBox="${x0 - pad} ${y0 - pad} ${w} ${h}" width="${Math.round(Math.min(1200, w * (1200 / Math.max(w, h))))}" height="${Math.round(Math.min(1200, h * (1200 / Math.max(w, h))))}">
+<title>Catmull-Rom curve (crspline)</title>
+<path d="${d}" fill="none" stroke="${stroke}" stroke-width="${r / 2}" stroke-linejoin="round"/>
+<g fill="#c0392b">
+${dots}
+</g>
+</svg>
+`;
+}
