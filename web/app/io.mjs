@@ -96,15 +96,17 @@ export function parsePoints(text, name = '') {
   return { points: Float64Array.from(xs), options: { ...defaultOptions } };
 }
 
+// Shortest round-trip text of a double, keeping the sign of -0.
+const num = (x) => (Object.is(x, -0) ? '-0' : String(x));
 const pairs = (flat) => Array.from({ length: flat.length / 2 }, (_, i) => [flat[2 * i], flat[2 * i + 1]]);
 
 export function pointsToJson(flat, options) {
-  const body = pairs(flat).map((p) => `    [${p[0]}, ${p[1]}]`).join(',\n');
+  const body = pairs(flat).map((p) => `    [${num(p[0])}, ${num(p[1])}]`).join(',\n');
   return `{\n  "format": "crspline-points",\n  "dimension": 2,\n  "options": ${JSON.stringify(checkOptions(options, 'options'))},\n  "points": [\n${body}\n  ]\n}\n`;
 }
 
 export function pointsToCsv(flat) {
-  return 'x,y\n' + pairs(flat).map((p) => `${p[0]},${p[1]}`).join('\n') + '\n';
+  return 'x,y\n' + pairs(flat).map((p) => `${num(p[0])},${num(p[1])}`).join('\n') + '\n';
 }
 
 /// SVG path data of the curve from bezierAll()'s flat B0..B3 per segment.

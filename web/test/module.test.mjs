@@ -1,0 +1,313 @@
+// The WASM module in node against the reference data the C++ tests use
+// (tests/reference, provenance in SOURCES.md there), at the same
+// tolerances: the same numbers as the C++ library, through JavaScript.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { loadModule, reference, maxAbs } from './support.mjs';
+import { parsePoints, pointsToJson, pointsToCsv, curveToSvg, bezierPathData, splineOptions } from '../app/io.mjs';
+
+const M = await loadModule();
+
+// Build a Spline, run f, free the WASM object.
+function withSpline(points, dim, options, f) {
+  const s = new M.Spline(points, dim, options);
+  try {
+    return f(s);
+  } finally {
+    s.delete();
+  }
+}
+
+function splinesOptions(c) {
+  const o = { closed: c.closed };
+  if (c.grid !== null) o.grid = c.grid;
+  else o.alpha = c.alpha ?? 0;  // the package's default is uniform
+  if (c.endconditions && typeof c.endconditions === 'object') {
+    const e = (x) => (x === 'natural' ? 'natural' : { tangent: x });
+    o.start = e(c.endconditions.start);
+    o.end = e(c.endconditions.end);
+  }
+  if (Array.isArray(c.tension)) o.kb = { tension: c.tension, continuity: c.continuity, bias: c.bias };
+  return o;
+}
+
+test('splines package: CatmullRom and KochanekBartels cases, orders 0-2, to 1e-12 * scale + lib_err', () => {
+  const cases = reference('splines_py.json');
+  let nCases = 0, nValues = 0, nCatmullRom = 0;
+  for (const c of cases) {
+    if (c.class === 'ConstantSpeedAdapter') continue;
+    withSpline(c.points, c.dim, splinesOptions(c), (s) => {
+      const grid = s.grid();
+      assert.equal(grid.length, c.grid_out.length, c.id);
+      const gtol = 1e-12 * Math.max(1, Math.abs(c.grid_out.at(-1)));
+      assert.ok(maxAbs(grid, c.grid_out) <= gtol, `${c.id}: grid`);
+      for (const order of ['0', '1', '2']) {
+        // SOURCES.md: 1e-12 * scale from the exact value; the package is
+        // itself lib_err from it, so we must be within the sum.
+        const tol = 1e-12 * c.value_scale[order] + c.lib_err[order];
+        // One call for all parameters (the batch path), and the single-t
+        // path on every value too.
+        const all = s.evaluateMany(Float64Array.from(c.t), Number(order));
+        c.t.forEach((t, j) => {
+          const want = c.values[order][j];
+          const one = s.evaluate(t, Number(order));
+          const err = Math.max(maxAbs(one, want), maxAbs(all.subarray(j * c.dim, (j + 1) * c.dim), want));
+          assert.ok(err <= tol, `${c.id}: order ${order} t ${t}: error ${err} > ${tol}`);
+          ++nValues;
+        });
+      }
+    });
+    ++nCases;
+    if (c.class === 'CatmullRom') ++nCatmullRom;
+  }
+  assert.equal(nCases, 96);  // 74 CatmullRom + 22 KochanekBartels in the file
+  assert.equal(nCatmullRom, 74);
+  assert.ok(nValues > 10000, `${nValues} values`);
+});
+
+test('splines package: arc length at the knots against the 40-digit lengths, to 1e-12 relative', () => {
+  const cases = reference('splines_py.json');
+  const exact = reference('arc_length_exact.json').knot_lengths;
+  let nCases = 0, nValues = 0;
+  for (const c of cases) {
+    if (c.class !== 'ConstantSpeedAdapter') continue;
+    withSpline(c.points, c.dim, splinesOptions(c), (s) => {
+      const L = s.arcLength();
+      const knots = s.knotLengths();
+      const want = exact[c.id].map(Number);
+      assert.equal(knots.length, want.length, c.id);
+      want.forEach((e, i) => {
+        assert.ok(Math.abs(knots[i] - e) <= 1e-12 * L, `${c.id}: knot ${i}: ${knots[i]} vs ${e}`);
+        ++nValues;
+      });
+      // Segment lengths (the editor's cache) sum to the same total.
+      const seg = s.segmentLengths(0, s.segmentCount());
+      assert.ok(Math.abs(seg.reduce((a, b) => a + b, 0) - L) <= 1e-12 * L, `${c.id}: segment lengths`);
+      // Sampling by arc length: equal spacing, ends exact.
+      const smp = s.sampleArcLength(11);
+      assert.equal(smp.t[0], s.tMin());
+      assert.equal(smp.t[10], s.tMax());
+      for (let k = 0; k <= 10; ++k) assert.ok(Math.abs(s.sAt(smp.t[k]) - (L * k) / 10) <= 2e-12 * L, `${c.id}: sample ${k}`);
+    });
+    ++nCases;
+  }
+  assert.ok(nCases >= 10, `${nCases} cases`);
+  assert.ok(nValues >= 50, `${nValues} values`);
+});
+
+test('oracle: one segment at 50 digits: positions, Bézier points, classification', () => {
+  const { cases } = reference('oracle.json');
+  let nCases = 0, nClassified = 0;
+  for (const c of cases) {
+    const p = c.points;
+    let coord = 0, local = 0;
+    for (const q of p) for (let k = 0; k < c.dim; ++k) { coord = Math.max(coord, Math.abs(q[k])); local = Math.max(local, Math.abs(q[k] - p[1][k])); }
+    const tol = 1e-13 * local + 2 * Number.EPSILON * coord;
+    withSpline(p, c.dim, { alpha: c.alpha, tension: c.tension }, (s) => {
+      const grid = s.grid();
+      c.knots.forEach((k, i) => assert.ok(Math.abs(grid[i] - k) <= 1e-15 * Math.max(1, c.knots[3]), `${c.name}: knot ${i}`));
+      const B = s.bezier(1);
+      c.bezier.forEach((b, k) => assert.ok(maxAbs(B.subarray(k * c.dim, (k + 1) * c.dim), b) <= tol, `${c.name}: B${k}`));
+      // Positions through the checked evaluation: t = t1 + u h; u = 1 is
+      // the knot t2 (segment 2 starts there; the point is P2 either way).
+      c.u.forEach((u, j) => {
+        const t = u === 1 ? grid[2] : grid[1] + u * (grid[2] - grid[1]);
+        const x = s.evaluate(t);
+        assert.ok(maxAbs(x, c.position[j]) <= tol + 4 * Number.EPSILON * local, `${c.name}: u ${u}`);
+      });
+      // The same Bézier points from the whole-curve call the editor uses.
+      const all = s.bezierAll();
+      assert.equal(all.length, 3 * 4 * c.dim);
+      assert.deepEqual(Array.from(all.subarray(4 * c.dim, 8 * c.dim)), Array.from(B));
+    });
+    // The analysis report of the segment: exact classification.
+    const a = M.analyzeSegment(p, c.dim, c.alpha, c.tension);
+    assert.equal(a.hasCusp, c.has_cusp, `${c.name}: has_cusp`);
+    assert.equal(a.hasSelfIntersection, c.has_self_intersection, `${c.name}: has_self_intersection`);
+    assert.equal(a.fold, c.fold_1d, `${c.name}: fold`);
+    assert.equal(a.rank, c.rank, `${c.name}: rank`);
+    assert.equal(a.cuspU.length, c.cusp_u.length, `${c.name}: cusp count`);
+    c.cusp_u.forEach((u, k) => assert.ok(Math.abs(a.cuspU[k] - u) <= 1e-12, `${c.name}: cusp ${k}`));
+    assert.equal(a.zeroSpeedU.length, c.zero_speed_u.length, `${c.name}: zero-speed count`);
+    assert.equal(a.selfIntersections.length, c.self_intersection_uv.length, `${c.name}: loops`);
+    const segTol = 1e-13 * Math.max(local, 1e-300);
+    assert.ok(Math.abs(a.maxChordLineDistance - c.max_dist_to_chord_line) <= segTol, `${c.name}: chord line distance`);
+    nClassified++;
+    nCases++;
+  }
+  assert.equal(nCases, 38);
+  assert.equal(nClassified, 38);
+});
+
+test('d3-shape: Bézier segments of curveCatmullRom, -Closed, -Open to 1e-12 of the coordinate scale', () => {
+  const { cases } = reference('threejs_d3.json');
+  let checked = 0, skipped = 0;
+  for (const c of cases) {
+    for (const v of c.d3 ?? []) {
+      // As in the C++ test: d3's own error is ~1e-7 on a 1e-9 chord.
+      if (c.id === 'near_coincident_2d_6') { ++skipped; continue; }
+      const n = c.points.length;
+      const o = { alpha: v.alpha };
+      if (v.variant === 'curveCatmullRomClosed') o.closed = true;
+      else if (v.variant === 'curveCatmullRom') o.start = o.end = { tangent: [0, 0] };
+      const scale = Math.max(1, ...c.points.flat().map(Math.abs));
+      withSpline(c.points, 2, o, (s) => {
+        const all = s.bezierAll();
+        v.segments.forEach((seg, k) => {
+          let ours = k;
+          if (v.variant === 'curveCatmullRomClosed') ours = (k + 1) % n;  // d3 starts at points[1]
+          if (v.variant === 'curveCatmullRomOpen') ours = k + 1;          // interior segments only
+          const B = all.subarray(8 * ours, 8 * ours + 8);
+          const want = [seg.p0, seg.c1, seg.c2, seg.p3].flat();
+          assert.ok(maxAbs(B, want) <= 1e-12 * scale, `${c.id} ${v.variant} alpha ${v.alpha} segment ${k}`);
+          ++checked;
+        });
+      });
+    }
+  }
+  assert.equal(skipped, 9);
+  assert.ok(checked > 100, `${checked} segments`);
+});
+
+test('errors: a C++ exception arrives as a JavaScript Error with the core message', () => {
+  const cases = [
+    [() => new M.Spline([[0, 0]], 2, {}), /a curve needs at least 2 points, got 1/],
+    [() => new M.Spline([[0, 0], [1, 1]], 2, { closed: true }), /a closed curve needs at least 3 points, got 2/],
+    [() => new M.Spline([[0, 0], [1, 1]], 2, { alpha: 1.5 }), /alpha must be in \[0, 1\], got 1.5/],
+    [() => new M.Spline([[0, 0], [1, NaN]], 2, {}), /point 1, coordinate 1 is not finite \(nan\)/],
+    [() => new M.Spline([[0, 0], [1, 1]], 2, { tension: -1 }), /tension must be in \[0, 1\], got -1/],
+    [() => new M.Spline([0, 0, 1], 2, {}), /3 coordinates, not a multiple of the dimension 2/],
+    [() => new M.Spline([[0, 0], [1, 1]], 5, {}), /dimension must be 1, 2, 3 or 4, got 5/],
+    [() => new M.Spline([[0, 0], [1, 1]], 2, { start: 'clamped' }), /start end condition must be/],
+    [() => new M.Spline([[0, 0], [1, 1], [2, 0]], 2, { grid: [0, 1, 1] }), /grid must be strictly increasing/],
+    [() => withSpline([[0, 0], [1, 1]], 2, {}, (s) => s.evaluate(7)), /t = 7 is outside the domain/],
+    [() => withSpline([[0, 0], [1, 1]], 2, {}, (s) => s.evaluate(0.5, 4)), /derivative order must be 0, 1, 2 or 3, got 4/],
+    [() => withSpline([[0, 0], [1, 1]], 2, {}, (s) => s.evaluateMany([0, 0.5, 9])), /index 2/],
+    [() => withSpline([[0, 0], [1, 1]], 2, {}, (s) => s.bezier(3)), /segment index 3 is outside/],
+    [() => withSpline([[0, 0], [1, 1]], 2, {}, (s) => s.tAtArcLength(-1)), /./],
+    [() => withSpline([[0, 0, 0], [1, 1, 1]], 3, {}, (s) => s.curvatureComb(4)), /needs a plane curve/],
+  ];
+  for (const [f, message] of cases) assert.throws(f, (e) => e instanceof Error && message.test(e.message), String(message));
+  // The module is still usable after the errors.
+  withSpline([[0, 0], [1, 1]], 2, {}, (s) => assert.deepEqual(Array.from(s.evaluate(0)), [0, 0]));
+  assert.equal(cases.length, 15);
+});
+
+test('analysis: the uniform cusp, centripetal certificate, a crossing found exactly', () => {
+  // SOURCES.md: uniform (-5,1),(0,0),(1,0),(6,1) has an exact cusp at u = 1/2.
+  withSpline([[-5, 1], [0, 0], [1, 0], [6, 1]], 2, { alpha: 0 }, (s) => {
+    const c = s.cusps();
+    assert.equal(c.length, 5);
+    assert.equal(c[0], 1);
+    assert.ok(Math.abs(c[1] - 0.5) <= 1e-12);
+    assert.ok(Math.abs(c[2] - 1.5) <= 1e-12, 't = 1.5');
+    assert.ok(maxAbs(c.subarray(3), s.evaluate(1.5)) <= 1e-12, `cusp at ${c[3]}, ${c[4]}`);
+    assert.ok(Math.abs(c[3] - 0.5) <= 1e-12, 'x = 1/2 by symmetry');
+    const report = s.analyze();
+    assert.equal(report.length, 3);
+    assert.equal(report[1].hasCusp, true);
+  });
+  // The same points centripetal: no cusp (Theorem), and certified.
+  withSpline([[-5, 1], [0, 0], [1, 0], [6, 1]], 2, { alpha: 0.5 }, (s) => {
+    assert.equal(s.cusps().length, 0);
+    const cert = s.certify();
+    assert.equal(cert.certified, true);
+    assert.equal(cert.failedRule, 'none');
+  });
+  // A figure eight, symmetric under a half turn: it crosses itself once,
+  // at the origin.
+  const pts = [[1, 1], [2, 0], [1, -1], [-1, 1], [-2, 0], [-1, -1]];
+  withSpline(pts, 2, { alpha: 0.5, closed: true }, (s) => {
+    const cert = s.certify();
+    assert.equal(cert.certified, false);
+    assert.equal(cert.intersects, true);
+    const x = s.intersections();
+    assert.equal(x.intersections.length, 1);
+    assert.ok(Math.hypot(x.intersections[0].point[0], x.intersections[0].point[1]) <= 1e-12, 'crossing at the origin');
+    assert.ok(x.intersections[0].distance <= 1e-12);
+  });
+  // Bounding volumes: one box per segment; each sampled curve point lies in
+  // the union of its segment's box and balls.
+  withSpline([[0, 0], [3, 4], [7, 2], [9, 8], [4, 9]], 2, { alpha: 0.5 }, (s) => {
+    const v = s.boundingVolumes('tightened');
+    assert.equal(v.boxes.length / v.boxStride, s.segmentCount());
+    const g = s.grid();
+    let inside = 0;
+    for (let i = 0; i < s.segmentCount(); ++i) {
+      const b = v.boxes.subarray(i * v.boxStride, (i + 1) * v.boxStride);
+      const [ax, ay, bx, by, l0, l1, w] = b.subarray(1);
+      const dx = bx - ax, dy = by - ay, L2 = dx * dx + dy * dy;
+      for (let k = 0; k <= 50; ++k) {
+        const p = s.evaluate(g[i] + ((g[i + 1] - g[i]) * k) / 50);
+        const lam = ((p[0] - ax) * dx + (p[1] - ay) * dy) / L2;
+        const dist = Math.abs((p[0] - ax) * dy - (p[1] - ay) * dx) / Math.sqrt(L2);
+        assert.ok(lam >= l0 - 1e-12 && lam <= l1 + 1e-12 && dist <= w + 1e-12, `segment ${i} sample ${k}`);
+        ++inside;
+      }
+    }
+    assert.equal(inside, 4 * 51);
+    assert.throws(() => s.boundingVolumes('loose'), /volume kind/);
+  });
+});
+
+test('sampling, nearest point, curvature and the overlays the editor draws', () => {
+  withSpline([[0, 0], [10, 0], [10, 10], [0, 10]], 2, { alpha: 0.5, closed: true }, (s) => {
+    assert.equal(s.segmentCount(), 4);
+    assert.equal(s.closed(), true);
+    const near = s.nearest([5, -3]);
+    assert.equal(near.segment, 0);
+    assert.ok(near.distanceSq > 0);
+    const at = s.evaluate(near.t);
+    assert.ok(maxAbs(at, near.point) <= 1e-12);
+    const tess = s.tessellate(0.01);
+    assert.equal(tess.points.length, 2 * tess.t.length);
+    // Comb: 5 numbers per sample, (m + 1) samples per segment; the
+    // curvature agrees with curvature(t).
+    const m = 6, comb = s.curvatureComb(m);
+    assert.equal(comb.length, 4 * (m + 1) * 5);
+    const g = s.grid();
+    for (let j = 0; j <= m; ++j) {
+      const t = g[0] + ((g[1] - g[0]) * j) / m;
+      const k = s.curvature(j === m ? g[1] - 1e-300 : t);
+      assert.ok(Math.abs(Math.abs(comb[5 * j + 4]) - k) <= 1e-9 * Math.max(1, k), `comb ${j}`);
+    }
+    // A closed, convex, counter-clockwise-in-y-down square turns one way.
+    const signs = new Set(Array.from({ length: comb.length / 5 }, (_, j) => Math.sign(comb[5 * j + 4])));
+    assert.equal(signs.size, 1);
+    // Ticks: points every 2 units of arc length, with unit tangents.
+    const L = s.arcLength();
+    const ticks = s.arcLengthTicks(2, 1000);
+    const nt = ticks.length / 4;
+    assert.equal(nt, Math.floor(L / 2) + 1);
+    for (let k = 0; k < nt; ++k) assert.ok(Math.abs(Math.hypot(ticks[2 * (nt + k)], ticks[2 * (nt + k) + 1]) - 1) <= 1e-12);
+    const t3 = s.tAtArcLength(6);
+    assert.ok(maxAbs(s.evaluate(t3), ticks.subarray(6, 8)) <= 1e-9);
+    // Dimensions 1, 3, 4 work through the same class.
+    withSpline([0, 1, 3], 1, {}, (c) => assert.equal(c.evaluate(1)[0], 1));
+    withSpline([[0, 0, 0, 0], [1, 2, 3, 4], [2, 0, 1, 0]], 4, { alpha: 1 }, (c) => assert.equal(c.bezierAll().length, 2 * 4 * 4));
+  });
+});
+
+test('io: JSON and CSV round trips are exact; SVG path has one cubic per segment', () => {
+  const pts = Float64Array.from([0.1, 0.2, 1 / 3, Math.PI, -1e-300, 1e300, 12345.678, -0]);
+  const opts = { alpha: 0.25, tension: 0.1, closed: true, start: 'reflect', end: 'zero' };
+  const j = parsePoints(pointsToJson(pts, opts), 'a.json');
+  assert.deepEqual(Array.from(j.points), Array.from(pts));
+  assert.deepEqual(j.options, opts);
+  const c = parsePoints(pointsToCsv(pts), 'a.csv');
+  assert.deepEqual(Array.from(c.points), Array.from(pts));
+  assert.deepEqual(Array.from(parsePoints('[[1, 2], [3, 4]]').points), [1, 2, 3, 4]);
+  assert.deepEqual(Array.from(parsePoints('# comment\nx;y\n1;2\n3\t4\n').points), [1, 2, 3, 4]);
+  assert.throws(() => parsePoints('1,2\n3,abc\n'), /CSV line 2/);
+  assert.throws(() => parsePoints('{"points": [[1, 2], [3]]}'), /point 1 is not \[x, y\]/);
+  assert.throws(() => parsePoints('{"points": [[1, 2]], "options": {"alpha": 2}}'), /alpha must be in \[0, 1\]/);
+  assert.throws(() => parsePoints('{"points": '), /JSON/);
+  withSpline(pts.subarray(0, 6), 2, splineOptions({ ...opts, closed: false }), (s) => {
+    const bez = s.bezierAll();
+    const d = bezierPathData(bez);
+    assert.equal((d.match(/C/g) ?? []).length, s.segmentCount());
+    const svg = curveToSvg(bez, pts.subarray(0, 6));
+    assert.match(svg, /^<\?xml[\s\S]*<svg [^>]*viewBox="[^"]+"[\s\S]*<path d="M/);
+    assert.equal((svg.match(/<circle/g) ?? []).length, 3);
+  });
+});
