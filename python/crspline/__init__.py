@@ -439,10 +439,65 @@ class CatmullRom:
         position, tangent, nrm, binormal = f(tt, kind, normal)
         return {"position": position, "tangent": tangent, "normal": nrm, "binormal": binormal}
 
-    def analyze(self):
-        """Per-segment analysis as plain Python: cusps, self-intersections,
-        distances to the chord, the paper's bounds. See docs/python.md."""
-        return self._need("analyze", "analysis.hpp")()
+    def analyze(self, *, intersections=True):
+        """Analysis of the curve as plain dicts and ndarrays.
+
+        Returns ``{'segments': [...], 'cusp_t', 'has_cusp',
+        'has_self_intersection', 'intersections'}``:
+
+        * ``segments``: one dict per segment with ``index``, ``rank`` (of its
+          affine span), ``bezier`` (4, dim), ``zero_speed_u``, ``cusp_u`` and
+          ``cusp_t`` (interior zero-speed points, local u and global t),
+          ``self_intersection_u`` (k, 2) (loops, planar segments), ``fold``
+          (a collinear segment that reverses), ``has_cusp``,
+          ``has_self_intersection``, ``projection`` (chord-frame quantities
+          or None for a zero chord), ``bezier_height``, ``bezier_bound``,
+          ``max_chord_line_distance(_u)``, ``max_chord_distance(_u)``,
+          ``overshoot`` and ``bounds`` (the paper's Eq. 5, 6 and 8 for plain
+          interior segments, else None).
+        * ``cusp_t``: every cusp of the curve, in t.
+        * ``intersections``: ``self.intersections()`` (whole curve: also
+          crossings between segments), or None with ``intersections=False``.
+        * ``has_self_intersection``: a loop or fold in a segment, or any
+          meeting found by the whole-curve search.
+        """
+        segments = self._need("analyze", "analysis.hpp")()
+        cusp_t = _np.concatenate([s["cusp_t"] for s in segments]) if segments else _np.empty(0, self.dtype)
+        found = self.intersections() if intersections else None
+        return {
+            "segments": segments,
+            "cusp_t": cusp_t,
+            "has_cusp": any(s["has_cusp"] for s in segments),
+            "has_self_intersection": any(s["has_self_intersection"] for s in segments)
+            or bool(found is not None and found["any"]),
+            "intersections": found,
+        }
+
+    def intersections(self, tolerance=None):
+        """Every meeting of the curve with itself closer than ``tolerance`` (a
+        distance; default 1e-9 times the size of the Bézier points' box):
+        crossings between segments, loops inside segments, folds.
+
+        Returns ``{'segments': (k, 2) int64, 'u': (k, 2), 't': (k, 2),
+        'point': (k, dim), 'distance': (k,), 'folds': int64 array of
+        segments, 'complete': bool, 'any': bool}``. ``complete`` is False if
+        a pair of segments exhausted the search's work budget."""
+        f = self._need("intersections", "intersections.hpp")
+        return f(None if tolerance is None else _real(tolerance, "tolerance"))
+
+    def certify_intersection_free(self, *, safe_angle=None, search_on_failure=True, tolerance=None):
+        """Section 5's certificate that the curve does not intersect itself.
+
+        Rules: (1) centripetal knots and plain interior segments, end segments
+        without cusp or loop; (2) every polygon angle above ``safe_angle``
+        (default pi/3, radians); (3) disjoint bounding boxes of non-adjacent
+        segments. Returns ``{'certified', 'failed_rule', 'vertex', 'segment',
+        'segments', 'angle', 'detail', 'intersects', 'search'}``; when not
+        certified and ``search_on_failure``, ``intersects`` and ``search``
+        (as ``intersections()``) say whether it really does."""
+        f = self._need("certify_intersection_free", "certify.hpp")
+        angle = _crspline.safe_adjacent_angle if safe_angle is None else _real(safe_angle, "safe_angle")
+        return f(angle, bool(search_on_failure), None if tolerance is None else _real(tolerance, "tolerance"))
 
 
 class KochanekBartels(CatmullRom):

@@ -1,6 +1,10 @@
 // crspline Python module: per-segment analysis (cusps, self-intersections,
 // chord distances, the paper's bounds) as plain dicts.
+#include <optional>
+
 #include <crspline/analysis.hpp>
+#include <crspline/certify.hpp>
+#include <crspline/intersections.hpp>
 
 #include "curve.hpp"
 
@@ -79,9 +83,46 @@ py::dict to_dict(const segment_analysis<D, T>& a, T t0, T h) {
     return d;
 }
 
+/// find_intersections' result as a dict of arrays (k meetings).
+template <std::size_t D, class T>
+py::dict to_dict(const intersection_result<D, T>& r, std::span<const T> grid) {
+    const std::size_t k = r.intersections.size();
+    py::array_t<std::int64_t> seg({py::ssize_t(k), py::ssize_t(2)});
+    py::array_t<T> u({py::ssize_t(k), py::ssize_t(2)}), t({py::ssize_t(k), py::ssize_t(2)});
+    py::array_t<T> dist{py::ssize_t(k)};
+    std::vector<vec<D, T>> pts;
+    for (std::size_t i = 0; i < k; ++i) {
+        const auto& x = r.intersections[i];
+        for (std::size_t j = 0; j < 2; ++j) {
+            const std::size_t sg = x.segments[j];
+            seg.mutable_data()[2 * i + j] = std::int64_t(sg);
+            u.mutable_data()[2 * i + j] = x.u[j];
+            const T h = grid[sg + 1] - grid[sg];
+            t.mutable_data()[2 * i + j] = x.u[j] == T(1) ? grid[sg + 1] : grid[sg] + x.u[j] * h;
+        }
+        dist.mutable_data()[i] = x.distance;
+        pts.push_back(x.point);
+    }
+    std::vector<std::int64_t> folds(r.folds.begin(), r.folds.end());
+    py::dict d;
+    d["segments"] = seg;
+    d["u"] = u;
+    d["t"] = t;
+    d["point"] = points_array<D, T>(pts);
+    d["distance"] = dist;
+    d["folds"] = vector_array<std::int64_t>(folds);
+    d["complete"] = r.complete;
+    d["any"] = r.any();
+    return d;
+}
+
+py::object optional_index(const std::optional<std::size_t>& i) {
+    return i ? py::object(py::int_(*i)) : py::object(py::none());
+}
+
 }  // namespace
 
-void bind_analysis(py::module_&, py::class_<curve>& cls) {
+void bind_analysis(py::module_& m, py::class_<curve>& cls) {
     cls.def("analyze", [](const curve& c) {
         return c.visit([](const auto& cr) -> py::list {
             using T = scalar_t<decltype(cr)>;
@@ -97,6 +138,56 @@ void bind_analysis(py::module_&, py::class_<curve>& cls) {
             return out;
         });
     }, "Analysis of every segment, as a list of dicts.");
+
+    m.attr("default_intersection_tolerance") = default_intersection_tolerance;
+    m.attr("safe_adjacent_angle") = safe_adjacent_angle;
+
+    cls.def("intersections", [](const curve& c, std::optional<double> tolerance) {
+        return c.visit([&](const auto& cr) -> py::dict {
+            using T = scalar_t<decltype(cr)>;
+            constexpr std::size_t D = dimension_v<decltype(cr)>;
+            if (tolerance && !(*tolerance > 0 && std::isfinite(*tolerance)))
+                throw invalid_input("tolerance must be positive and finite, got " + detail::num(*tolerance));
+            intersection_result<D, T> r;
+            {
+                py::gil_scoped_release nogil;
+                r = find_intersections(cr, T(tolerance.value_or(0)));
+            }
+            return to_dict(r, cr.grid());
+        });
+    }, py::arg("tolerance") = py::none(), "Self-intersections of the whole curve, as a dict of arrays.");
+
+    cls.def("certify_intersection_free", [](const curve& c, double safe_angle, bool search_on_failure,
+                                            std::optional<double> tolerance) {
+        return c.visit([&](const auto& cr) -> py::dict {
+            using T = scalar_t<decltype(cr)>;
+            constexpr std::size_t D = dimension_v<decltype(cr)>;
+            if (tolerance && !(*tolerance > 0 && std::isfinite(*tolerance)))
+                throw invalid_input("tolerance must be positive and finite, got " + detail::num(*tolerance));
+            certify_options opt;
+            opt.safe_angle = safe_angle;
+            opt.search_on_failure = search_on_failure;
+            opt.tolerance = tolerance.value_or(0);
+            certificate<D, T> r;
+            {
+                py::gil_scoped_release nogil;
+                r = certify_intersection_free(cr, opt);
+            }
+            py::dict d;
+            d["certified"] = r.certified;
+            d["failed_rule"] = to_string(r.failed_rule);
+            d["vertex"] = optional_index(r.vertex);
+            d["segment"] = optional_index(r.segment);
+            d["segments"] = r.segments ? py::object(py::make_tuple((*r.segments)[0], (*r.segments)[1]))
+                                       : py::object(py::none());
+            d["angle"] = double(r.angle);
+            d["detail"] = r.detail;
+            d["intersects"] = r.intersects ? py::object(py::bool_(*r.intersects)) : py::object(py::none());
+            d["search"] = r.intersects ? py::object(to_dict(r.search, cr.grid())) : py::object(py::none());
+            return d;
+        });
+    }, py::arg("safe_angle") = safe_adjacent_angle, py::arg("search_on_failure") = true,
+       py::arg("tolerance") = py::none(), "Section 5's certificate that the curve does not intersect itself.");
 }
 
 }  // namespace crspline::python

@@ -54,7 +54,7 @@ curve make_curve(const py::array& points, std::optional<double> alpha, std::opti
             opt.kb.continuity = cast_all<T>(kb_continuity);
             opt.kb.bias = cast_all<T>(kb_bias);
             opt.strict = strict;
-            return curve{catmull_rom<D, T>(std::span<const vec<D, T>>(as_points<D, T>(p), n), opt)};
+            return curve{catmull_rom<D, T>(std::span<const vec<D, T>>(as_points<D, T>(std::as_const(p)), n), opt)};
         });
     });
 }

@@ -47,7 +47,7 @@ void bind_geometry(py::module_& m, py::class_<curve>& cls) {
             std::vector<nearest_result<D, T>> r;
             {
                 py::gil_scoped_release nogil;
-                r = nearest(cr, std::span<const vec<D, T>>(as_points<D, T>(q), n));
+                r = nearest(cr, std::span<const vec<D, T>>(as_points<D, T>(std::as_const(q)), n));
             }
             py::array_t<T> t{py::ssize_t(n)}, d2{py::ssize_t(n)};
             py::array_t<std::int64_t> seg{py::ssize_t(n)};
