@@ -7,7 +7,7 @@
 
 namespace crspline::cli {
 
-output_json run_bezier(const nlohmann::json& input) {
+output_json run_bezier(const document& input) {
     const bezier_spec spec = parse_bezier(input);
     return with_dimension(spec.curve.dimension, [&](auto dim) {
         constexpr std::size_t D = decltype(dim)::value;

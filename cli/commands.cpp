@@ -13,7 +13,9 @@ namespace {
 
 // The part of the contract every subcommand shares.
 #define CRSPLINE_CLI_CURVE_FIELDS                                                                   \
-    "Input: one JSON object, read from the file 'input', or from stdin when it is '-' or absent.\n" \
+    "Input: one JSON object, read from the file 'input', or from stdin when it is '-' or absent;\n"  \
+    "or CSV/TSV points (one point per line, see 'Points from CSV'). The options below override\n"  \
+    "the JSON fields; with CSV input they are the only way to set them.\n"                        \
     "  \"points\": [[x, y, ...], ...]   required; 1 to 4 coordinates, the same for every point\n"  \
     "  \"alpha\": 0.5                   knot exponent in [0, 1] (0 uniform, 0.5 centripetal,\n"    \
     "                                 1 chordal); default 0.5\n"                                   \
@@ -27,6 +29,19 @@ namespace {
     "                                 Kochanek-Bartels, one value per point (null allowed at\n"    \
     "                                 the two ends of an open curve); a missing array = zeros\n"   \
     "  \"strict\": false                reject coincident consecutive points\n"
+
+#define CRSPLINE_CLI_CSV_AND_ERRORS                                                                 \
+    "Points from CSV: one point per line, 1 to 4 numbers; blank lines and '#' lines skipped; a\n"   \
+    "first line without numbers is a header; delimiter , ; tab or blanks (detected, or\n"          \
+    "--delimiter); --columns x,y (header names) or --columns 2,3 (numbered from 1) chooses\n"     \
+    "columns. The format comes from --input-format, else the extension (.json, .csv, .tsv),\n"   \
+    "else the first character ('{' is JSON).\n"                                                   \
+    "\n"                                                                                           \
+    "Output: stdout, or -o FILE (written whole or not at all); the format from --format, else\n"  \
+    "the extension of FILE.\n"                                                                    \
+    "\n"                                                                                           \
+    "Errors: exit status 2 and one line on stderr naming the file, line and column (or the\n"     \
+    "field or option, and the index) and what was expected."
 
 constexpr std::string_view eval_details =
     CRSPLINE_CLI_CURVE_FIELDS
@@ -44,7 +59,10 @@ constexpr std::string_view eval_details =
     "  {\"grid\":[0.0,1.0,2.0],\"values\":{\"0\":[[0.0,0.0],[0.5,0.6875],[2.0,0.0]],\n"
     "   \"1\":[[1.0,1.5],[1.0,1.125],[1.0,-1.5]]}}\n"
     "\n"
-    "Errors: exit status 2 and one line on stderr naming the field, index and value.";
+    "More examples:\n"
+    "  crspline eval --t 0,0.5,1 --derivatives 0,1 --format csv points.csv\n"
+    "  crspline eval --centripetal --s 0,1,2 -o out.csv curve.json\n"
+    "\n" CRSPLINE_CLI_CSV_AND_ERRORS;
 
 constexpr std::string_view bezier_details =
     CRSPLINE_CLI_CURVE_FIELDS
@@ -58,7 +76,10 @@ constexpr std::string_view bezier_details =
     "   [0.6666666666666667,1.0],[1.0,1.0]],[[1.0,1.0],[1.3333333333333333,1.0],\n"
     "   [1.6666666666666667,0.5],[2.0,0.0]]]}\n"
     "\n"
-    "Errors: exit status 2 and one line on stderr naming the field, index and value.";
+    "More examples:\n"
+    "  crspline bezier --format svg-path points.csv        the SVG path d string\n"
+    "  crspline bezier --chordal --closed -o curve.svg points.csv\n"
+    "\n" CRSPLINE_CLI_CSV_AND_ERRORS;
 
 constexpr std::string_view length_details =
     CRSPLINE_CLI_CURVE_FIELDS
@@ -70,7 +91,8 @@ constexpr std::string_view length_details =
     "Example:\n"
     "  echo '{\"points\": [[0, 0], [3, 4], [6, 0]]}' | crspline length\n"
     "\n"
-    "Errors: exit status 2 and one line on stderr naming the field, index and value.";
+    "  crspline length --columns x,y --uniform track.csv\n"
+    "\n" CRSPLINE_CLI_CSV_AND_ERRORS;
 
 constexpr std::string_view sample_details =
     CRSPLINE_CLI_CURVE_FIELDS
@@ -88,15 +110,74 @@ constexpr std::string_view sample_details =
     "    | crspline sample\n"
     "  echo '{\"points\": [[0, 0], [1, 1], [2, 0]], \"tolerance\": 0.001}' | crspline sample\n"
     "\n"
-    "Errors: exit status 2 and one line on stderr naming the field, index and value.";
+    "  crspline sample --count 100 --spacing arc_length --format csv points.csv\n"
+    "\n" CRSPLINE_CLI_CSV_AND_ERRORS;
+
+constexpr std::string_view analyze_details =
+    "Input: the curve, as for 'crspline bezier' (JSON fields or CSV points plus options).\n"
+    "\n"
+    "Output (JSON):\n"
+    "  {\"segments\": [{\"index\": i, \"cusp_u\": [...], \"self_intersection\": [[u, v], ...],\n"
+    "                 \"fold\": false, \"max_chord_distance\": d, \"max_chord_line_distance\": d,\n"
+    "                 \"distance_bound\": b, \"bezier\": [B0, B1, B2, B3]}, ...],\n"
+    "   \"intersections\": [{\"segments\": [i, j], \"u\": [u_i, u_j], \"point\": [x, y]}, ...],\n"
+    "   \"folds\": [...],\n"
+    "   \"intersection_free\": {\"certified\": true, \"failed_rule\": null, \"detail\": \"\"}}\n"
+    "u is local to its segment, in [0, 1]. max_chord_distance: to the closed chord segment\n"
+    "from points[i] to the next point; max_chord_line_distance: to its line; distance_bound: the\n"
+    "paper's Eq. 6 (two-sided form) for interior segments of a plain curve, else null.\n"
+    "intersections: crossings between segments, and loops inside one (i == j). certified: the\n"
+    "paper's Section 5 rules prove there is no self-intersection (centripetal curves only).\n"
+    "\n"
+    "Example:\n"
+    "  crspline analyze --uniform points.csv\n"
+    "  echo '{\"points\": [[0, 0], [1, 1], [1.1, 1], [2, 0]], \"alpha\": 0}' | crspline analyze\n"
+    "\n" CRSPLINE_CLI_CSV_AND_ERRORS;
+
+constexpr std::string_view plot_details =
+    "Input: the curve, as for 'crspline bezier' (JSON fields or CSV points plus options).\n"
+    "\n"
+    "Draws the points, the control polygon and one curve per alpha (--alpha 0,0.5,1 or the\n"
+    "presets together: uniform, centripetal and chordal in distinct colours, with a legend),\n"
+    "each segment an exact cubic Bezier, on axes scaled to the data, with a title. Overlays:\n"
+    "  --cusps            cusps (zero speed inside a segment), marked x\n"
+    "  --intersections    self-intersections, marked o\n"
+    "  --volumes          the paper's bounding volumes (Eq. 6 boxes, Eq. 8 balls)\n"
+    "  --comb [SCALE]     curvature comb (teeth of length SCALE * curvature; auto by default)\n"
+    "  --handles          Bezier handles B0-B1 and B2-B3\n"
+    "  --ticks [STEP]     arc-length ticks every STEP (auto by default)\n"
+    "  --all              all of them\n"
+    "Output: SVG, or PNG with --format png or -o FILE.png; --png FILE writes a PNG as well.\n"
+    "\n"
+    "Examples:\n"
+    "  crspline plot --alpha 0,0.5,1 --cusps --intersections -o figure.svg --png figure.png pts.csv\n"
+    "  crspline plot --centripetal --volumes --comb --title 'Centripetal' curve.json -o c.png\n"
+    "\n" CRSPLINE_CLI_CSV_AND_ERRORS;
+
+constexpr std::string_view demo_details =
+    "The paper's comparison on an embedded control polygon (the README figure's): the uniform\n"
+    "curve loops, the chordal one overshoots, the centripetal one does neither. Writes\n"
+    "DIR/demo.svg and DIR/demo.png (DIR from -o, default the current folder) and prints a\n"
+    "table per parameterization: arc length, cusps, self-intersections, maximum distance to\n"
+    "the control polygon, certified intersection-free or not.\n"
+    "\n"
+    "Example:\n"
+    "  crspline demo -o figures\n";
 
 #undef CRSPLINE_CLI_CURVE_FIELDS
+#undef CRSPLINE_CLI_CSV_AND_ERRORS
 
 constexpr command all_commands[] = {
-    {"eval", "Positions and derivatives at parameter values t", eval_details, &run_eval},
-    {"bezier", "Cubic Bezier control points of every segment", bezier_details, &run_bezier},
-    {"length", "Arc length of the curve and of each segment", length_details, &run_length},
-    {"sample", "Points evenly spaced in t or arc length, or within a tolerance", sample_details, &run_sample},
+    {"eval", "Positions and derivatives at parameter values t", eval_details, &run_eval, "json csv tsv svg"},
+    {"bezier", "Cubic Bezier control points of every segment", bezier_details, &run_bezier,
+     "json csv tsv svg svg-path"},
+    {"length", "Arc length of the curve and of each segment", length_details, &run_length, "json csv tsv"},
+    {"sample", "Points evenly spaced in t or arc length, or within a tolerance", sample_details, &run_sample,
+     "json csv tsv svg"},
+    {"analyze", "Cusps, self-intersections, distances to the polygon, certificate", analyze_details, &run_analyze,
+     "json"},
+    {"plot", "A figure of the curve(s) with overlays, as SVG or PNG", plot_details, nullptr, "svg png"},
+    {"demo", "Uniform vs centripetal vs chordal: the paper's figure and a table", demo_details, nullptr, ""},
 };
 
 // First non-finite number in the output, with its path; empty when none.

@@ -75,8 +75,9 @@ options<D, double> to_options(const curve_spec& c) {
 template <std::size_t D>
 catmull_rom<D, double> make_curve(const curve_spec& c) {
     std::vector<vec<D, double>> pts;
-    pts.reserve(c.points.size());
-    for (const auto& p : c.points) pts.push_back(to_point<D>(p));
+    pts.resize(c.point_count());
+    for (std::size_t i = 0; i < pts.size(); ++i)
+        for (std::size_t k = 0; k < D; ++k) pts[i][k] = c.coords[i * D + k];
     return catmull_rom<D, double>(std::span<const vec<D, double>>(pts), to_options<D>(c));
 }
 

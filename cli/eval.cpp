@@ -22,7 +22,7 @@ output_json points_json(const std::vector<vec<D, double>>& pts) {
 
 }  // namespace
 
-output_json run_eval(const nlohmann::json& input) {
+output_json run_eval(const document& input) {
     const eval_spec spec = parse_eval(input);
     return with_dimension(spec.curve.dimension, [&](auto dim) {
         constexpr std::size_t D = decltype(dim)::value;

@@ -24,8 +24,10 @@ input_text read_input(const std::string& path) {
     if (path.empty() || path == "-") {
         // stdin: read everything, bytes as they are.
         in.name = "<stdin>";
-        in.text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
-        if (std::cin.bad()) throw input_error(in.name + ": cannot read");
+        std::array<char, 1 << 16> buf;
+        std::size_t got;
+        while ((got = std::fread(buf.data(), 1, buf.size(), stdin)) > 0) in.text.append(buf.data(), got);
+        if (std::ferror(stdin)) throw input_error(in.name + ": cannot read: " + std::strerror(errno));
         return in;
     }
     in.name = path;
@@ -51,20 +53,22 @@ namespace {
 // (nlohmann would silently keep the last one).
 class path_tracking_parser final : public nlohmann::json_sax<json> {
 public:
-    explicit path_tracking_parser(const input_text& in) : in_(in) {}
+    explicit path_tracking_parser(const input_text& in, bool fast_points = false)
+        : in_(in), fast_enabled_(fast_points) {}
 
     json root;
-    std::string error;  // set when parsing stopped
+    std::string error;            // set when parsing stopped
+    std::optional<point_set> flat;  // the top-level "points", read flat
 
-    bool null() override { return add(json(nullptr)); }
-    bool boolean(bool v) override { return add(json(v)); }
-    bool number_integer(number_integer_t v) override { return add(json(v)); }
-    bool number_unsigned(number_unsigned_t v) override { return add(json(v)); }
-    bool number_float(number_float_t v, const string_t&) override { return add(json(v)); }
-    bool string(string_t& v) override { return add(json(std::move(v))); }
-    bool binary(binary_t& v) override { return add(json::binary(std::move(v))); }
+    bool null() override { return leave_fast() && add(json(nullptr)); }
+    bool boolean(bool v) override { return leave_fast() && add(json(v)); }
+    bool number_integer(number_integer_t v) override { return number(double(v)) || add(json(v)); }
+    bool number_unsigned(number_unsigned_t v) override { return number(double(v)) || add(json(v)); }
+    bool number_float(number_float_t v, const string_t&) override { return number(v) || add(json(v)); }
+    bool string(string_t& v) override { return leave_fast() && add(json(std::move(v))); }
+    bool binary(binary_t& v) override { return leave_fast() && add(json::binary(std::move(v))); }
 
-    bool start_object(std::size_t) override { return open(json::object()); }
+    bool start_object(std::size_t) override { return leave_fast() && open(json::object()); }
     bool key(string_t& k) override {
         frame& f = stack_.back();
         if (f.value->contains(k)) {
@@ -72,17 +76,52 @@ public:
             return false;
         }
         f.key = k;
+        // The top-level "points": read flat if it turns out well-formed.
+        if (fast_enabled_ && stack_.size() == 1 && k == "points") fast_ = fast::armed;
         return true;
     }
-    bool end_object() override { return close(); }
-    bool start_array(std::size_t) override { return open(json::array()); }
-    bool end_array() override { return close(); }
+    bool end_object() override { return leave_fast() && close(); }
+    bool start_array(std::size_t) override {
+        if (fast_ == fast::armed) {
+            fast_ = fast::on;
+            fast_depth_ = 1;
+            flat.emplace();
+            place(json::array());  // a placeholder: "points" is present
+            return true;
+        }
+        if (fast_ == fast::on && fast_depth_ == 1) {
+            fast_depth_ = 2;
+            fast_count_ = 0;
+            return true;
+        }
+        return leave_fast() && open(json::array());
+    }
+    bool end_array() override {
+        if (fast_ == fast::on) {
+            if (fast_depth_ == 1) {  // the end of "points": all of it was well-formed
+                fast_ = fast::off;
+                return true;
+            }
+            const bool first = fast_points_ == 0;
+            if (fast_count_ > 0 && (first || fast_count_ == flat->dimension)) {
+                if (first) flat->dimension = fast_count_;
+                ++fast_points_;
+                fast_depth_ = 1;
+                return true;
+            }
+            fallback();
+        }
+        return close();
+    }
 
     bool parse_error(std::size_t position, const std::string& last_token,
                      const nlohmann::detail::exception& ex) override {
         if (ex.id == 406) {
             // "number overflow parsing '1e999'": a literal beyond the double range.
-            error = prefix(path_of_next()) + "expected a finite number, got " + last_token;
+            const std::string at = fast_ != fast::on ? path_of_next()
+                                   : fast_depth_ == 1 ? "points[" + std::to_string(fast_points_) + "]"
+                                   : "points[" + std::to_string(fast_points_) + "][" + std::to_string(fast_count_) + "]";
+            error = prefix(at) + "expected a finite number, got " + last_token;
             return false;
         }
         error = in_.name + ": " + line_column(position) + ": " + strip_prefix(ex.what());
@@ -96,6 +135,55 @@ private:
     };
     const input_text& in_;
     std::vector<frame> stack_;
+
+    // Fast path: armed after the top-level key "points", on inside its array
+    // (depth 1: between points, depth 2: inside one point).
+    enum class fast { off, armed, on };
+    bool fast_enabled_ = false;
+    fast fast_ = fast::off;
+    int fast_depth_ = 0;
+    std::size_t fast_count_ = 0;   // coordinates read in the current point
+    std::size_t fast_points_ = 0;  // points completed
+
+    // A number on the fast path; false when it is not (the caller adds it).
+    bool number(double v) {
+        if (fast_ == fast::on && fast_depth_ == 2 && fast_count_ < 4) {
+            flat->coords.push_back(v);
+            ++fast_count_;
+            return true;
+        }
+        leave_fast();
+        return false;
+    }
+
+    // Anything but a number inside a point ends the fast path.
+    bool leave_fast() {
+        if (fast_ == fast::armed) fast_ = fast::off;  // "points" is not an array
+        if (fast_ == fast::on) fallback();
+        return true;
+    }
+
+    // Rebuilds the tree for what the fast path has read so far, so that the
+    // rest of "points" goes into the tree and validation sees all of it.
+    void fallback() {
+        const std::size_t d = flat->dimension;
+        json outer = json::array();
+        for (std::size_t i = 0; i < fast_points_; ++i) {
+            json p = json::array();
+            for (std::size_t k = 0; k < d; ++k) p.push_back(flat->coords[i * d + k]);
+            outer.push_back(std::move(p));
+        }
+        json* o = &(root["points"] = std::move(outer));
+        stack_.push_back({o, {}});
+        if (fast_depth_ == 2) {
+            json p = json::array();
+            for (std::size_t k = fast_points_ * d; k < flat->coords.size(); ++k) p.push_back(flat->coords[k]);
+            o->push_back(std::move(p));
+            stack_.push_back({&o->back(), {}});
+        }
+        flat.reset();
+        fast_ = fast::off;
+    }
 
     // The value just read goes into the innermost container, or is the root.
     json* place(json&& v) {
@@ -168,6 +256,16 @@ json parse_json(const input_text& in) {
     const bool ok = json::sax_parse(in.text, &p);
     if (!ok) throw input_error(p.error.empty() ? in.name + ": not valid JSON" : p.error);
     return std::move(p.root);
+}
+
+document parse_json_document(const input_text& in) {
+    path_tracking_parser p(in, true);
+    const bool ok = json::sax_parse(in.text, &p);
+    if (!ok) throw input_error(p.error.empty() ? in.name + ": not valid JSON" : p.error);
+    document d;
+    d.root = std::move(p.root);
+    if (d.root.is_object()) d.points = std::move(p.flat);
+    return d;
 }
 
 // --- validation helpers ----------------------------------------------------------
@@ -278,15 +376,24 @@ std::vector<double> parse_kb_values(const json& v, const std::string& path, std:
 
 // --- the contract ------------------------------------------------------------------
 
-curve_spec parse_curve(const json& root, std::string_view command, std::initializer_list<std::string_view> extra) {
+curve_spec parse_curve(const document& doc, std::string_view command, std::initializer_list<std::string_view> extra) {
+    const json& root = doc.root;
     if (!root.is_object()) throw input_error("expected a JSON object {\"points\": ...}, got " + describe(root));
     // Unknown fields first: a typo is the likeliest cause of any later error.
     check_fields(root, command, extra);
     curve_spec c;
 
     // points: N x D finite numbers, D in 1..4 and the same for every point.
-    if (!root.contains("points")) throw input_error("missing field 'points'");
-    const json& pts = array(root["points"], "points", "points");
+    std::string points_name = "points";
+    if (doc.points) {
+        c.dimension = doc.points->dimension;
+        c.coords = doc.points->coords;
+        points_name = doc.points->name;
+    } else if (!root.contains("points")) {
+        throw input_error("missing field 'points'");
+    }
+    static const json no_points = json::array();  // flat points were validated when read
+    const json& pts = doc.points ? no_points : array(root["points"], "points", "points");
     for (std::size_t i = 0; i < pts.size(); ++i) {
         const std::string at = index("points", i);
         const json& p = array(pts[i], at, "coordinates");
@@ -296,11 +403,9 @@ curve_spec parse_curve(const json& root, std::string_view command, std::initiali
             fail(at, "expected " + std::to_string(c.dimension) + " coordinates like points[0], got " +
                          std::to_string(p.size()));
         c.dimension = p.size();
-        std::vector<double> q;
-        for (std::size_t k = 0; k < p.size(); ++k) q.push_back(finite_number(p[k], index(at, k)));
-        c.points.push_back(std::move(q));
+        for (std::size_t k = 0; k < p.size(); ++k) c.coords.push_back(finite_number(p[k], index(at, k)));
     }
-    if (pts.empty()) fail("points", "a curve needs at least 2 points, got 0");
+    if (c.point_count() == 0) fail(points_name, "a curve needs at least 2 points, got 0");
 
     // end: "natural" | "reflect" | "closed" | {"start": E, "end": E}.
     if (root.contains("end")) {
@@ -323,9 +428,9 @@ curve_spec parse_curve(const json& root, std::string_view command, std::initiali
             fail("end", expected + describe(e));
         }
     }
-    const std::size_t n = c.points.size(), needed = c.closed ? 3 : 2;
+    const std::size_t n = c.point_count(), needed = c.closed ? 3 : 2;
     if (n < needed)
-        fail("points", std::string(c.closed ? "a closed curve" : "a curve") + " needs at least " +
+        fail(points_name, std::string(c.closed ? "a closed curve" : "a curve") + " needs at least " +
                            std::to_string(needed) + " points, got " + std::to_string(n));
 
     // alpha or grid (not both); default alpha 0.5.
@@ -385,9 +490,10 @@ double parse_accuracy(const json& root) {
     return a;
 }
 
-eval_spec parse_eval(const json& root) {
+eval_spec parse_eval(const document& doc) {
+    const json& root = doc.root;
     eval_spec e;
-    e.curve = parse_curve(root, "eval", {"t", "s", "derivatives", "accuracy"});
+    e.curve = parse_curve(doc, "eval", {"t", "s", "derivatives", "accuracy"});
     if (root.contains("t") && root.contains("s"))
         throw input_error("give 't' (parameter values) or 's' (arc lengths), not both");
     if (root.contains("s")) {
@@ -419,18 +525,22 @@ eval_spec parse_eval(const json& root) {
     return e;
 }
 
-bezier_spec parse_bezier(const json& root) { return {parse_curve(root, "bezier", {})}; }
+bezier_spec parse_bezier(const document& doc) { return {parse_curve(doc, "bezier", {})}; }
 
-length_spec parse_length(const json& root) {
+curve_spec parse_analyze(const document& doc) { return parse_curve(doc, "analyze", {}); }
+
+length_spec parse_length(const document& doc) {
+    const json& root = doc.root;
     length_spec l;
-    l.curve = parse_curve(root, "length", {"accuracy"});
+    l.curve = parse_curve(doc, "length", {"accuracy"});
     l.accuracy = parse_accuracy(root);
     return l;
 }
 
-sample_spec parse_sample(const json& root) {
+sample_spec parse_sample(const document& doc) {
+    const json& root = doc.root;
     sample_spec s;
-    s.curve = parse_curve(root, "sample", {"count", "spacing", "tolerance", "accuracy"});
+    s.curve = parse_curve(doc, "sample", {"count", "spacing", "tolerance", "accuracy"});
     s.accuracy = parse_accuracy(root);
     const bool by_count = root.contains("count"), by_tolerance = root.contains("tolerance");
     if (by_count == by_tolerance)

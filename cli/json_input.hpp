@@ -34,11 +34,34 @@ struct input_text {
 /// Throws input_error "NAME: cannot open: <reason>" and the like.
 input_text read_input(const std::string& path);
 
+/// Points stored flat: point i is coords[i * dimension .. (i + 1) * dimension).
+/// Every coordinate is finite and every point has the same dimension 1..4.
+struct point_set {
+    std::size_t dimension = 0;
+    std::vector<double> coords;
+    std::string name = "points";  ///< what messages call them: "points", or the CSV file's name
+    std::size_t size() const noexcept { return dimension == 0 ? 0 : coords.size() / dimension; }
+};
+
+/// A parsed input: the JSON fields, and the points when they were read flat
+/// (a CSV file, or the JSON "points" array read without building a tree).
+struct document {
+    nlohmann::json root = nlohmann::json::object();
+    std::optional<point_set> points;  ///< when set, root["points"] is ignored
+};
+
 /// Parses JSON text. Syntax errors become "NAME: line L, column C: <what>"
 /// (column counted in bytes, the offending character's own position);
 /// numbers too large for a double become "FIELD: expected a finite number,
 /// got 1e999"; duplicate keys in an object are rejected.
 nlohmann::json parse_json(const input_text& in);
+
+/// Like parse_json, but a well-formed "points" array at the top level (arrays
+/// of 1 to 4 numbers, all the same length) is read into document::points
+/// without building a JSON tree for it: ten million points load in seconds.
+/// Anything else in "points" falls back to the tree, so that validation
+/// reports it exactly as parse_json's tree would.
+document parse_json_document(const input_text& in);
 
 /// One end of an open curve.
 struct end_spec {
@@ -50,7 +73,8 @@ struct end_spec {
 /// Everything needed to build a curve, in run-time form.
 struct curve_spec {
     std::size_t dimension = 0;        ///< 1..4
-    std::vector<std::vector<double>> points;
+    std::vector<double> coords;       ///< the points, flat (point_set layout)
+    std::size_t point_count() const noexcept { return dimension == 0 ? 0 : coords.size() / dimension; }
     std::optional<double> alpha;      ///< none with a grid; default 0.5 otherwise
     std::optional<std::vector<double>> grid;
     bool closed = false;
@@ -99,13 +123,17 @@ inline constexpr std::string_view curve_fields[] = {"points", "alpha", "grid", "
 /// top-level keys the subcommand reads itself; any key in neither list is an
 /// error ("unknown field 'foo'"), so typos do not pass silently. `command`
 /// names the subcommand in the message for a field another subcommand takes.
-curve_spec parse_curve(const nlohmann::json& root, std::string_view command,
+curve_spec parse_curve(const document& doc, std::string_view command,
                        std::initializer_list<std::string_view> extra_fields);
 
-eval_spec parse_eval(const nlohmann::json& root);
-length_spec parse_length(const nlohmann::json& root);
-sample_spec parse_sample(const nlohmann::json& root);
-bezier_spec parse_bezier(const nlohmann::json& root);
+eval_spec parse_eval(const document& doc);
+length_spec parse_length(const document& doc);
+sample_spec parse_sample(const document& doc);
+bezier_spec parse_bezier(const document& doc);
+
+/// `crspline analyze` and `crspline plot` read the curve alone.
+curve_spec parse_analyze(const document& doc);
+
 
 /// Shortest text that reads back to the same double (for messages).
 std::string format_number(double x);

@@ -9,7 +9,7 @@
 
 namespace crspline::cli {
 
-output_json run_length(const nlohmann::json& input) {
+output_json run_length(const document& input) {
     const length_spec spec = parse_length(input);
     return with_dimension(spec.curve.dimension, [&](auto dim) {
         constexpr std::size_t D = decltype(dim)::value;

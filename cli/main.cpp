@@ -1,15 +1,21 @@
 // crspline: the command line front end of the crspline library.
 //
-//   crspline eval   [INPUT]   positions and derivatives at parameter values
-//   crspline bezier [INPUT]   Bézier control points of every segment
+//   crspline eval    [INPUT]  positions and derivatives at parameter values
+//   crspline bezier  [INPUT]  Bézier control points of every segment
+//   crspline length  [INPUT]  arc lengths
+//   crspline sample  [INPUT]  points evenly spaced, or within a tolerance
+//   crspline analyze [INPUT]  cusps, self-intersections, distances, certificate
+//   crspline plot    [INPUT]  a figure (SVG / PNG through cairo)
+//   crspline demo             the paper's comparison: figure and table
 //
-// Reads one JSON object (INPUT, or stdin for '-' or none), writes JSON to
-// stdout. Exit status: 0 on success, 2 on any input or usage error, with one
+// Reads one JSON object or CSV/TSV points (INPUT, or stdin for '-' or none),
+// writes JSON, CSV, SVG or PNG to stdout or to -o FILE. Exit status: 0 on success, 2 on any input or usage error, with one
 // line "crspline: <what, where, which value>" on stderr and nothing on stdout.
 // Status 1 is never used.
 #include <exception>
 #include <iostream>
 #include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +24,8 @@
 
 #include "commands.hpp"
 #include "json_input.hpp"
+#include "options.hpp"
+#include "plot.hpp"
 
 namespace {
 
@@ -56,6 +64,68 @@ int fail(const std::string& message) {
     return exit_usage;
 }
 
+using namespace crspline::cli;
+
+// The options of one subcommand, in groups for its --help.
+void add_options(CLI::App* sub, std::string_view name, cli_options& o) {
+    if (name == "demo") {
+        sub->add_option("-o,--output", o.output, "Folder for demo.svg and demo.png (default: the current folder)");
+        return;
+    }
+    sub->add_option("input", o.input, "Input file (JSON, CSV or TSV); '-' or absent reads stdin");
+    const std::string in = "Input", out = "Output", curve = "Curve", work = "What to compute", fig = "Figure";
+    sub->add_option("--input-format", o.input_format, "json, csv or tsv (default: by extension, else by content)")->group(in);
+    sub->add_option("--columns", o.columns, "CSV columns to read: names (x,y) or numbers from 1 (2,3)")->group(in);
+    sub->add_option("--delimiter", o.delimiter, "CSV delimiter: , ; | : tab space (default: detected)")->group(in);
+    sub->add_option("-o,--output", o.output, "Output file (default: stdout); written whole or not at all")->group(out);
+    std::string formats;
+    for (const command& c : commands())
+        if (c.name == name) formats = std::string(c.formats);
+    sub->add_option("--format", o.format, "Output format: " + formats + " (default: by extension of -o, else the first)")
+        ->group(out);
+    sub->add_option("--alpha", o.alpha,
+                    name == "plot" ? "Knot exponents in [0, 1], one curve each: 0,0.5,1" : "Knot exponent in [0, 1] (default 0.5)")
+        ->group(curve);
+    sub->add_flag("--uniform", o.uniform, "alpha = 0")->group(curve);
+    sub->add_flag("--centripetal", o.centripetal, "alpha = 0.5")->group(curve);
+    sub->add_flag("--chordal", o.chordal, "alpha = 1")->group(curve);
+    sub->add_option("--grid", o.grid, "Explicit knots: a list 0,1,2.5 or a file (instead of alpha)")->group(curve);
+    sub->add_flag("--closed", o.closed, "A closed curve")->group(curve);
+    sub->add_option("--start", o.start, "Start condition: natural, reflect or a tangent dx/dt like 1,0")->group(curve);
+    sub->add_option("--end", o.end, "End condition: natural, reflect or a tangent dx/dt like 1,0")->group(curve);
+    sub->add_option("--tension", o.tension, "Tension in [0, 1]: tangents scaled by 1 - tension")->group(curve);
+    sub->add_option("--kb-tension", o.kb_tension, "Kochanek-Bartels tension per point: a list or a file")->group(curve);
+    sub->add_option("--kb-continuity", o.kb_continuity, "Kochanek-Bartels continuity per point")->group(curve);
+    sub->add_option("--kb-bias", o.kb_bias, "Kochanek-Bartels bias per point")->group(curve);
+    sub->add_flag("--strict", o.strict, "Reject coincident consecutive points")->group(curve);
+    if (name == "eval") {
+        sub->add_option("--t", o.t, "Parameter values: a list 0,0.5,1 or a file")->group(work);
+        sub->add_option("--s", o.s, "Arc lengths from the start instead of t: a list or a file")->group(work);
+        sub->add_option("--derivatives", o.derivatives, "Orders to evaluate, 0..3: 0,1")->group(work);
+    }
+    if (name == "sample") {
+        sub->add_option("--count", o.count, "Number of points, >= 2")->group(work);
+        sub->add_option("--spacing", o.spacing, "t or arc_length (with --count)")->group(work);
+        sub->add_option("--tolerance", o.tolerance, "Largest distance of the polyline to the curve")->group(work);
+    }
+    if (name == "eval" || name == "length" || name == "sample")
+        sub->add_option("--accuracy", o.accuracy, "Relative accuracy of arc lengths (default 1e-12)")->group(work);
+    if (name == "plot") {
+        sub->add_option("--title", o.title, "Figure title")->group(fig);
+        sub->add_option("--size", o.size, "Figure size in pixels, WIDTHxHEIGHT (default 900x640)")->group(fig);
+        sub->add_option("--png", o.png, "Also write a PNG to this file")->group(fig);
+        sub->add_flag("--cusps", o.cusps, "Mark cusps")->group(fig);
+        sub->add_flag("--intersections", o.intersections, "Mark self-intersections")->group(fig);
+        sub->add_flag("--volumes", o.volumes, "Draw the paper's bounding volumes")->group(fig);
+        sub->add_flag("--comb", o.comb_on, "Draw a curvature comb")->group(fig);
+        sub->add_option("--comb-scale", o.comb, "Length of a comb tooth per unit curvature (default: auto)")->group(fig);
+        sub->add_flag("--handles", o.handles, "Draw the Bezier handles")->group(fig);
+        sub->add_flag("--ticks", o.ticks_on, "Draw arc-length ticks")->group(fig);
+        sub->add_option("--tick-step", o.ticks, "Arc length between ticks (default: auto)")->group(fig);
+        sub->add_flag("--all", o.all_overlays, "All overlays")->group(fig);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -63,7 +133,7 @@ int main(int argc, char** argv) {
 
     CLI::App app{std::string("crspline ") + crspline::version +
                  ": cubic Catmull-Rom curves through points in 1 to 4 dimensions. "
-                 "Reads one JSON object, writes JSON to stdout.",
+                 "Reads JSON or CSV points, writes JSON, CSV, SVG or PNG.",
                  "crspline"};
     app.set_version_flag("--version", std::string("crspline ") + crspline::version, "Print the version and exit");
     app.require_subcommand(1);
@@ -71,14 +141,17 @@ int main(int argc, char** argv) {
         "Example:\n"
         "  echo '{\"points\": [[0, 0], [1, 1], [2, 0]], \"t\": [0, 0.5, 1]}' | crspline eval\n"
         "  crspline bezier curve.json\n"
-        "Run 'crspline COMMAND --help' for the input fields of a command and its example.\n"
-        "Exit status: 0 on success, 2 on bad input (one line on stderr naming the field).");
+        "  crspline plot --alpha 0,0.5,1 --cusps --intersections points.csv -o figure.png\n"
+        "  crspline demo\n"
+        "Run 'crspline COMMAND --help' for the input fields and options of a command and examples.\n"
+        "Exit status: 0 on success, 2 on bad input (one line on stderr naming the file and line, or\n"
+        "the field or option).");
 
-    std::string input = "-";
+    cli_options o;
     std::vector<std::pair<CLI::App*, const command*>> subcommands;
     for (const command& c : commands()) {
         CLI::App* sub = app.add_subcommand(std::string(c.name), std::string(c.summary));
-        sub->add_option("input", input, "JSON input file; '-' or absent reads stdin");
+        add_options(sub, c.name, o);
         sub->footer(std::string(c.details));
         subcommands.emplace_back(sub, &c);
     }
@@ -94,15 +167,26 @@ int main(int argc, char** argv) {
     for (const auto& [sub, c] : subcommands)
         if (sub->parsed()) chosen = c;
     if (!chosen) return fail("no command given (see 'crspline --help')");
+    o.command = std::string(chosen->name);
 
+    std::optional<loaded_input> in;
     try {
+        if (chosen->name == "demo") return run_demo(o);
+        if (chosen->name == "plot") return run_plot(o);
         // The whole output is built before anything is written.
-        const std::string text = render(chosen->run(parse_json(read_input(input))));
-        std::cout << text << std::flush;
-        if (!std::cout) return fail("cannot write the output");
+        std::vector<std::string> formats;
+        for (std::size_t b = 0, e; b < chosen->formats.size(); b = e + 1) {
+            e = chosen->formats.find(' ', b);
+            if (e == std::string_view::npos) e = chosen->formats.size();
+            formats.emplace_back(chosen->formats.substr(b, e - b));
+        }
+        const std::string format = output_format(o, formats, "json");
+        in = load_input(o);
+        const output_json out = chosen->run(in->doc);
+        write_output(o.output, convert_output(chosen->name, format, out, in->doc));
         return 0;
     } catch (const input_error& e) {
-        return fail(e.what());
+        return fail(in ? rename_fields(e.what(), *in) : std::string(e.what()));
     } catch (const crspline::invalid_input& e) {  // what() names the index and the value
         return fail(e.what());
     } catch (const crspline::out_of_domain& e) {

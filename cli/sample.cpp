@@ -12,7 +12,7 @@
 
 namespace crspline::cli {
 
-output_json run_sample(const nlohmann::json& input) {
+output_json run_sample(const document& input) {
     const sample_spec spec = parse_sample(input);
     return with_dimension(spec.curve.dimension, [&](auto dim) {
         constexpr std::size_t D = decltype(dim)::value;
