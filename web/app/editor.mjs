@@ -216,7 +216,8 @@ function frame(now) {
 function draw() {
   const dpr = resize();
   ctx.setTransform(1, 0, 0, 1, 0, 0);
-  ctx.clearRect(0, 0, canvas.width, canvas.height);
+  ctx.fillStyle = '#fff';
+  ctx.fillRect(0, 0, canvas.width, canvas.height);
   ctx.setTransform(dpr * view.s, 0, 0, dpr * view.s, dpr * view.ox, dpr * view.oy);
   const px = 1 / view.s;  // one CSS pixel in world units
   ctx.lineJoin = 'round';

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# All web tests: the WASM module in node (test/module.test.mjs) and the
+# editor in headless Chromium (test/browser.test.mjs), with node's test
+# runner (TAP output). Builds the module first if it is missing or stale;
+# installs playwright-core from package-lock.json if node_modules lacks it.
+# Needs: emscripten (apt), chromium (apt, /usr/bin/chromium or $CHROMIUM), node >= 18, npm.
+set -euo pipefail
+cd "$(dirname "$0")"
+[[ -d node_modules/playwright-core ]] || npm ci --no-audit --no-fund
+node -e "import('./test/support.mjs').then((m) => m.ensureBuilt())"
+exec node --test "$@" test/module.test.mjs test/browser.test.mjs
