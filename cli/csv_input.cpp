@@ -185,7 +185,7 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
     return out;
 }
 
-nlohmann::json number_list(const std::string& option, const std::string& text, bool allow_null) {
+nlohmann::json number_list(const std::string& option, const std::string& text, bool allow_null, bool allow_files) {
     using nlohmann::json;
     // 1. A list written on the command line.
     {
@@ -208,8 +208,10 @@ nlohmann::json number_list(const std::string& option, const std::string& text, b
         if (ok) return list;
     }
     // 2. A file: a JSON array, or numbers separated by commas, blanks or lines.
+    if (!allow_files) throw input_error(option + ": expected a list of numbers like 0,1,2.5, got '" + text + "'");
     input_text in;
     try {
+        if (text.empty() || text == "-") throw input_error("-: not a file name");
         in = read_input(text);
     } catch (const input_error& e) {
         const std::string why = e.what();

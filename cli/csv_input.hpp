@@ -41,6 +41,8 @@ std::optional<double> parse_number(std::string_view text);
 /// comment lines). `option` names the option in messages. "null" is kept as
 /// null when allow_null. Returned as a JSON array so that the contract's own
 /// validation checks it like the JSON field (non-finite values included).
-nlohmann::json number_list(const std::string& option, const std::string& text, bool allow_null = false);
+/// Without allow_files, text that is not a list is an error (the fuzzer).
+nlohmann::json number_list(const std::string& option, const std::string& text, bool allow_null = false,
+                           bool allow_files = true);
 
 }  // namespace crspline::cli

@@ -301,6 +301,7 @@ void draw(cairo_t* cr, const figure& f) {
         const auto& e = entries[i];
         const double y = best_y + 14 + 18.0 * double(i), x = best_x + 8;
         set(cr, e.colour);
+        cairo_new_path(cr);
         switch (e.kind) {
             case 0:
                 cairo_set_line_width(cr, 2.2);
@@ -316,6 +317,7 @@ void draw(cairo_t* cr, const figure& f) {
                 cairo_stroke(cr);
                 cairo_set_dash(cr, nullptr, 0, 0);
                 set(cr, black);
+                cairo_new_path(cr);
                 cairo_arc(cr, x + 12, y, 3.5, 0, 2 * M_PI);
                 cairo_fill(cr);
                 break;
