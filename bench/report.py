@@ -1,0 +1,152 @@
+#!/usr/bin/env python3
+"""Table of medians and ratios from one benchmark run (standard library only).
+
+    report.py CPP.json [JS.json] > table.md
+
+CPP.json: Google Benchmark's --benchmark_out (with repetitions: the
+`_median` aggregates are used). JS.json: bench/js/threejs_bench.mjs output.
+Times are CPU time per item (the machine is shared: wall time includes
+other processes' turns), and every ratio compares numbers of the same run.
+"""
+import json
+import sys
+
+
+def load_cpp(path):
+    with open(path) as f:
+        data = json.load(f)
+    rows = {}
+    for b in data["benchmarks"]:
+        if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
+            continue
+        name = b["run_name"]
+        if b.get("run_type") == "iteration" and name in rows and rows[name].get("aggregate_name") == "median":
+            continue
+        rows[name] = b
+    return data.get("context", {}), rows
+
+
+def fmt_ns(ns):
+    if ns >= 1e6:
+        return f"{ns / 1e6:.3g} ms"
+    if ns >= 1e3:
+        return f"{ns / 1e3:.3g} µs"
+    return f"{ns:.3g} ns"
+
+
+def main():
+    ctx, rows = load_cpp(sys.argv[1])
+    js = {}
+    if len(sys.argv) > 2:
+        with open(sys.argv[2]) as f:
+            js = json.load(f)
+
+    def ns(name):  # CPU ns per item
+        b = rows.get(name)
+        return 1e9 / b["items_per_second"] if b and b.get("items_per_second") else None
+
+    def ctr(name, key):
+        b = rows.get(name)
+        return b.get(key) if b else None
+
+    out = []
+    p = out.append
+    p(f"Machine: {ctx.get('num_cpus', '?')} CPUs at {ctx.get('mhz_per_cpu', '?')} MHz, "
+      f"caches {', '.join(str(c['size'] // 1024) + ' KiB L' + str(c['level']) for c in ctx.get('caches', []) if c['type'] != 'Instruction')}; "
+      f"load average {', '.join(f'{x:.1f}' for x in ctx.get('load_avg', []))}; {ctx.get('date', '')}")
+    reps = next((b.get("repetitions") for b in rows.values() if b.get("repetitions")), 1)
+    p(f"Medians of {reps} repetitions, CPU time per item.")
+    p("")
+    p("| case | per item | accuracy / counters |")
+    p("|---|---:|---|")
+    per = {"construct": "control point", "arc_length": "segment", "tessellate": "segment",
+           "nearest": "query", "nearest_scaling": "query", "t_at_arc_length": "query"}
+    for name, b in rows.items():
+        t = ns(name)
+        if t is None:
+            continue
+        unit = next((v for k, v in per.items() if name.startswith(k)), "point")
+        extra = []
+        for k, v in b.items():
+            if k in ("items_per_second", "bytes_per_second") or not isinstance(v, (int, float)):
+                continue
+            if k in ("real_time", "cpu_time", "iterations", "repetitions", "repetition_index",
+                     "threads", "family_index", "per_family_instance_index"):
+                continue
+            extra.append(f"{k}={v:.3g}")
+        p(f"| {name} | {fmt_ns(t)}/{unit} | {' '.join(extra)} |")
+    for name, v in js.get("results", {}).items():
+        if isinstance(v, dict) and "median_ns" in v:
+            extra = f"rel_err={v['rel_err']:.3g} (arcLengthDivisions={v['arcLengthDivisions']})" if "rel_err" in v else ""
+            p(f"| {name} (node {js.get('node')}, three {js.get('three')}) | {fmt_ns(v['median_ns'])}/point | {extra} |")
+    if "wasm_error" in js.get("results", {}):
+        p(f"| threejs_*/wasm | not run | {js['results']['wasm_error']} |")
+
+    p("")
+    p("| target | measured (same run) | goal | status |")
+    p("|---|---:|---:|---|")
+
+    def target(label, value, goal, ok, how=""):
+        if value is None:
+            p(f"| {label} | n/a | {goal} | not measured |")
+            return
+        p(f"| {label} | {value} | {goal} | {'met' if ok else 'MISSED' + (' ' + how if how else '')} |")
+
+    es, fl, ms = ns("eval_sorted/crspline"), ns("store_floor"), ns("store_floor/memset")
+    if es and ms:
+        r = ms / es
+        target("eval_sorted / store_floor/memset throughput", f"{r:.2f}", ">= 0.8", r >= 0.8, f"by {0.8 / r:.2f}x")
+    if es and fl:
+        r = fl / es
+        target("eval_sorted / store_floor (plain loop) throughput", f"{r:.2f}", ">= 0.8", r >= 0.8, f"by {0.8 / r:.2f}x")
+    eb = ns("eval_sorted/boost")
+    if es and eb:
+        target("eval_sorted speed-up over Boost", f"{eb / es:.1f}x", ">= 10x", eb / es >= 10, f"by {10 / (eb / es):.2f}x")
+    er, erb = ns("eval_random/crspline"), ns("eval_random/boost")
+    if er and erb:
+        target("eval_random speed-up over Boost", f"{erb / er:.1f}x", ">= 10x", erb / er >= 10, f"by {10 / (erb / er):.2f}x")
+    ds = ns("deriv_sorted/crspline")
+    if ds and es:
+        target("deriv_sorted / eval_sorted time", f"{ds / es:.2f}", "<= 1.2", ds / es <= 1.2, f"by {ds / es / 1.2:.2f}x")
+    for n in (1000, 1000000):
+        c, cb = ns(f"construct/crspline/{n}"), ns(f"construct/boost/{n}")
+        if c and cb:
+            target(f"construct {n} points: crspline / Boost time per point", f"{c / cb:.2f}", "<= 1",
+                   c / cb <= 1, f"by {c / cb:.2f}x")
+    ta = ns("t_at_arc_length")
+    if ta:
+        err = ctr("t_at_arc_length", "rel_err")
+        target("t_at_arc_length per query (rel. error)", f"{ta:.0f} ns ({err:.2g})", "< 100 ns at 1e-12",
+               ta < 100 and err is not None and err <= 1e-12, f"by {ta / 100:.2f}x")
+    ef, ff, efb = ns("eval_sorted_float/crspline"), ns("store_floor_float"), ns("eval_sorted_float/boost")
+    if ef and ff:
+        p(f"| (float) eval_sorted_float / store_floor_float throughput | {ff / ef:.2f} | (info) | |")
+    if ef and efb:
+        p(f"| (float) speed-up over Boost | {efb / ef:.1f}x | (info) | |")
+    us, ug = ns("uniform_segment/crspline"), ns("uniform_segment/glm")
+    if us and ug:
+        p(f"| uniform_segment: speed-up over glm | {ug / us:.2f}x | (info) | |")
+    for case in ("threejs_getPoint", "threejs_getPointAt"):
+        v = js.get("results", {}).get(f"{case}/three")
+        nat = ns(f"{case}/crspline")
+        w = js.get("results", {}).get(f"{case}/wasm")
+        if v and nat:
+            p(f"| {case}: three.js / native crspline time | {v['median_ns'] / nat:.1f}x | (info) | |")
+        if v and w:
+            p(f"| {case}: three.js / crspline WASM time | {v['median_ns'] / w['median_ns']:.1f}x | (info) | |")
+
+    sc = [(int(k.split("/")[1]), k) for k in rows if k.startswith(("nearest_scaling/", "nearest/"))]
+    if sc:
+        p("")
+        p("nearest_index scaling (10^5 queries within about one step of the curve):")
+        p("")
+        p("| segments | per query | nodes / query | segments solved / query | per segment solved |")
+        p("|---:|---:|---:|---:|---:|")
+        for n, k in sorted(sc):
+            t, s = ns(k), ctr(k, "solved_per_query")
+            p(f"| {n} | {fmt_ns(t)} | {ctr(k, 'nodes_per_query'):.1f} | {s:.2f} | {fmt_ns(t / s)} |")
+    print("\n".join(out))
+
+
+if __name__ == "__main__":
+    main()

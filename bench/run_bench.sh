@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The whole benchmark run (`./run bench`): Release build of bench/ (the
+# project's normal flags, no -march), the Google Benchmark suite with
+# repetitions, the three.js peer in node, then the table of medians and ratios.
+#   apt: libbenchmark-dev libboost-math-dev libglm-dev nodejs npm
+#   npm: three (bench/js/package.json, installed with `npm ci`)
+# Environment: BUILD (default build-bench/bench), REPS (default 5),
+# FILTER (a --benchmark_filter regex, default all).
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+cd "$root"
+build="${BUILD:-build-bench/bench}"
+reps="${REPS:-5}"
+results="bench/results"
+mkdir -p "$results"
+
+cmake -S bench -B "$build" -DCMAKE_BUILD_TYPE=Release
+cmake --build "$build" -j2
+if [[ ! -d bench/js/node_modules/three ]]; then (cd bench/js && npm ci --no-audit --no-fund); fi
+
+stamp="$(date -u +%Y%m%dT%H%M%SZ)"
+"$build/crspline_bench" --dump-points="$results/walk1000.json"
+"$build/crspline_bench" --benchmark_repetitions="$reps" --benchmark_min_time=0.2 \
+    --benchmark_filter="${FILTER:-.}" \
+    --benchmark_out="$results/cpp-$stamp.json" --benchmark_out_format=json
+node bench/js/threejs_bench.mjs "$results/walk1000.json" "$results/js-$stamp.json" "$reps"
+python3 bench/report.py "$results/cpp-$stamp.json" "$results/js-$stamp.json" | tee "$results/table-$stamp.md"
+cp "$results/cpp-$stamp.json" "$results/latest-cpp.json"
+cp "$results/js-$stamp.json" "$results/latest-js.json"
+cp "$results/table-$stamp.md" "$results/latest-table.md"
