@@ -32,6 +32,7 @@ const state = {
 };
 const view = { s: 1, ox: 0, oy: 0 };  // screen = world * s + o (CSS pixels)
 let version = 0;                      // bumps on every change of the curve
+let drag = null;                      // { index } or { pan: true, x, y }
 const undoStack = [], redoStack = [];
 const UNDO_LIMIT = 200;
 
@@ -73,8 +74,10 @@ function shiftCaches(k, delta) {
   dirty.segments = moved;
 }
 
+let importMessage = '';
 function changed() {
   version++;
+  importMessage = '';
   requestFrame();
 }
 
@@ -157,8 +160,14 @@ function send(req) {
   }
 }
 
+// While a point is dragged, a curve whose whole-curve overlays took longer
+// than this (ms) waits for the release instead of keeping a core busy.
+const DRAG_GLOBAL_BUDGET = 50;
+let deferredGlobal = false;
 function requestGlobal() {
   if (!spline) { global = null; settle(); return; }
+  if (drag && !drag.pan && global && global.ms > DRAG_GLOBAL_BUDGET) { deferredGlobal = true; return; }
+  deferredGlobal = false;
   const req = {
     version,
     points: state.pts.slice(),
@@ -182,6 +191,7 @@ const colors = {
 };
 let frameRequested = false;
 const frameTimes = [];     // work per frame (ms): JS + WASM + canvas calls
+const curveTimes = [];     // of which the curve and per-segment caches (WASM)
 const frameIntervals = []; // time between frames while dragging (ms)
 let lastFrameAt = 0;
 
@@ -203,10 +213,12 @@ function frame(now) {
   frameRequested = false;
   const t0 = performance.now();
   rebuild();
+  const tm = performance.now();
   draw();
   const t1 = performance.now();
   frameTimes.push(t1 - t0);
-  if (frameTimes.length > 600) frameTimes.shift();
+  curveTimes.push(tm - t0);
+  if (frameTimes.length > 600) { frameTimes.shift(); curveTimes.shift(); }
   if (drag && lastFrameAt) { frameIntervals.push(now - lastFrameAt); if (frameIntervals.length > 600) frameIntervals.shift(); }
   lastFrameAt = drag ? now : 0;
   updateStatus(t1 - t0);
@@ -237,7 +249,7 @@ function draw() {
     path.moveTo(P[0], P[1]);
     for (let i = 1; i < n; ++i) path.lineTo(P[2 * i], P[2 * i + 1]);
     if (state.opts.closed) path.closePath();
-    ctx.setLineDash([4 * px, 4 * px]);
+    if (n <= 2000) ctx.setLineDash([4 * px, 4 * px]);  // dashing 10^4 edges costs more than the curve
     ctx.strokeStyle = colors.polygon;
     ctx.lineWidth = px;
     ctx.stroke(path);
@@ -254,7 +266,9 @@ function draw() {
       path.bezierCurveTo(bez[k + 2], bez[k + 3], bez[k + 4], bez[k + 5], bez[k + 6], bez[k + 7]);
     }
     ctx.strokeStyle = colors.curve;
-    ctx.lineWidth = 2.5 * px;
+    // Past a few thousand segments a 1-pixel line (Skia's hairline path)
+    // rasterizes several times faster than a thick stroke.
+    ctx.lineWidth = (nb > 2000 ? 1 : 2.5) * px;
     ctx.stroke(path);
   }
   if (o.handles && nb > 0) {
@@ -288,11 +302,15 @@ function draw() {
   }
   // Control points.
   if (n > 0) {
-    const r = (n > 2000 ? 1.5 : 4) * px;
-    const path = new Path2D();
-    for (let i = 0; i < n; ++i) path.rect(P[2 * i] - r, P[2 * i + 1] - r, 2 * r, 2 * r);
     ctx.fillStyle = colors.point;
-    ctx.fill(path);
+    if (n > 2000) {
+      // Many points: fillRect each (one path of 10^4 squares fills slower).
+      for (let i = 0; i < n; ++i) ctx.fillRect(P[2 * i] - px, P[2 * i + 1] - px, 2 * px, 2 * px);
+    } else {
+      const r = 4 * px, path = new Path2D();
+      for (let i = 0; i < n; ++i) path.rect(P[2 * i] - r, P[2 * i + 1] - r, 2 * r, 2 * r);
+      ctx.fill(path);
+    }
     if (state.selected >= 0 && state.selected < n) {
       const s = state.selected;
       ctx.strokeStyle = colors.selected;
@@ -405,7 +423,7 @@ function updateStatus(ms) {
   if (!spline) {
     cert.textContent = n < 2 ? 'click to add points' : '—';
   } else if (!globalCurrent()) {
-    cert.textContent = 'certifying…';
+    cert.textContent = deferredGlobal ? 'certificate after release' : 'certifying…';
   } else if (global.error) {
     cert.textContent = `error: ${global.error}`;
   } else if (global.cert.certified) {
@@ -419,7 +437,7 @@ function updateStatus(ms) {
     cert.className = c.intersects ? 'bad' : '';
   }
   $('status-frame').textContent = `frame ${fmt(ms, 1)} ms`;
-  $('message').textContent = splineError ?? '';
+  $('message').textContent = importMessage || splineError || '';
   const d = document.body.dataset;
   d.points = n;
   d.segments = nseg;
@@ -519,7 +537,6 @@ function insertAfter(k) {
 // ---------------------------------------------------------------------------
 // Pointer and keyboard
 // ---------------------------------------------------------------------------
-let drag = null;  // { index } or { pan: true, x, y }
 function toWorld(e) {
   const r = canvas.getBoundingClientRect();
   const sx = e.clientX - r.left - canvas.clientLeft, sy = e.clientY - r.top - canvas.clientTop;
@@ -538,7 +555,7 @@ function hit(x, y) {
 canvas.addEventListener('contextmenu', (e) => e.preventDefault());
 canvas.addEventListener('pointerdown', (e) => {
   canvas.focus();
-  canvas.setPointerCapture(e.pointerId);
+  try { canvas.setPointerCapture(e.pointerId); } catch { /* synthetic events have no active pointer */ }
   if (e.button === 1 || e.button === 2) { drag = { pan: true, x: e.clientX, y: e.clientY }; return; }
   if (e.button !== 0) return;
   const [x, y] = toWorld(e);
@@ -575,7 +592,13 @@ canvas.addEventListener('pointermove', (e) => {
   const [x, y] = toWorld(e);
   movePoint(drag.index, x, y);
 });
-const endDrag = () => { if (drag) { drag = null; lastFrameAt = 0; requestFrame(); } };
+const endDrag = () => {
+  if (!drag) return;
+  drag = null;
+  lastFrameAt = 0;
+  if (deferredGlobal) requestGlobal();
+  requestFrame();
+};
 canvas.addEventListener('pointerup', endDrag);
 canvas.addEventListener('pointercancel', endDrag);
 canvas.addEventListener('wheel', (e) => {
@@ -673,9 +696,9 @@ async function importFile(file) {
     syncControls();
     setPoints(points);
     fit();
-    $('message').textContent = '';
   } catch (e) {
-    $('message').textContent = `import ${file.name}: ${e.message}`;
+    importMessage = `import ${file.name}: ${e.message}`;
+    requestFrame();
   }
 }
 $('import').addEventListener('change', (e) => { if (e.target.files[0]) importFile(e.target.files[0]); e.target.value = ''; });
@@ -727,7 +750,7 @@ function loadStress(n) {
 // For tests and the console: window.editor
 // ---------------------------------------------------------------------------
 let idleWaiters = [];
-function isIdle() { return !frameRequested && builtVersion === version && (!spline || globalCurrent()) && !workerBusy; }
+function isIdle() { return !frameRequested && !drag && builtVersion === version && (!spline || globalCurrent()) && !workerBusy; }
 function settle() {
   if (!isIdle()) return;
   const w = idleWaiters;
@@ -754,8 +777,8 @@ window.editor = {
   cusps() { rebuild(); return cache.cusps ? cache.cusps.filter(Boolean).flatMap((c) => Array.from(c)) : null; },
   global() { return global; },
   idle() { return new Promise((resolve) => { idleWaiters.push(resolve); requestFrame(); }); },
-  resetFrameStats() { frameTimes.length = 0; frameIntervals.length = 0; },
-  frameStats() { return { work: quantiles(frameTimes), interval: quantiles(frameIntervals) }; },
+  resetFrameStats() { frameTimes.length = 0; curveTimes.length = 0; frameIntervals.length = 0; },
+  frameStats() { return { work: quantiles(frameTimes), curve: quantiles(curveTimes), interval: quantiles(frameIntervals) }; },
   loadStress,
   loadDemo,
 };
