@@ -1,0 +1,192 @@
+"""Type stubs of the crspline package (the public API)."""
+from collections.abc import Mapping, Sequence
+from typing import Any, Literal, TypedDict, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+__all__: list[str]
+
+uniform: float
+centripetal: float
+chordal: float
+default_accuracy: float
+max_dimension: int
+
+class InvalidInput(ValueError):
+    """Bad input: non-finite coordinates, too few points, bad alpha or grid, ... (a ValueError)."""
+
+class OutOfDomain(ValueError):
+    """A parameter t or arc length s outside the curve's domain (a ValueError)."""
+
+_Float = np.floating[Any]
+_Array = npt.NDArray[_Float]
+_ArrayLike = npt.ArrayLike
+_Tangent = Union[float, Sequence[float], npt.NDArray[Any]]
+_End = Union[Literal["natural", "reflect"], _Tangent]
+_EndConditions = Union[
+    Literal["natural", "closed", "reflect"],
+    tuple[_End, _End],
+    Sequence[_End],
+    Mapping[str, _End],
+    npt.NDArray[Any],
+]
+
+class ArcLengthSample(TypedDict):
+    t: _Array
+    s: _Array
+    points: _Array
+
+class Polyline(TypedDict):
+    points: _Array
+    t: _Array
+
+class Nearest(TypedDict):
+    t: Union[_Array, _Float]
+    distance_sq: Union[_Array, _Float]
+    segment: Union[npt.NDArray[np.int64], np.int64]
+    point: _Array
+
+class Frames(TypedDict):
+    position: _Array
+    tangent: _Array
+    normal: _Array
+    binormal: _Array
+
+class Intersections(TypedDict):
+    segments: npt.NDArray[np.int64]
+    u: _Array
+    t: _Array
+    point: _Array
+    distance: _Array
+    folds: npt.NDArray[np.int64]
+    complete: bool
+    any: bool
+
+class Analysis(TypedDict):
+    segments: list[dict[str, Any]]
+    cusp_t: _Array
+    has_cusp: bool
+    has_self_intersection: bool
+    intersections: Union[Intersections, None]
+
+class Certificate(TypedDict):
+    certified: bool
+    failed_rule: Literal["none", "not_centripetal", "coincident_points", "adjacent_angle", "overlapping_boxes"]
+    vertex: Union[int, None]
+    segment: Union[int, None]
+    segments: Union[tuple[int, int], None]
+    angle: float
+    detail: str
+    intersects: Union[bool, None]
+    search: Union[Intersections, None]
+
+class CatmullRom:
+    """A cubic Catmull-Rom curve. Default alpha = 0.5 (centripetal), NOT uniform as in `splines`."""
+
+    def __init__(
+        self,
+        points: _ArrayLike,
+        *,
+        alpha: Union[float, None] = 0.5,
+        grid: Union[_ArrayLike, None] = None,
+        endconditions: _EndConditions = "natural",
+        tension: float = 0.0,
+        strict: bool = False,
+    ) -> None: ...
+    @property
+    def grid(self) -> _Array:
+        """The knots (read-only)."""
+    @property
+    def points(self) -> _Array:
+        """The control points, shape (N, dim) (read-only)."""
+    @property
+    def dim(self) -> int:
+        """Dimension of the points."""
+    @property
+    def closed(self) -> bool:
+        """True for a closed curve."""
+    @property
+    def dtype(self) -> np.dtype[Any]:
+        """float32 or float64."""
+    @property
+    def segment_count(self) -> int:
+        """Number of cubic segments."""
+    @property
+    def domain(self) -> tuple[float, float]:
+        """(t_min, t_max)."""
+    def evaluate(self, t: _ArrayLike, n: int = 0) -> _Array:
+        """Position or n-th derivative at t; shape t.shape + (dim,)."""
+    def __call__(self, t: _ArrayLike, n: int = 0) -> _Array:
+        """Same as evaluate."""
+    def evaluate_unchecked(self, t: _ArrayLike, n: int = 0) -> _Array:
+        """Like evaluate, extrapolating outside the domain."""
+    def to_bezier(self) -> _Array:
+        """Bézier control points, shape (segment_count, 4, dim)."""
+    def tangents(self) -> _Array:
+        """dx/dt at both ends of every segment, shape (segment_count, 2, dim)."""
+    def segment_index(self, t: _ArrayLike) -> Union[npt.NDArray[np.int64], np.int64]:
+        """Segment owning each t."""
+    def arc_length(
+        self, t0: Union[float, None] = None, t1: Union[float, None] = None, *, accuracy: float = 1e-12
+    ) -> float:
+        """Arc length over [t0, t1] (default: the whole curve)."""
+    def arc_length_at(self, t: _ArrayLike, *, accuracy: float = 1e-12) -> Union[_Array, _Float]:
+        """Arc length from the start to t."""
+    def t_at_arc_length(self, s: _ArrayLike, *, accuracy: float = 1e-12) -> Union[_Array, _Float]:
+        """Parameter at arc length s."""
+    def knot_arc_lengths(self, *, accuracy: float = 1e-12) -> _Array:
+        """Cumulative arc length at every knot."""
+    def sample(
+        self, n: int, *, by: Literal["arc_length", "t"] = "arc_length", accuracy: float = 1e-12
+    ) -> dict[str, _Array]:
+        """n points evenly spaced in arc length ({'t', 's', 'points'}) or in t ({'t', 'points'})."""
+    def tessellate(self, tolerance: Union[float, None] = None) -> Polyline:
+        """Adaptive polyline within tolerance of the curve."""
+    def bounding_box(self, *, tight: bool = True) -> _Array:
+        """[lo, hi], shape (2, dim)."""
+    def nearest(self, points: _ArrayLike) -> Nearest:
+        """Nearest curve point to each query point."""
+    def curvature(self, t: _ArrayLike) -> Union[_Array, _Float]:
+        """Curvature at t."""
+    def signed_curvature(self, t: _ArrayLike) -> Union[_Array, _Float]:
+        """Signed curvature at t (2-D)."""
+    def torsion(self, t: _ArrayLike) -> Union[_Array, _Float]:
+        """Torsion at t (3-D)."""
+    def frames(
+        self,
+        t: _ArrayLike,
+        *,
+        kind: Literal["rotation_minimizing", "frenet"] = "rotation_minimizing",
+        initial_normal: Union[_ArrayLike, None] = None,
+    ) -> Frames:
+        """Moving frames at t."""
+    def analyze(self, *, intersections: bool = True) -> Analysis:
+        """Per-segment analysis and whole-curve intersections."""
+    def intersections(self, tolerance: Union[float, None] = None) -> Intersections:
+        """Every meeting of the curve with itself."""
+    def certify_intersection_free(
+        self,
+        *,
+        safe_angle: Union[float, None] = None,
+        search_on_failure: bool = True,
+        tolerance: Union[float, None] = None,
+    ) -> Certificate:
+        """Section 5's certificate that the curve does not intersect itself."""
+
+class KochanekBartels(CatmullRom):
+    """A Kochanek-Bartels (TCB) spline; alpha=None (default) is uniform, as in `splines`."""
+
+    def __init__(
+        self,
+        vertices: _ArrayLike,
+        grid: Union[_ArrayLike, None] = None,
+        *,
+        tcb: _ArrayLike = (0, 0, 0),
+        alpha: Union[float, None] = None,
+        endconditions: _EndConditions = "natural",
+    ) -> None: ...
+    @property
+    def tcb(self) -> _Array:
+        """The (tension, continuity, bias) triples, one per interior vertex (read-only)."""

@@ -272,3 +272,27 @@ def test_version_and_constants():
     for name in dir(crspline.CatmullRom):
         if not name.startswith("_"):
             assert getattr(crspline.CatmullRom, name).__doc__, name
+
+
+def test_stubs_cover_every_public_name():
+    import ast
+    import pathlib
+
+    folder = pathlib.Path(crspline.__file__).parent
+    stub = ast.parse((folder / "__init__.pyi").read_text())
+    top = {n.name for n in stub.body if isinstance(n, (ast.ClassDef, ast.FunctionDef))}
+    top |= {t.id for n in stub.body if isinstance(n, ast.AnnAssign) for t in [n.target]}
+    assert set(crspline.__all__) <= top, set(crspline.__all__) - top
+    classes = {n.name: n for n in stub.body if isinstance(n, ast.ClassDef)}
+    for cls in (crspline.CatmullRom, crspline.KochanekBartels):
+        members = {n.name for n in classes[cls.__name__].body if isinstance(n, ast.FunctionDef)}
+        if cls is crspline.KochanekBartels:
+            members |= {n.name for n in classes["CatmullRom"].body if isinstance(n, ast.FunctionDef)}
+        public = {name for name in dir(cls) if not name.startswith("_")}
+        assert public <= members, public - members
+    ext = ast.parse((folder / "_crspline.pyi").read_text())
+    ext_classes = {n.name: n for n in ext.body if isinstance(n, ast.ClassDef)}
+    curve_methods = {n.name for n in ext_classes["_Curve"].body if isinstance(n, ast.FunctionDef)}
+    compiled = {name for name in dir(crspline._crspline._Curve) if not name.startswith("_")}
+    assert compiled <= curve_methods, compiled - curve_methods
+    assert (folder / "py.typed").exists()
