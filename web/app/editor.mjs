@@ -371,13 +371,16 @@ function drawVolumes(v, px) {
 }
 
 function drawComb(px) {
-  // Teeth point away from the centre of curvature; length proportional to
-  // the curvature, scaled so the largest finite tooth is about 60 px times
-  // the comb slider.
-  let kmax = 0;
-  for (const c of cache.comb) for (let j = 4; j < c.length; j += 5) if (Number.isFinite(c[j])) kmax = Math.max(kmax, Math.abs(c[j]));
-  if (!(kmax > 0)) return;
-  const scale = (120 * state.combScale * px) / kmax;
+  // Teeth point away from the centre of curvature, with length proportional
+  // to the curvature: the 90th percentile of |k| gets 30 px times twice the
+  // comb slider; the rare huge values (near cusps) are clipped at twice that.
+  const ks = [];
+  for (const c of cache.comb) for (let j = 4; j < c.length; j += 5) if (Number.isFinite(c[j])) ks.push(Math.abs(c[j]));
+  if (!ks.length) return;
+  ks.sort((a, b) => a - b);
+  const k90 = ks[Math.floor(0.9 * (ks.length - 1))] || ks[ks.length - 1];
+  if (!(k90 > 0)) return;
+  const scale = (60 * state.combScale * px) / k90, kmax = 2 * k90;
   const teeth = new Path2D(), hull = new Path2D();
   for (const c of cache.comb) {
     for (let j = 0; j < c.length; j += 5) {
