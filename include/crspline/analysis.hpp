@@ -465,13 +465,13 @@ segment_analysis<D, T> analyze_core(const cubic_segment<D, T>& seg, const std::a
         a.projection = pr;
 
         // Heights of B1, B2 and the Bézier bound on the chord-line distance.
-        a.bezier_height = {norm(detail::perpendicular(b1, e)), norm(detail::perpendicular(b2, e))};
+        a.bezier_height = {norm(detail::perpendicular_part(b1, e)), norm(detail::perpendicular_part(b2, e))};
         a.bezier_bound = T(0.75) * std::max(a.bezier_height[0], a.bezier_height[1]);
 
         // Distance to the chord line: |perp(C(u))|; maxima at roots of the
         // derivative of its square (degree 5).
-        const std::array<point, 4> p{point{}, detail::perpendicular(c[1], e), detail::perpendicular(c[2], e),
-                                     detail::perpendicular(c[3], e)};
+        const std::array<point, 4> p{point{}, detail::perpendicular_part(c[1], e), detail::perpendicular_part(c[2], e),
+                                     detail::perpendicular_part(c[3], e)};
         const auto g = detail::dot_poly(p, p);
         std::vector<T> line_cand{T(0), T(1)};
         for (T r : detail::real_roots(detail::derivative(g), T(0), T(1))) line_cand.push_back(r);

@@ -41,7 +41,7 @@ struct edge_box {
         const T L = std::sqrt(L2);
         const T lam = dot(x - a, e) / L2;
         if (lam < lambda_min - slack / L || lam > lambda_max + slack / L) return false;
-        return norm(detail::perpendicular(x - a, e / L)) <= half_width + slack;
+        return norm(detail::perpendicular_part(x - a, e / L)) <= half_width + slack;
     }
 };
 

@@ -80,7 +80,7 @@ T angle_between(const vec<D, T>& a, const vec<D, T>& b) noexcept {
 
 /// Component of v perpendicular to the unit vector e.
 template <std::size_t D, class T>
-constexpr vec<D, T> perpendicular(const vec<D, T>& v, const vec<D, T>& e) noexcept {
+constexpr vec<D, T> perpendicular_part(const vec<D, T>& v, const vec<D, T>& e) noexcept {
     return v - dot(v, e) * e;
 }
 
