@@ -131,7 +131,14 @@ std::string to_table(std::string_view command, char sep, const output_json& out,
 // and the points the command computed, in data coordinates under one
 // transform that flips y, so that a reader gets the numbers back exactly.
 std::string to_svg(std::string_view command, const output_json& out, const document& input) {
-    const output_json bez = command == "bezier" ? out : run_bezier(input);
+    // The curve of the input (its curve fields only: bezier takes no others).
+    output_json bez = out;
+    if (command != "bezier") {
+        document curve_only = input;
+        for (const char* key : {"t", "s", "derivatives", "accuracy", "count", "spacing", "tolerance"})
+            curve_only.root.erase(key);
+        bez = run_bezier(curve_only);
+    }
     const output_json& segments = bez["segments"];
     const std::size_t dim = dimension_of(segments[0]);
     if (dim != 2)

@@ -1,0 +1,99 @@
+"""`crspline analyze` against the 50-digit oracle (tests/reference/oracle.json)
+and on curves whose loops, crossings and certificates are known.
+
+Each oracle case is the middle segment (index 1) of the open curve through
+its four points ("reflect" ends change only segments 0 and 2). Tolerances
+are those of the library's own oracle test (tests/analysis/
+test_segment_oracle.cpp): parameters to 1e-12, distances to 1e-13 of the
+segment's size (max |P - P1|) plus one ulp of the coordinates (both sides
+round to binary64), the Eq. 6 bound to 1e-12 relative (the curve's knots are running sums).
+"""
+import math
+
+from cli_support import load_reference, run, run_json, ulp_of
+
+
+def scale_of(points):
+    return max(math.dist(p, points[1]) for p in points)
+
+
+def test_every_oracle_case():
+    cases = load_reference("oracle.json")["cases"]
+    checked = {"cusp": 0, "loop": 0, "distances": 0, "bound": 0}
+    for case in cases:
+        out = run_json("analyze", {"points": case["points"], "alpha": case["alpha"],
+                                   "tension": case["tension"], "end": "reflect"})
+        seg = out["segments"][1]
+        name = case["name"]
+        assert seg["index"] == 1
+        assert len(seg["cusp_u"]) == len(case["cusp_u"]), (name, seg["cusp_u"], case["cusp_u"])
+        for got, want in zip(seg["cusp_u"], case["cusp_u"]):
+            assert abs(got - want) <= 1e-12, (name, got, want)
+        checked["cusp"] += bool(case["cusp_u"])
+        assert len(seg["self_intersection"]) == len(case["self_intersection_uv"]), name
+        for got, want in zip(seg["self_intersection"], case["self_intersection_uv"]):
+            assert abs(got[0] - want[0]) <= 1e-12 and abs(got[1] - want[1]) <= 1e-12, (name, got, want)
+        checked["loop"] += bool(case["self_intersection_uv"])
+        assert seg["fold"] == case["fold_1d"], name
+        tol = 1e-13 * max(scale_of(case["points"]), 1e-300) + ulp_of(case["points"])
+        assert abs(seg["max_chord_line_distance"] - case["max_dist_to_chord_line"]) <= tol, name
+        assert abs(seg["max_chord_distance"] - case["max_dist_to_chord_segment"]) <= tol, name
+        checked["distances"] += 1
+        if case["eq6_bound_two_sided"] is None:
+            assert seg["distance_bound"] is None, name
+        else:
+            want = case["eq6_bound_two_sided"]
+            # 1e-12, not the library test's 1e-14: the curve's knots are running
+            # sums (rounded at the grid's magnitude), not the bare intervals.
+            assert abs(seg["distance_bound"] - want) <= 1e-12 * want, (name, seg["distance_bound"], want)
+            checked["bound"] += 1
+        # Segment 1's Bezier points end at the segment's own points, exactly.
+        assert seg["bezier"][0] == case["points"][1] and seg["bezier"][3] == case["points"][2]
+    assert checked["distances"] == len(cases) == 38
+    assert checked["cusp"] > 0 and checked["loop"] > 0 and checked["bound"] > 0, checked
+
+
+# A short edge between two long ones: the uniform curve loops in the middle
+# segment, the centripetal one does not (the paper's Figure 2).
+LOOP = [[0, 0], [1, 1], [1.1, 1], [2, 0]]
+
+
+def test_uniform_loop_and_centripetal_certificate():
+    uniform = run_json("analyze", {"points": LOOP, "alpha": 0})
+    assert list(uniform) == ["segments", "intersections", "folds", "intersection_free"]
+    loops = [s for s in uniform["segments"] if s["self_intersection"]]
+    assert [s["index"] for s in loops] == [1]
+    u, v = loops[0]["self_intersection"][0]
+    assert 0 < u < v < 1
+    # The loop is reported among the curve's intersections as segments [1, 1].
+    assert any(x["segments"] == [1, 1] for x in uniform["intersections"])
+    assert uniform["intersection_free"]["certified"] is False
+    assert uniform["intersection_free"]["failed_rule"] == "not_centripetal"
+
+    centripetal = run_json("analyze", {"points": LOOP, "alpha": 0.5})
+    assert all(not s["self_intersection"] and not s["cusp_u"] for s in centripetal["segments"])
+
+
+def test_crossing_between_segments_and_certified_curve():
+    # A figure-eight-like polygon: segments 0 and 2 cross.
+    out = run_json("analyze", {"points": [[0, 0], [2, 2], [2, 0], [0, 2]]})
+    cross = [x for x in out["intersections"] if x["segments"][0] != x["segments"][1]]
+    assert len(cross) == 1 and cross[0]["segments"] == [0, 2]
+    # The reported point lies on both segments: evaluate through the CLI.
+    grid = run_json("bezier", {"points": [[0, 0], [2, 2], [2, 0], [0, 2]]})["grid"]
+    ts = [grid[i] + u * (grid[i + 1] - grid[i]) for i, u in zip(cross[0]["segments"], cross[0]["u"])]
+    pos = run_json("eval", {"points": [[0, 0], [2, 2], [2, 0], [0, 2]], "t": ts})["values"]["0"]
+    assert math.dist(pos[0], pos[1]) <= 1e-9 and math.dist(pos[0], cross[0]["point"]) <= 1e-9
+    # A gentle centripetal arc is certified intersection-free.
+    arc = [[math.cos(a / 10), math.sin(a / 10)] for a in range(0, 20)]
+    out = run_json("analyze", {"points": arc})
+    assert out["intersection_free"] == {"certified": True, "failed_rule": None, "detail": ""}
+    assert out["intersections"] == []
+
+
+def test_analyze_from_csv_with_options(tmp_path):
+    path = tmp_path / "loop.csv"
+    path.write_text("x,y\n" + "".join(f"{x},{y}\n" for x, y in LOOP))
+    p = run(["analyze", "--uniform", str(path)])
+    assert p.returncode == 0, p.stderr
+    assert '"self_intersection":[[' in p.stdout
