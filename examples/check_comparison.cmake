@@ -1,0 +1,11 @@
+# The comparison example writes an SVG with the three curves.
+execute_process(COMMAND ${PROGRAM} ${OUT} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "comparison exited with ${rc}")
+endif()
+file(READ ${OUT} svg)
+string(REGEX MATCHALL "<path" paths "${svg}")
+list(LENGTH paths n)
+if(n LESS 3)
+    message(FATAL_ERROR "expected at least 3 <path elements, got ${n}")
+endif()

@@ -1,0 +1,16 @@
+# The README's ```cpp block must be examples/quickstart.cpp exactly, and the
+# README's output block must be what the program prints.
+file(READ ${README} readme)
+file(READ ${SOURCE} source)
+string(FIND "${readme}" "```cpp\n${source}```" at)
+if(at EQUAL -1)
+    message(FATAL_ERROR "README.md does not contain examples/quickstart.cpp verbatim in a ```cpp block")
+endif()
+execute_process(COMMAND ${PROGRAM} OUTPUT_VARIABLE out RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "quickstart exited with ${rc}")
+endif()
+string(FIND "${readme}" "```\n${out}```" at)
+if(at EQUAL -1)
+    message(FATAL_ERROR "README.md does not show the quickstart's output:\n${out}")
+endif()
