@@ -16,8 +16,8 @@ CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebI
 cmake --build "$build" -j"$jobs" --target crspline_fuzz_input
 mkdir -p "$root/fuzz/findings" "$build/fuzz-new"
 # New inputs land in a scratch folder first; then merged (minimised) into the kept corpus.
-"$build/fuzz/crspline_fuzz_input" -max_total_time="$seconds" -max_len=4096 -timeout=10 \
+"$build/tests/cli/fuzz/crspline_fuzz_input" -max_total_time="$seconds" -max_len=4096 -timeout=10 \
     -artifact_prefix="$root/fuzz/findings/" -dict="$root/fuzz/crspline.dict" \
     "$build/fuzz-new" "$root/fuzz/corpus/input"
-"$build/fuzz/crspline_fuzz_input" -merge=1 "$root/fuzz/corpus/input" "$build/fuzz-new" >/dev/null 2>&1
+"$build/tests/cli/fuzz/crspline_fuzz_input" -merge=1 "$root/fuzz/corpus/input" "$build/fuzz-new" >/dev/null 2>&1
 echo "corpus: $(ls "$root/fuzz/corpus/input" | wc -l) files"
