@@ -421,12 +421,29 @@ private:
             const T step = target / v0, dv = dot(d1, d2) / v0;
             u = std::clamp(u_a + step - step * step * dv / (T(2) * v0), u_a, hi);
         }
-        T f = 0;
         const T short_step = small_step_ * (p.u1 - p.u0);
+        const T f = newton_in_bracket(
+            seg,
+            [&](T x) {
+                return (x > u_a ? (x - u_a <= short_step ? detail::gauss_length_3(seg, u_a, x)
+                                                         : detail::gauss_length(seg, u_a, x))
+                                : T(0)) - target;
+            },
+            lo, hi, u, tol);
+        s_a = s + f;  // the arc length at u, as integrated
+        u_a = u;
+        return std::min(seg.t0 + u * seg.h, segments_.back().t0 + segments_.back().h);
+    }
+
+    // Newton on f(u) = (arc length to u) - target, whose derivative is the
+    // speed, kept inside the shrinking bracket [lo, hi] (bisection when a
+    // step leaves it or the speed vanishes), until |f| <= tol. Updates u and
+    // returns f(u).
+    template <class F>
+    static T newton_in_bracket(const cubic_segment<D, T>& seg, F f_of, T lo, T hi, T& u, T tol) {
+        T f = 0;
         for (int it = 0; it < 100; ++it) {
-            f = (u > u_a ? (u - u_a <= short_step ? detail::gauss_length_3(seg, u_a, u)
-                                                  : detail::gauss_length(seg, u_a, u))
-                         : T(0)) - target;
+            f = f_of(u);
             if (std::abs(f) <= tol) break;
             if (f < 0) lo = u;
             else hi = u;
@@ -436,9 +453,7 @@ private:
             if (next == u || !(hi > lo)) break;
             u = next;
         }
-        s_a = s + f;  // the arc length at u, as integrated
-        u_a = u;
-        return std::min(seg.t0 + u * seg.h, segments_.back().t0 + segments_.back().h);
+        return f;
     }
 
     // Solve s0 + integral_{u0}^{u} speed = s for u inside one piece by Newton
@@ -453,17 +468,7 @@ private:
         const T tol = std::max(accuracy_, T(4) * std::numeric_limits<T>::epsilon()) * total_ / T(4);
         T lo = p.u0, hi = p.u1;
         T u = len > 0 ? p.u0 + (p.u1 - p.u0) * std::clamp(target / len, T(0), T(1)) : p.u0;
-        for (int it = 0; it < 100; ++it) {
-            const T f = detail::gauss_length(seg, p.u0, u) - target;
-            if (std::abs(f) <= tol) break;
-            if (f < 0) lo = u;
-            else hi = u;
-            const T v = detail::speed_du(seg, u);
-            T next = v > 0 ? u - f / v : lo + (hi - lo) / 2;
-            if (!(next > lo && next < hi)) next = lo + (hi - lo) / 2;
-            if (next == u || !(hi > lo)) break;
-            u = next;
-        }
+        newton_in_bracket(seg, [&](T x) { return detail::gauss_length(seg, p.u0, x) - target; }, lo, hi, u, tol);
         return std::min(seg.t0 + u * seg.h, segments_.back().t0 + segments_.back().h);
     }
 };

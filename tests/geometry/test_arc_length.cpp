@@ -149,7 +149,10 @@ TEST(ArcLength, InverseRoundTripsAtEveryAccuracy) {
             // Sorted batch == one by one.
             std::sort(sv.begin(), sv.end());
             const auto tb = table.t_at(std::span<const double>(sv));
-            for (std::size_t k = 0; k < sv.size(); ++k) EXPECT_NEAR(tb[k], table.t_at(sv[k]), 4 * acc * c.t_max());
+            // (Compared in arc length, where the promise is: where the curve is
+            // slow a tiny error in s is a larger one in t.)
+            for (std::size_t k = 0; k < sv.size(); ++k)
+                EXPECT_LE(std::abs(table.s_at(tb[k]) - table.s_at(table.t_at(sv[k]))), 4 * acc * L) << "s " << sv[k];
         }
     EXPECT_EQ(checked, 3u * 6 * 200);
 }
