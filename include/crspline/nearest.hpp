@@ -77,13 +77,14 @@ segment_nearest<T> nearest(const cubic_segment<D, T>& s, const vec<D, T>& q) {
         const auto m = detail::multiply(f, df);
         for (std::size_t i = 0; i < g.size(); ++i) g[i] += m[i];
     }
-    // 3. Candidates: u = 0, the stationary points in order, u = 1.
+    // 3. Candidates: u = 0, the strict local minima in order (zeros where
+    //    g rises: maxima and saddles cannot be nearest), u = 1.
     segment_nearest<T> best{T(0), distance_sq(T(0))};
     auto consider = [&](T u) {
         const T d2 = distance_sq(u);
         if (d2 < best.distance_sq) best = {u, d2};
     };
-    for (T u : detail::real_roots(g, T(0), T(1))) consider(u);
+    for (T u : detail::rising_roots(g)) consider(u);
     consider(T(1));
     // 4. Polish the winner with Newton steps on (C - q) . C', evaluated from
     //    the vectors (more accurate than g's expanded coefficients); a step

@@ -11,6 +11,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace crspline::detail {
@@ -124,6 +126,105 @@ root_list<T, N> real_roots(const std::array<T, N>& c, T a, T b) {
         }
         return out;
     }
+}
+
+/// Roots in [0, 1] where p crosses zero from below (p < 0 before, > 0
+/// after): for p the derivative of a function, its strict local minima.
+/// Bernstein-form isolation: on an interval whose Bernstein coefficients
+/// change sign once (Descartes' rule for the Bernstein basis) there is
+/// exactly one root, closed by bracketed Newton; no sign change means none;
+/// otherwise the interval is split by de Casteljau. Intervals whose single
+/// root is a falling one are skipped without solving, which is what makes
+/// this cheaper than real_roots() when only minima matter.
+template <class T, std::size_t N>
+root_list<T, N> rising_roots(const std::array<T, N>& c) {
+    static_assert(N >= 2);
+    constexpr std::size_t n = N - 1;  // degree
+    root_list<T, N> out;
+    // Power -> Bernstein on [0, 1]: b_i = sum_{j <= i} C(i, j) / C(n, j) a_j.
+    std::array<T, N> b{};
+    for (std::size_t i = 0; i <= n; ++i) {
+        T sum = 0, cij = 1;  // C(i, j), built up along j
+        for (std::size_t j = 0; j <= i; ++j) {
+            T cnj = 1;
+            for (std::size_t k = 0; k < j; ++k) cnj = cnj * T(n - k) / T(k + 1);
+            sum += cij / cnj * c[j];
+            cij = cij * T(i - j) / T(j + 1);
+        }
+        b[i] = sum;
+    }
+    const auto dc = derivative(c);
+    auto f = [&](T x) { return horner(c, x); };
+    auto df = [&](T x) { return horner(dc, x); };
+    struct job {
+        std::array<T, N> b;
+        T lo, hi;
+        int depth;
+    };
+    job stack[2 * 64];
+    int top = 0;
+    stack[top++] = {b, T(0), T(1), 0};
+    // Coefficients within the conversion's rounding of zero have no
+    // reliable sign: an interval with one is split, never decided.
+    T magnitude = 0;
+    for (T x : b) magnitude += std::abs(x);
+    const T fuzz = T(64) * std::numeric_limits<T>::epsilon() * magnitude;
+    root_list<T, N> found;  // in discovery order; sorted at the end
+    int budget = 4096;      // intervals examined at most: a safety net, never reached in tests
+    while (top > 0 && found.size() < n && budget-- > 0) {
+        const job j = stack[--top];
+        int changes = 0;
+        std::size_t unsure = 0;
+        T last = 0;
+        for (T x : j.b) {
+            if (std::abs(x) <= fuzz) {
+                ++unsure;
+                continue;
+            }
+            if (last != 0 && (x < 0) != (last < 0)) ++changes;
+            last = x;
+        }
+        if (changes == 0 && unsure == 0) continue;
+        if (unsure == N) {
+            // p is zero to rounding on the whole interval (near a multiple
+            // root): splitting cannot decide; its middle if p rises across.
+            if (f(j.lo) <= 0 && f(j.hi) >= 0) found.push_back(j.lo + (j.hi - j.lo) / 2);
+            continue;
+        }
+        const T first = j.b[0], final = j.b[n];
+        if (changes == 1 && unsure == 0) {
+            // The end coefficients are p(lo), p(hi) only up to the rounding of
+            // the conversion: decide on the values themselves. A zero at an
+            // end (a root on the boundary next to the counted one) is split.
+            const T flo = f(j.lo), fhi = f(j.hi);
+            if (flo < 0 && fhi > 0) {
+                found.push_back(solve_bracketed<T>(f, df, j.lo, j.hi));
+                continue;
+            }
+            if (flo > 0 && fhi < 0) continue;  // a falling root: not a minimum
+        }
+        const T mid = j.lo + (j.hi - j.lo) / 2;
+        if (j.depth >= 60 || !(mid > j.lo && mid < j.hi)) {
+            // Unresolved (a cluster of roots, or a zero at rounding level):
+            // its middle, if p rises across it.
+            if (f(j.lo) <= 0 && f(j.hi) >= 0 && (first <= 0 || final >= 0)) found.push_back(mid);
+            continue;
+        }
+        // de Casteljau at 1/2: left and right control polygons.
+        std::array<T, N> left{}, right{}, w = j.b;
+        for (std::size_t r = 0; r <= n; ++r) {
+            left[r] = w[0];
+            right[n - r] = w[n - r];
+            for (std::size_t i = 0; i + r < n; ++i) w[i] = (w[i] + w[i + 1]) / 2;
+        }
+        stack[top++] = {right, mid, j.hi, j.depth + 1};  // popped second
+        stack[top++] = {left, j.lo, mid, j.depth + 1};
+    }
+    for (std::size_t i = 1; i < found.size(); ++i)  // insertion sort: at most n values
+        for (std::size_t k = i; k > 0 && found.v[k] < found.v[k - 1]; --k) std::swap(found.v[k], found.v[k - 1]);
+    for (T x : found)
+        if (out.empty() || x > out.back()) out.push_back(x);
+    return out;
 }
 
 }  // namespace crspline::detail
