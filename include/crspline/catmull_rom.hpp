@@ -89,20 +89,20 @@ inline void store_fence() noexcept {
 /// curves ignore the values at their two end vertices.
 template <class T = double>
 struct kochanek_bartels {
-    std::vector<T> tension, continuity, bias;
+    std::vector<T> tension{}, continuity{}, bias{};
     bool empty() const noexcept { return tension.empty() && continuity.empty() && bias.empty(); }
 };
 
 /// How to build a curve. Every choice has a visible default.
 template <std::size_t D, class T = double>
 struct options {
-    std::optional<double> alpha;          ///< knot exponent in [0, 1]; default centripetal (0.5)
-    std::optional<std::vector<T>> grid;   ///< explicit knots instead of alpha (N, or N+1 when closed)
+    std::optional<double> alpha{};        ///< knot exponent in [0, 1]; default centripetal (0.5)
+    std::optional<std::vector<T>> grid{}; ///< explicit knots instead of alpha (N, or N+1 when closed)
     end_condition<D, T> start = end_condition<D, T>::natural();  ///< open curves only
     end_condition<D, T> end = end_condition<D, T>::natural();    ///< open curves only
     bool closed = false;                  ///< periodic; the first point is not repeated
     T tension = 0;                        ///< tau in [0, 1]: computed tangents scaled by 1 - tau
-    kochanek_bartels<T> kb;               ///< per-vertex TCB; empty = plain Catmull-Rom
+    kochanek_bartels<T> kb{};             ///< per-vertex TCB; empty = plain Catmull-Rom
     bool strict = false;                  ///< reject coincident consecutive points (alpha > 0)
 };
 
