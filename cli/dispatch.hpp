@@ -14,23 +14,21 @@
 #include <vector>
 
 #include <crspline/crspline.hpp>
+#include <crspline/dispatch.hpp>
 
 #include "json_input.hpp"
 
 namespace crspline::cli {
 
-inline constexpr std::size_t max_dimension = 4;
+inline constexpr std::size_t max_dimension = max_runtime_dimension;
 
-/// f(std::integral_constant<std::size_t, D>{}) for the given dimension 1..4.
+/// f(std::integral_constant<std::size_t, D>{}) for the given dimension 1..4
+/// (crspline::with_dimension with the CLI's error).
 template <class F>
 decltype(auto) with_dimension(std::size_t dimension, F&& f) {
-    switch (dimension) {
-        case 1: return std::forward<F>(f)(std::integral_constant<std::size_t, 1>{});
-        case 2: return std::forward<F>(f)(std::integral_constant<std::size_t, 2>{});
-        case 3: return std::forward<F>(f)(std::integral_constant<std::size_t, 3>{});
-        case 4: return std::forward<F>(f)(std::integral_constant<std::size_t, 4>{});
-        default: throw input_error("points: expected 1 to 4 coordinates per point, got " + std::to_string(dimension));
-    }
+    return crspline::with_dimension(dimension, std::forward<F>(f), [](std::size_t d) {
+        throw input_error("points: expected 1 to 4 coordinates per point, got " + std::to_string(d));
+    });
 }
 
 /// The coordinates of a run-time point as a vec<D> (the size was validated).

@@ -20,27 +20,24 @@
 #include <pybind11/stl.h>  // in every file: type casters must agree across translation units
 
 #include <crspline/catmull_rom.hpp>
+#include <crspline/dispatch.hpp>
 #include <crspline/error.hpp>
 
 namespace crspline::python {
 
 namespace py = pybind11;
 
-/// Dimensions compiled into the module (like the CLI's with_dimension).
-inline constexpr std::size_t max_dimension = 4;
+/// Dimensions compiled into the module.
+inline constexpr std::size_t max_dimension = max_runtime_dimension;
 
-/// f(std::integral_constant<std::size_t, D>{}) for D = 1..max_dimension.
+/// f(std::integral_constant<std::size_t, D>{}) for D = 1..max_dimension
+/// (crspline::with_dimension with the module's error).
 template <class F>
 decltype(auto) with_dimension(std::size_t dimension, F&& f) {
-    switch (dimension) {
-        case 1: return std::forward<F>(f)(std::integral_constant<std::size_t, 1>{});
-        case 2: return std::forward<F>(f)(std::integral_constant<std::size_t, 2>{});
-        case 3: return std::forward<F>(f)(std::integral_constant<std::size_t, 3>{});
-        case 4: return std::forward<F>(f)(std::integral_constant<std::size_t, 4>{});
-        default:
-            throw invalid_input("points must have 1 to " + std::to_string(max_dimension) +
-                                " coordinates each, got " + std::to_string(dimension));
-    }
+    return crspline::with_dimension(dimension, std::forward<F>(f), [](std::size_t d) {
+        throw invalid_input("points must have 1 to " + std::to_string(max_dimension) +
+                            " coordinates each, got " + std::to_string(d));
+    });
 }
 
 /// f(T{}) for the scalar of a NumPy array that is float32 or float64.
