@@ -243,7 +243,9 @@ public:
     using point = vec<D, T>;
 
     explicit arc_length_table(const catmull_rom<D, T>& curve, T accuracy = T(default_accuracy))
-        : segments_(curve.segments().begin(), curve.segments().end()), accuracy_(accuracy) {
+        : accuracy_(accuracy) {
+        segments_.reserve(curve.segment_count());
+        for (const auto& s : curve.segments()) segments_.push_back(s);
         detail::check_accuracy(accuracy);
         const double eff = std::max(double(accuracy), 8.0 * double(std::numeric_limits<T>::epsilon()));
         small_step_ = T(std::pow(100.0 / eff, -5.0 / 48.0) / 2.2);

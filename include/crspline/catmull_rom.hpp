@@ -7,7 +7,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <compare>
 #include <initializer_list>
+#include <iterator>
 #include <utility>
 #include <limits>
 #include <optional>
@@ -129,15 +131,84 @@ public:
     std::span<const point> points() const noexcept { return points_; }
     std::span<const T> grid() const noexcept { return grid_; }
     bool closed() const noexcept { return closed_; }
-    std::size_t segment_count() const noexcept { return segments_.size(); }
+    std::size_t segment_count() const noexcept { return inv_h_.size(); }
     T t_min() const noexcept { return grid_.front(); }
     T t_max() const noexcept { return grid_.back(); }
-    const segment_type& segment(std::size_t i) const { return segments_.at(i); }
-    std::span<const segment_type> segments() const noexcept { return segments_; }
+
+    /// Segment i in power-basis form. The curve stores points, knots and one
+    /// tangent per vertex (about 60 bytes per point, not the 120 of a
+    /// cubic_segment): segments are computed on access, by the same
+    /// arithmetic every time, so every path sees the same bits.
+    segment_type segment(std::size_t i) const {
+        if (i >= segment_count())
+            throw invalid_input("segment index " + std::to_string(i) + " is out of range (the curve has " +
+                                std::to_string(segment_count()) + " segments)");
+        return make_segment(i);
+    }
+
+    /// A random-access range over the segments, by value (each computed on
+    /// access, as segment() without the range check). Refers to the curve:
+    /// valid while the curve lives.
+    class segment_view {
+    public:
+        class iterator {
+        public:
+            using iterator_concept = std::random_access_iterator_tag;
+            using iterator_category = std::input_iterator_tag;  // yields values, not references
+            using value_type = segment_type;
+            using difference_type = std::ptrdiff_t;
+            using reference = segment_type;
+            iterator() = default;
+            segment_type operator*() const noexcept { return c_->make_segment(i_); }
+            segment_type operator[](difference_type k) const noexcept { return c_->make_segment(std::size_t(difference_type(i_) + k)); }
+            iterator& operator++() noexcept { ++i_; return *this; }
+            iterator operator++(int) noexcept { iterator r = *this; ++i_; return r; }
+            iterator& operator--() noexcept { --i_; return *this; }
+            iterator operator--(int) noexcept { iterator r = *this; --i_; return r; }
+            iterator& operator+=(difference_type k) noexcept { i_ = std::size_t(difference_type(i_) + k); return *this; }
+            iterator& operator-=(difference_type k) noexcept { return *this += -k; }
+            friend iterator operator+(iterator a, difference_type k) noexcept { return a += k; }
+            friend iterator operator+(difference_type k, iterator a) noexcept { return a += k; }
+            friend iterator operator-(iterator a, difference_type k) noexcept { return a -= k; }
+            friend difference_type operator-(const iterator& a, const iterator& b) noexcept {
+                return difference_type(a.i_) - difference_type(b.i_);
+            }
+            friend bool operator==(const iterator& a, const iterator& b) noexcept { return a.i_ == b.i_; }
+            friend auto operator<=>(const iterator& a, const iterator& b) noexcept { return a.i_ <=> b.i_; }
+
+        private:
+            friend class segment_view;
+            iterator(const catmull_rom* c, std::size_t i) noexcept : c_(c), i_(i) {}
+            const catmull_rom* c_ = nullptr;
+            std::size_t i_ = 0;
+        };
+
+        segment_view() = default;
+        std::size_t size() const noexcept { return c_ ? c_->segment_count() : 0; }
+        bool empty() const noexcept { return size() == 0; }
+        segment_type operator[](std::size_t i) const noexcept { return c_->make_segment(i); }
+        segment_type front() const noexcept { return c_->make_segment(0); }
+        segment_type back() const noexcept { return c_->make_segment(size() - 1); }
+        iterator begin() const noexcept { return iterator(c_, 0); }
+        iterator end() const noexcept { return iterator(c_, size()); }
+
+    private:
+        friend class catmull_rom;
+        explicit segment_view(const catmull_rom* c) noexcept : c_(c) {}
+        const catmull_rom* c_ = nullptr;
+    };
+
+    /// All segments, as a random-access range of values (see segment()).
+    segment_view segments() const noexcept { return segment_view(this); }
 
     /// Tangents dx/dt at the start and end of segment i (equal at interior
     /// knots unless Kochanek-Bartels continuity breaks them).
-    std::array<point, 2> tangents(std::size_t i) const { return velocity_.at(i); }
+    std::array<point, 2> tangents(std::size_t i) const {
+        if (i >= segment_count())
+            throw invalid_input("segment index " + std::to_string(i) + " is out of range (the curve has " +
+                                std::to_string(segment_count()) + " segments)");
+        return {out_tangent(i), in_tangent(next(i))};
+    }
 
     // --- evaluation -----------------------------------------------------------
     /// Index of the segment that owns t, clamped to the first and last
@@ -191,7 +262,7 @@ public:
         // The last knot gives the last point exactly (the cubic at u = 1 is
         // only within rounding of it).
         if (order == 0 && t == grid_.back()) return points_[closed_ ? 0 : points_.size() - 1];
-        const segment_type& s = segments_[locate(t)];
+        const segment_type s = make_segment(locate(t));
         return s.dt(s.local(t), order);
     }
 
@@ -199,7 +270,7 @@ public:
     /// order switch (the single-point kernel of unsorted batches).
     point position_unchecked(T t) const noexcept {
         if (t == grid_.back()) return points_[closed_ ? 0 : points_.size() - 1];
-        const segment_type& s = segments_[locate(t)];
+        const segment_type s = make_segment(locate(t));
         return s.at(s.local(t));
     }
 
@@ -235,7 +306,7 @@ public:
             case 1:
                 for (std::size_t k = 0; k < t.size(); ++k) {
                     check(k);
-                    const segment_type& s = segments_[locate(t[k])];
+                    const segment_type s = make_segment(locate(t[k]));
                     out[k] = s.dt(s.local(t[k]), 1);
                 }
                 break;
@@ -252,24 +323,52 @@ public:
     /// Bézier control points of segment i: B0 = points[i], B3 = the next
     /// point, exactly; B1 and B2 from the Hermite tangents.
     std::array<point, 4> bezier(std::size_t i) const {
-        const segment_type& s = segments_.at(i);
+        const auto [v0, v1] = tangents(i);
         const point& p0 = points_[i];
-        const point& p1 = points_[(i + 1) % points_.size()];
-        const auto [v0, v1] = velocity_[i];
-        return {p0, p0 + (s.h / T(3)) * v0, p1 - (s.h / T(3)) * v1, p1};
+        const point& p1 = points_[next(i)];
+        const T h = grid_[i + 1] - grid_[i];
+        return {p0, p0 + (h / T(3)) * v0, p1 - (h / T(3)) * v1, p1};
     }
     std::vector<std::array<point, 4>> bezier() const {
-        std::vector<std::array<point, 4>> b(segments_.size());
+        std::vector<std::array<point, 4>> b(segment_count());
         for (std::size_t i = 0; i < b.size(); ++i) b[i] = bezier(i);
         return b;
     }
 
 private:
+    // What the curve stores, per point: the point, its knot, 1 / h of the
+    // segment starting there and one tangent dx/dt (plus a bucket entry).
+    // Segment i runs from points_[i] to points_[next(i)] with tangents
+    // out_tangent(i) and in_tangent(next(i)).
     std::vector<point> points_;
     std::vector<T> grid_;
-    std::vector<segment_type> segments_;
-    std::vector<std::array<point, 2>> velocity_;  // dx/dt at the ends of each segment
+    std::vector<T> inv_h_;        // 1 / (grid[i+1] - grid[i]), 0 for a zero interval; one per segment
+    std::vector<point> tangent_;  // outgoing dx/dt at each vertex; for an open curve the last is the incoming one
+    std::vector<point> in_;       // incoming dx/dt at each vertex, only when continuity can make it differ
     bool closed_ = false;
+
+    std::size_t next(std::size_t i) const noexcept { return i + 1 == points_.size() ? 0 : i + 1; }
+    const point& out_tangent(std::size_t i) const noexcept { return tangent_[i]; }
+    const point& in_tangent(std::size_t j) const noexcept { return in_.empty() ? tangent_[j] : in_[j]; }
+
+    /// Segment i, unchecked: the Hermite segment of segment_type::hermite
+    /// with 1/h from the table (no division).
+    segment_type make_segment(std::size_t i) const noexcept {
+        const std::size_t j = next(i);
+        const T h = grid_[i + 1] - grid_[i];
+        const point& p0 = points_[i];
+        const point m0 = h * out_tangent(i), m1 = h * in_tangent(j);
+        const point delta = points_[j] - p0;
+        segment_type s;
+        s.origin = p0;
+        s.c1 = m0;
+        s.c2 = T(3) * delta - T(2) * m0 - m1;
+        s.c3 = m0 + m1 - T(2) * delta;
+        s.t0 = grid_[i];
+        s.h = h;
+        s.inv_h = inv_h_[i];
+        return s;
+    }
     // locate(): bucket b = floor((t - t_min) * bucket_scale_) holds the
     // segments bucket_first_[b] .. bucket_first_[b + 1] as candidates.
     std::vector<std::uint32_t> bucket_first_;
@@ -296,7 +395,7 @@ private:
     // the caller starts over) as soon as t turns out not to be sorted or
     // holds NaN: random input costs one short run here, not a whole pass.
     bool evaluate_sorted(std::span<const T> t, std::span<point> out, int order) const {
-        const std::size_t n = t.size(), nseg = segments_.size();
+        const std::size_t n = t.size(), nseg = segment_count();
         // Large outputs bypass the caches (see detail::streaming_threshold).
         const bool stream = n * sizeof(point) >= detail::streaming_threshold;
         std::size_t seg = locate(t[0]);
@@ -315,7 +414,7 @@ private:
             const std::size_t j = seg + 1 < nseg
                 ? std::max(k + 1, std::size_t(std::lower_bound(t.begin() + std::ptrdiff_t(k), t.begin() + std::ptrdiff_t(cap), grid_[seg + 1]) - t.begin()))
                 : cap;
-            unsorted = run(segments_[seg], t.data() + k, out.data() + k, j - k, order, previous, stream);
+            unsorted = run(make_segment(seg), t.data() + k, out.data() + k, j - k, order, previous, stream);
             k = j;
         }
         if (stream) detail::store_fence();
@@ -468,7 +567,8 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
                                     detail::num(double((*vals)[i])) + ")");
     }
 
-    // 2. Parameterization: knots from alpha, or the given grid.
+    // 2. Parameterization: knots from alpha, or the given grid, written in
+    //    place (one pass over the points, no temporaries).
     points_.assign(p.begin(), p.end());
     const std::size_t nseg = closed_ ? n : n - 1;
     if (opt.grid) {
@@ -492,21 +592,28 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
                 throw invalid_input(msg);
             }
         }
-        grid_ = knots(p, alpha, closed_);
+        grid_.resize(nseg + 1);
+        grid_[0] = 0;
+        detail::fill_intervals(p, alpha, closed_, grid_.data() + 1);
+        for (std::size_t i = 1; i <= nseg; ++i) grid_[i] += grid_[i - 1];
     }
 
-    // 3. Chord velocities v(i) = (P(i+1) - P(i)) / h(i); zero for a zero
-    //    knot interval (the limit convention for coincident points). The
-    //    curve is the Catmull-Rom curve on the knots as stored: h(i) is the
-    //    difference of stored knots, so grid() passed back as an explicit
-    //    grid gives the same curve bit for bit (and the splines package's
-    //    exact reference, defined on its rounded grid, is matched).
-    std::vector<T> h(nseg);
-    std::vector<point> v(nseg);
+    // 3. Chord velocities v(i) = (P(i+1) - P(i)) / h(i), as the product with
+    //    1 / h(i) (which the segments keep); zero for a zero knot interval
+    //    (the limit convention for coincident points). The curve is the
+    //    Catmull-Rom curve on the knots as stored: h(i) is the difference of
+    //    stored knots, so grid() passed back as an explicit grid gives the
+    //    same curve bit for bit (and the splines package's exact reference,
+    //    defined on its rounded grid, is matched).
+    inv_h_.resize(nseg);
     for (std::size_t i = 0; i < nseg; ++i) {
-        h[i] = grid_[i + 1] - grid_[i];
-        v[i] = h[i] > 0 ? (p[(i + 1) % n] - p[i]) / h[i] : point{};
+        // (Written so that the compiler can divide two at a time: no
+        // division under a condition.)
+        const T h = grid_[i + 1] - grid_[i];
+        const T r = T(1) / (h > 0 ? h : T(1));
+        inv_h_[i] = h > 0 ? r : T(0);
     }
+    auto chord_velocity = [&](std::size_t i) { return (p[next(i)] - p[i]) * inv_h_[i]; };
 
     // 4. Tangents dx/dt at each vertex: incoming (end of the segment before)
     //    and outgoing (start of the segment after). With h0, h1 the intervals
@@ -514,56 +621,79 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
     //        (h1 v0 + h0 v1) / (h0 + h1)
     //    = [h1^2 (P1 - P0) + h0^2 (P2 - P1)] / [h0 h1 (h0 + h1)];
     //    Kochanek-Bartels weights the two terms. All-zero TCB gives weights of
-    //    exactly 1, so it is bit-for-bit the plain curve.
-    std::vector<point> in(n), out(n);
+    //    exactly 1, so it is bit-for-bit the plain curve. Without continuity
+    //    values the incoming and outgoing tangents are the same expression
+    //    (weights a = c, b = d exactly) and one array holds both.
+    tangent_.resize(n);
+    const bool split = !opt.kb.continuity.empty();
+    if (split) in_.assign(n, point{});
+    else in_.clear();
+    auto set_in = [&](std::size_t i, const point& x) {
+        if (split) in_[i] = x;
+        else tangent_[i] = x;  // only at an open curve's last vertex, or equal to the outgoing one
+    };
+    auto get_in = [&](std::size_t i) -> const point& { return split ? in_[i] : tangent_[i]; };
     auto tcb_at = [&](const std::vector<T>& a, std::size_t i) { return a.empty() ? T(0) : a[i]; };
-    for (std::size_t i = first_kb; i < last_kb; ++i) {
-        const std::size_t before = (i + nseg - 1) % nseg, after = i % nseg;
-        const T h0 = h[before], h1 = h[after], sum = h0 + h1;
-        const T Tn = tcb_at(opt.kb.tension, i), Cn = tcb_at(opt.kb.continuity, i), Bn = tcb_at(opt.kb.bias, i);
-        const T a = (1 - Tn) * (1 + Cn) * (1 + Bn), b = (1 - Tn) * (1 - Cn) * (1 - Bn);
-        const T c = (1 - Tn) * (1 - Cn) * (1 + Bn), d = (1 - Tn) * (1 + Cn) * (1 - Bn);
-        if (sum > 0) {
-            in[i] = ((c * h1) * v[before] + (d * h0) * v[after]) / sum;
-            out[i] = ((a * h1) * v[before] + (b * h0) * v[after]) / sum;
+    const bool plain = opt.kb.empty();
+    if (last_kb > first_kb) {
+        std::size_t before = first_kb == 0 ? nseg - 1 : first_kb - 1;
+        point v0 = chord_velocity(before);
+        T h0 = grid_[before + 1] - grid_[before];
+        for (std::size_t i = first_kb; i < last_kb; ++i) {
+            const point v1 = chord_velocity(i);  // i < nseg: the segment after vertex i
+            const T h1 = grid_[i + 1] - grid_[i], sum = h0 + h1;
+            if (!(sum > 0)) {
+                tangent_[i] = point{};
+                if (split) in_[i] = point{};
+            } else if (plain) {
+                tangent_[i] = (h1 * v0 + h0 * v1) * (T(1) / sum);  // one division, not D
+            } else {
+                const T Tn = tcb_at(opt.kb.tension, i), Cn = tcb_at(opt.kb.continuity, i), Bn = tcb_at(opt.kb.bias, i);
+                const T a = (1 - Tn) * (1 + Cn) * (1 + Bn), b = (1 - Tn) * (1 - Cn) * (1 - Bn);
+                const T c = (1 - Tn) * (1 - Cn) * (1 + Bn), d = (1 - Tn) * (1 + Cn) * (1 - Bn);
+                const T r = T(1) / sum;
+                tangent_[i] = ((a * h1) * v0 + (b * h0) * v1) * r;
+                if (split) in_[i] = ((c * h1) * v0 + (d * h0) * v1) * r;
+            }
+            v0 = v1, h0 = h1;
         }
     }
     const T keep = T(1) - opt.tension;  // tension scales every computed tangent
     bool start_given = false, end_given = false;
     if (!closed_) {
+        const point v_first = chord_velocity(0), v_last = chord_velocity(n - 2);
         if (n == 2) {
             // Two points: a straight line at constant speed, whatever the end
             // conditions and the tension.
-            out[0] = in[1] = v[0];
+            tangent_[0] = v_first;
+            set_in(1, v_first);
             start_given = end_given = true;
         } else {
             using kind = typename end_condition<D, T>::kind;
             // natural: zero second derivative, from the other end's tangent.
             switch (opt.start.type) {
-                case kind::natural: out[0] = (T(3) * v[0] - in[1]) / T(2); break;
-                case kind::reflect: out[0] = v[0]; break;
-                case kind::tangent: out[0] = opt.start.velocity; start_given = true; break;
+                case kind::natural: tangent_[0] = (T(3) * v_first - get_in(1)) / T(2); break;
+                case kind::reflect: tangent_[0] = v_first; break;
+                case kind::tangent: tangent_[0] = opt.start.velocity; start_given = true; break;
             }
             switch (opt.end.type) {
-                case kind::natural: in[n - 1] = (T(3) * v[n - 2] - out[n - 2]) / T(2); break;
-                case kind::reflect: in[n - 1] = v[n - 2]; break;
-                case kind::tangent: in[n - 1] = opt.end.velocity; end_given = true; break;
+                case kind::natural: set_in(n - 1, (T(3) * v_last - tangent_[n - 2]) / T(2)); break;
+                case kind::reflect: set_in(n - 1, v_last); break;
+                case kind::tangent: set_in(n - 1, opt.end.velocity); end_given = true; break;
             }
         }
+        if (split) tangent_[n - 1] = in_[n - 1];  // the last vertex has no outgoing tangent
     }
-    if (keep != T(1))
+    if (keep != T(1)) {
+        // The shared array holds each vertex once; an open curve's last entry
+        // is the incoming end tangent.
         for (std::size_t i = 0; i < n; ++i) {
-            if (!(i == 0 && start_given)) out[i] *= keep;
-            if (!(i == n - 1 && end_given)) in[i] *= keep;
+            const bool given = (i == 0 && start_given) || (i == n - 1 && !closed_ && end_given);
+            if (!given) tangent_[i] *= keep;
         }
-
-    // 5. One cubic per segment, relative to its first point.
-    segments_.resize(nseg);
-    velocity_.resize(nseg);
-    for (std::size_t i = 0; i < nseg; ++i) {
-        const std::size_t j = (i + 1) % n;
-        velocity_[i] = {out[i], in[j]};
-        segments_[i] = segment_type::hermite(p[i], p[j], h[i] * out[i], h[i] * in[j], grid_[i], h[i]);
+        if (split)
+            for (std::size_t i = 0; i < n; ++i)
+                if (!(i == n - 1 && end_given)) in_[i] *= keep;
     }
     build_buckets();
 }
@@ -575,7 +705,7 @@ void catmull_rom<D, T>::build_buckets() {
     // with b(i) < b starts at or before any t in bucket b, none with b(i) > b
     // does. The owner of t is thus between the last segment starting before
     // bucket b and the last one starting in it.
-    const std::size_t nseg = segments_.size();
+    const std::size_t nseg = segment_count();
     if (nseg >= std::numeric_limits<std::uint32_t>::max())
         throw invalid_input("too many segments (" + std::to_string(nseg) + ")");
     const T span = grid_.back() - grid_.front();
@@ -583,20 +713,23 @@ void catmull_rom<D, T>::build_buckets() {
     bucket_scale_ = span > 0 ? T(nb) / span : T(0);
     bucket_max_ = T(nb - 1);
     if (!std::isfinite(bucket_scale_)) bucket_scale_ = 0;
-    std::vector<std::uint32_t> count(nb + 1, 0);  // count[b + 1] = segments starting in bucket b
+    // Count the segments starting in each bucket (count of bucket b at
+    // [b + 1]), then turn the counts into indices in place: no branch on
+    // the data, no temporary.
+    bucket_first_.assign(nb + 1, 0);
     for (std::size_t i = 0; i < nseg; ++i) {
         T x = (grid_[i] - grid_.front()) * bucket_scale_;
         x = x > T(0) ? x : T(0);
         x = x < bucket_max_ ? x : bucket_max_;
-        ++count[std::size_t(x) + 1];
+        ++bucket_first_[std::size_t(std::int64_t(x)) + 1];
     }
     // bucket_first_[b] = last segment starting before bucket b (or 0);
     // bucket_first_[b + 1] = last segment starting in or before bucket b.
-    bucket_first_.assign(nb + 1, 0);
     std::size_t before = 0;  // segments starting in buckets < b
     for (std::size_t b = 0; b < nb; ++b) {
+        const std::size_t count = bucket_first_[b + 1];
         bucket_first_[b] = std::uint32_t(before > 0 ? before - 1 : 0);
-        before += count[b + 1];
+        before += count;
     }
     bucket_first_[nb] = std::uint32_t(nseg - 1);
 }

@@ -164,10 +164,10 @@ nearest_result<D, T> no_result() noexcept {
 }
 
 /// Segment i's nearest point, in the curve's global parameter.
-template <std::size_t D, class T>
-nearest_result<D, T> solve_segment(std::span<const cubic_segment<D, T>> segments, std::span<const T> grid,
-                                   std::size_t i, const vec<D, T>& q) {
-    const cubic_segment<D, T>& s = segments[i];
+template <class Segments, std::size_t D, class T>
+nearest_result<D, T> solve_segment(const Segments& segments, std::span<const T> grid, std::size_t i,
+                                   const vec<D, T>& q) {
+    const cubic_segment<D, T> s = segments[i];
     const segment_nearest<T> r = nearest(s, q);
     // The end knot exactly at u = 1, and never past it by rounding.
     const T t = r.u == T(1) ? grid[i + 1] : std::min(s.t0 + r.u * s.h, grid[i + 1]);
@@ -291,7 +291,7 @@ private:
         std::uint32_t first = 0, count = 0, second = 0;
     };
 
-    std::span<const cubic_segment<D, T>> segments_;
+    typename catmull_rom<D, T>::segment_view segments_;
     std::span<const T> grid_;
     std::vector<node> nodes_;
     std::vector<std::uint32_t> order_;  // segment indices in leaf order

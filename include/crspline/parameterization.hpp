@@ -6,12 +6,18 @@
 // |P(0) - P(N-1)|^alpha.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "detail/format.hpp"
 #include "error.hpp"
@@ -69,6 +75,75 @@ std::vector<std::size_t> coincident_chords(std::span<const vec<D, T>> p, bool cl
     return out;
 }
 
+namespace detail {
+
+/// In place, x[i] = x[i] > 0 ? sqrt(x[i]) : 0 - x[i] for i < n: two square
+/// roots per instruction with SSE2 (correctly rounded, so the same bits as
+/// std::sqrt), which halves the cost of the knots' roots.
+template <class T>
+void sqrt_or_negate(T* x, std::size_t n) noexcept {
+    std::size_t i = 0;
+#if defined(__SSE2__)
+    if constexpr (std::is_same_v<T, double>) {
+        const __m128d zero = _mm_setzero_pd();
+        for (; i + 2 <= n; i += 2) {
+            const __m128d v = _mm_loadu_pd(x + i);
+            const __m128d pos = _mm_cmpgt_pd(v, zero);
+            const __m128d r = _mm_sqrt_pd(_mm_max_pd(v, zero));
+            _mm_storeu_pd(x + i, _mm_or_pd(_mm_and_pd(pos, r), _mm_andnot_pd(pos, _mm_sub_pd(zero, v))));
+        }
+    }
+#endif
+    for (; i < n; ++i) x[i] = x[i] > 0 ? std::sqrt(x[i]) : T(0) - x[i];
+}
+
+/// Writes the knot intervals, as knot_intervals() defines them, to h[0 ..
+/// chords): a window of three chords decides coincidence exactly as
+/// coincident_chords() does (the chord and its two neighbours set the
+/// scale), in one pass over the points that stores squared lengths; the
+/// roots are taken afterwards two at a time. Points must be finite.
+template <std::size_t D, class T>
+void fill_intervals(std::span<const vec<D, T>> p, double alpha, bool closed, T* h) {
+    const std::size_t n = p.size();
+    if (n < 2) return;
+    const std::size_t chords = closed ? n : n - 1;
+    if (alpha == 0) {
+        std::fill(h, h + chords, T(1));
+        return;
+    }
+    auto chord = [&](std::size_t i) { return p[i + 1 == n ? 0 : i + 1] - p[i]; };
+    const T tiny = T(8) * std::numeric_limits<T>::epsilon();  // as coincident()
+    // norm()'s range for the plain formula sqrt(d . d)
+    const T small = std::sqrt(std::numeric_limits<T>::min()) / std::numeric_limits<T>::epsilon();
+    const T big = std::sqrt(std::numeric_limits<T>::max() / T(D));
+    // 1. Per chord: 0 when coincident (the zero-chord-velocity limit); else
+    //    d . d where norm() takes the plain formula (m is its max_abs), or
+    //    -norm(d) where it rescales (rare; negated to tell it apart).
+    vec<D, T> d = chord(0);
+    const T m_first = max_abs(d);
+    T m = m_first;                                          // max_abs of chord i
+    T m_prev = closed ? max_abs(chord(chords - 1)) : T(0);  // of chord i - 1 (0: none)
+    T a_here = max_abs(p[0]);                               // max_abs of P(i)
+    for (std::size_t i = 0; i < chords; ++i) {
+        vec<D, T> d_next{};
+        T m_next = 0;  // of chord i + 1 (0: none)
+        if (i + 1 < chords) m_next = max_abs(d_next = chord(i + 1));
+        else if (closed) m_next = m_first;
+        const T a_next = max_abs(p[i + 1 == n ? 0 : i + 1]);
+        const T scale = std::max(std::max(a_here, a_next), std::max(m_prev, m_next));
+        const bool zero = m <= tiny * scale, plain = m > small && m < big;
+        h[i] = zero ? T(0) : plain ? dot(d, d) : -norm(d);
+        m_prev = m, m = m_next, d = d_next, a_here = a_next;
+    }
+    // 2. Lengths, then length^alpha.
+    sqrt_or_negate(h, chords);
+    if (alpha == 0.5) sqrt_or_negate(h, chords);
+    else if (alpha != 1)
+        for (std::size_t i = 0; i < chords; ++i) h[i] = T(std::pow(double(h[i]), alpha));
+}
+
+}  // namespace detail
+
 /// Knot intervals |P(i+1) - P(i)|^alpha, one per chord (n - 1, or n when
 /// closed, the last one wrapping to P(0)). Coincident chords (see
 /// coincident()) get a zero interval when alpha > 0.
@@ -78,28 +153,21 @@ std::vector<T> knot_intervals(std::span<const vec<D, T>> p, double alpha, bool c
     check_finite(p);
     const std::size_t n = p.size();
     std::vector<T> h(n < 2 ? 0 : (closed ? n : n - 1));
-    std::vector<bool> zero(h.size(), false);
-    if (alpha > 0)
-        for (std::size_t i : coincident_chords(p, closed)) zero[i] = true;
-    for (std::size_t i = 0; i < h.size(); ++i) {
-        if (alpha == 0) h[i] = 1;
-        else if (zero[i]) h[i] = 0;
-        else {
-            const T d = norm(p[(i + 1) % n] - p[i]);
-            h[i] = alpha == 1 ? d : alpha == 0.5 ? std::sqrt(d) : T(std::pow(double(d), alpha));
-        }
-    }
+    detail::fill_intervals(p, alpha, closed, h.data());
     return h;
 }
 
 /// Knots t(0) = 0, t(i+1) = t(i) + interval(i): n knots, n + 1 when closed.
 template <std::size_t D, class T>
 std::vector<T> knots(std::span<const vec<D, T>> p, double alpha, bool closed = false) {
-    const std::vector<T> h = knot_intervals(p, alpha, closed);
-    std::vector<T> t(p.empty() ? 0 : h.size() + 1);
+    check_alpha(alpha);
+    check_finite(p);
+    const std::size_t n = p.size();
+    std::vector<T> t(n == 0 ? 0 : n < 2 ? 1 : (closed ? n : n - 1) + 1);
     if (t.empty()) return t;
     t[0] = 0;
-    for (std::size_t i = 0; i < h.size(); ++i) t[i + 1] = t[i] + h[i];
+    detail::fill_intervals(p, alpha, closed, t.data() + 1);
+    for (std::size_t i = 1; i < t.size(); ++i) t[i] += t[i - 1];
     return t;
 }
 

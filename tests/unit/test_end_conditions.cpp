@@ -154,8 +154,11 @@ TEST(Tension, ScalesComputedTangentsByOneMinusTau) {
 template <std::size_t D>
 bool same_bits(const catmull_rom<D>& a, const catmull_rom<D>& b) {
     if (a.segment_count() != b.segment_count()) return false;
-    return std::memcmp(a.segments().data(), b.segments().data(),
-                       a.segment_count() * sizeof(typename catmull_rom<D>::segment_type)) == 0;
+    for (std::size_t i = 0; i < a.segment_count(); ++i) {
+        const auto sa = a.segment(i), sb = b.segment(i);
+        if (std::memcmp(&sa, &sb, sizeof sa) != 0) return false;
+    }
+    return true;
 }
 
 TEST(KochanekBartels, ZerosAreBitForBitThePlainCurve) {
