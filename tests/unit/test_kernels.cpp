@@ -1,0 +1,127 @@
+// The batch kernels: the run-time dispatched AVX2 kernels for 3-D doubles
+// (detail/x86_kernels.hpp) against the portable ones and against the
+// single-point path, and locate() against a plain binary search.
+//
+// Exactness: the AVX2 kernels do the same IEEE operations in the same order
+// as the portable code (no FMA), so positions must agree bit for bit; so
+// must sorted derivatives (both fold 1/h into the coefficients the same way).
+// On a CPU without AVX2 both sides run the portable code and the comparison
+// is trivially equal; the test says so.
+#include "test_support.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace {
+using namespace crspline;
+using crspline::test::random_polygon;
+using P3 = vec<3>;
+
+bool same_bits(const P3& a, const P3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+/// Runs f with the AVX2 kernels on (if the CPU has them) and off, restoring the setting.
+template <class F>
+auto both_paths(F&& f) {
+    bool& on = detail::avx2_enabled();
+    const bool had = on;
+    auto fast = f();
+    on = false;
+    auto portable = f();
+    on = had;
+    return std::pair(std::move(fast), std::move(portable));
+}
+
+/// Curves that exercise every storage case: open and closed, split
+/// incoming/outgoing tangents (KB continuity), tension, repeated points
+/// (zero knot intervals), and very uneven knots (crowded locate buckets).
+std::vector<catmull_rom<3>> curves(std::mt19937_64& rng) {
+    std::vector<catmull_rom<3>> out;
+    for (int rep = 0; rep < 6; ++rep) {
+        auto p = random_polygon<3>(rng, 7 + 13 * rep, rep % 2 ? 6.0 : 1.0);
+        if (rep >= 2) p[3] = p[2];  // a coincident pair: a zero interval
+        options<3> o{.alpha = rep % 3 == 0 ? 1.0 : 0.5, .closed = rep % 2 == 1};
+        if (rep == 4) o.tension = 0.3;
+        if (rep == 5) o.kb.continuity.assign(p.size(), 0.4);
+        out.emplace_back(p, o);
+    }
+    return out;
+}
+
+TEST(Kernels, LocateAgreesWithBinarySearch) {
+    CRSPLINE_SEEDED(s, 71);
+    std::mt19937_64 rng(s);
+    std::size_t checked = 0;
+    for (const auto& c : curves(rng)) {
+        const auto g = c.grid();
+        std::vector<double> t(g.begin(), g.end());  // every knot exactly
+        std::uniform_real_distribution<double> U(c.t_min() - 1, c.t_max() + 1);
+        for (int k = 0; k < 2000; ++k) t.push_back(U(rng));
+        for (double x : t) {
+            // The owner: the last segment starting at or before x, clamped.
+            const std::size_t ref = std::min<std::size_t>(
+                c.segment_count() - 1, std::size_t(std::max<std::ptrdiff_t>(0, std::upper_bound(g.begin(), g.end(), x) - g.begin() - 1)));
+            ASSERT_EQ(c.locate(x), ref) << "t = " << x;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 6u * 2000u);
+}
+
+TEST(Kernels, AvxAndPortableBatchesAgreeBitForBit) {
+    CRSPLINE_SEEDED(s, 72);
+    std::mt19937_64 rng(s);
+    if (!detail::avx2_enabled()) std::printf("note: no AVX2 on this CPU; both sides run the portable kernels\n");
+    std::size_t checked = 0;
+    for (const auto& c : curves(rng)) {
+        std::uniform_real_distribution<double> U(c.t_min(), c.t_max());
+        // Sizes around the vector widths and the head/tail cases, and one
+        // above the streaming threshold (non-temporal stores).
+        for (std::size_t n : {std::size_t(1), std::size_t(3), std::size_t(5), std::size_t(37), std::size_t(1000),
+                              detail::streaming_threshold / sizeof(P3) + 5}) {
+            std::vector<double> t(n);
+            for (auto& x : t) x = U(rng);
+            t[0] = c.t_max();  // the last knot must give the last point exactly
+            if (n > 2) t[n / 2] = c.grid()[c.segment_count() / 2];
+            std::vector<double> sorted = t;
+            std::sort(sorted.begin(), sorted.end());
+            for (std::size_t shift : {0u, 1u}) {  // output 32-byte aligned or not
+                for (int order : {0, 1}) {
+                    for (const auto* in : {&t, &sorted}) {
+                        const auto [fast, portable] = both_paths([&] {
+                            std::vector<P3> buf(n + shift);
+                            c.evaluate(std::span<const double>(*in), std::span<P3>(buf).subspan(shift), order);
+                            return buf;
+                        });
+                        for (std::size_t k = 0; k < n; k += (n > 5000 ? 97 : 1)) {
+                            ASSERT_TRUE(same_bits(fast[k + shift], portable[k + shift]))
+                                << "n " << n << " order " << order << " sorted " << (in == &sorted) << " k " << k;
+                            // Unsorted positions also match the single-point path.
+                            if (order == 0 && in == &t) {
+                                ASSERT_TRUE(same_bits(fast[k + shift], c.evaluate((*in)[k]))) << "k " << k;
+                            }
+                            ++checked;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_GT(checked, 6u * 2 * 2 * 2 * 1000u);
+}
+
+TEST(Kernels, AvxBatchReportsTheFirstBadIndex) {
+    const std::vector<P3> p{P3{{0, 0, 0}}, P3{{1, 0, 0}}, P3{{1, 1, 0}}, P3{{0, 1, 1}}};
+    const catmull_rom<3> c(p);
+    std::vector<double> t(100, c.t_min());
+    for (std::size_t k = 0; k < t.size(); ++k) t[k] = c.t_max() * double(k % 7) / 7.0;  // unsorted
+    t[41] = std::nan("");
+    t[63] = c.t_max() + 1;
+    try {
+        (void)c.evaluate(std::span<const double>(t));
+        FAIL() << "no error";
+    } catch (const out_of_domain& e) {
+        EXPECT_NE(std::string(e.what()).find("index 41"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
