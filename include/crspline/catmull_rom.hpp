@@ -578,16 +578,24 @@ private:
         constexpr std::size_t block = 32;
         std::size_t idx[block];
         T u[block];
+        const __m128d zero = _mm_setzero_pd(), top = _mm_set_sd(bmax);
         for (std::size_t k0 = 0; k0 < n; k0 += block) {
             const std::size_t m = std::min(block, n - k0);
+            std::uint32_t at_end = 0;  // bit q: t is the last knot
             for (std::size_t q = 0; q < m; ++q) {
                 const T x = t[k0 + q];
-                if (!(x >= lo && x <= hi)) [[unlikely]] check_t(x, k0 + q);
+                if (!(x >= lo && x < hi)) [[unlikely]] {
+                    if (x != hi) check_t(x, k0 + q);  // throws
+                    at_end |= std::uint32_t(1) << q;
+                }
+                // bucket_of() with maxsd / minsd (for a NaN first operand
+                // they return the second, as the comparisons there do).
+                const std::size_t b = std::size_t(std::int64_t(_mm_cvtsd_f64(
+                    _mm_min_sd(_mm_max_sd(_mm_set_sd((x - g[0]) * scale), zero), top))));
                 // locate_in's common case with one 4-lane compare of the
                 // knots lo .. lo + 3 (in the array when lo + 3 <= nseg): they
                 // increase, so the lanes with knot <= t are a prefix, and
                 // its length less one is the count locate_in adds up.
-                const std::size_t b = bucket_of(x, g[0], scale, bmax);
                 const std::size_t c0 = first[b], c1 = first[b + 1];
                 std::size_t i;
                 if (c1 - c0 <= 3 && c0 + 3 <= nseg) [[likely]] {
@@ -600,16 +608,20 @@ private:
                 idx[q] = i;
                 u[q] = (x - g[i]) * ih[i];
             }
+            // Each point is stored with one 4-lane store whose junk lane 3
+            // lands on the next point's x, which is written next; the
+            // batch's last point is stored in 3 lanes.
+            const std::size_t wide = k0 + m < n ? m : m - 1;
             for (std::size_t q = 0; q < m; ++q) {
                 const std::size_t i = idx[q], j = Closed && i + 1 == np ? 0 : i + 1;
-                if (t[k0 + q] == hi) {
-                    out[k0 + q] = last;  // the last knot gives the last point exactly
-                    continue;
-                }
                 // Open: i + 1 < np, so P[i] and V[i] are not the last entries.
-                detail::hermite_point3<!Closed>(P[i].v.data(), P[j].v.data(), V[i].v.data(), W[j].v.data(), g[i + 1] - g[i],
-                                       u[q], out[k0 + q].v.data());
+                const __m256d r = detail::hermite_point3<!Closed>(P[i].v.data(), P[j].v.data(), V[i].v.data(),
+                                                                  W[j].v.data(), g[i + 1] - g[i], u[q]);
+                if (q < wide) [[likely]] _mm256_storeu_pd(out[k0 + q].v.data(), r);
+                else detail::store3(out[k0 + q].v.data(), r);
             }
+            for (; at_end != 0; at_end &= at_end - 1)  // the last knot gives the last point exactly
+                out[k0 + std::size_t(__builtin_ctz(at_end))] = last;
         }
     }
 #endif

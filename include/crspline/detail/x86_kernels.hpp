@@ -133,14 +133,14 @@ CRSPLINE_TARGET_AVX2 inline __m256d load3(const double* p) noexcept {
 /// Position on the Hermite segment from p0 to p1 with tangents dx/dt v0, v1,
 /// knot interval h, at local u: the arithmetic of catmull_rom's segment
 /// (m = h v, c2 = 3 delta - 2 m0 - m1, c3 = m0 + m1 - 2 delta, Horner),
-/// per coordinate in lanes 0-2. Stored as 3 doubles at out.
+/// per coordinate in lanes 0-2 of the result (lane 3 is junk).
 ///
 /// Wide (p0 and v0 followed by at least one more double in memory, as when
 /// they are not the last entries of their arrays): those two are read with
 /// plain 4-lane loads, lane 3 ignored.
 template <bool Wide>
-CRSPLINE_TARGET_AVX2 inline void hermite_point3(const double* p0, const double* p1, const double* v0,
-                                                const double* v1, double h, double u, double* out) noexcept {
+CRSPLINE_TARGET_AVX2 inline __m256d hermite_point3(const double* p0, const double* p1, const double* v0,
+                                                   const double* v1, double h, double u) noexcept {
     const __m256d P0 = Wide ? _mm256_loadu_pd(p0) : load3(p0), P1 = load3(p1);
     const __m256d vh = _mm256_set1_pd(h), vu = _mm256_set1_pd(u);
     const __m256d m0 = _mm256_mul_pd(Wide ? _mm256_loadu_pd(v0) : load3(v0), vh), m1 = _mm256_mul_pd(load3(v1), vh);
@@ -148,8 +148,12 @@ CRSPLINE_TARGET_AVX2 inline void hermite_point3(const double* p0, const double* 
     const __m256d two = _mm256_set1_pd(2.0), three = _mm256_set1_pd(3.0);
     const __m256d c2 = _mm256_sub_pd(_mm256_sub_pd(_mm256_mul_pd(three, delta), _mm256_mul_pd(two, m0)), m1);
     const __m256d c3 = _mm256_sub_pd(_mm256_add_pd(m0, m1), _mm256_mul_pd(two, delta));
-    const __m256d r = _mm256_add_pd(
+    return _mm256_add_pd(
         P0, _mm256_mul_pd(vu, _mm256_add_pd(m0, _mm256_mul_pd(vu, _mm256_add_pd(c2, _mm256_mul_pd(vu, c3))))));
+}
+
+/// Stores lanes 0-2 of r at out.
+CRSPLINE_TARGET_AVX2 inline void store3(double* out, __m256d r) noexcept {
     _mm_storeu_pd(out, _mm256_castpd256_pd128(r));
     _mm_store_sd(out + 2, _mm256_extractf128_pd(r, 1));
 }
