@@ -99,6 +99,9 @@ def main():
     if es and fl:
         r = fl / es
         target("eval_sorted / store_floor (plain loop) throughput", f"{r:.2f}", ">= 0.8", r >= 0.8, f"by {0.8 / r:.2f}x")
+    rw = ns("store_floor/read_write")
+    if es and rw:
+        p(f"| (info) eval_sorted / store_floor/read_write throughput (reads t too) | {rw / es:.2f} | (info) | |")
     eb = ns("eval_sorted/boost")
     if es and eb:
         target("eval_sorted speed-up over Boost", f"{eb / es:.1f}x", ">= 10x", eb / es >= 10, f"by {10 / (eb / es):.2f}x")

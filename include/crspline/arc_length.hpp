@@ -47,7 +47,7 @@ struct gauss_legendre_8 {
 
 /// |dC/du| of a segment.
 template <std::size_t D, class T>
-T speed_du(const cubic_segment<D, T>& s, T u) noexcept {
+[[gnu::always_inline]] inline T speed_du(const cubic_segment<D, T>& s, T u) noexcept {
     return norm(s.c1 + u * (T(2) * s.c2 + T(3) * u * s.c3));
 }
 

@@ -46,28 +46,6 @@ constexpr T dot(const vec<D, T>& a, const vec<D, T>& b) noexcept {
     return s;
 }
 
-/// Euclidean norm. sqrt(a . a) as NumPy computes it (so knots agree with
-/// the `splines` package bit for bit in the common case), rescaled only when
-/// the squares would overflow or underflow.
-template <std::size_t D, class T>
-T norm(const vec<D, T>& a) noexcept {
-    if constexpr (D == 1) {
-        return std::abs(a[0]);
-    } else {
-        T m = 0;
-        for (std::size_t i = 0; i < D; ++i) m = std::max(m, std::abs(a[i]));
-        if (m == 0 || !std::isfinite(m)) return m;
-        // Plain formula while the squares neither overflow nor lose digits
-        // to subnormals (for double: about 1e-138 < m < 1e153).
-        const T small = std::sqrt(std::numeric_limits<T>::min()) / std::numeric_limits<T>::epsilon();
-        const T big = std::sqrt(std::numeric_limits<T>::max() / T(D));
-        if (m > small && m < big) return std::sqrt(dot(a, a));
-        T s = 0;
-        for (std::size_t i = 0; i < D; ++i) { const T x = a[i] / m; s += x * x; }
-        return m * std::sqrt(s);
-    }
-}
-
 /// Largest absolute component (the infinity norm).
 template <std::size_t D, class T>
 constexpr T max_abs(const vec<D, T>& a) noexcept {
@@ -76,6 +54,36 @@ constexpr T max_abs(const vec<D, T>& a) noexcept {
     // branch on the sign (which random data mispredicts half the time).
     for (std::size_t i = 0; i < D; ++i) m = std::max(m, std::max(a[i], -a[i]));
     return m;
+}
+
+namespace detail {
+/// norm() when the squares would overflow or lose digits: rescaled by m.
+template <std::size_t D, class T>
+[[gnu::noinline, gnu::cold]] T norm_rescaled(const vec<D, T>& a, T m) noexcept {
+    T s = 0;
+    for (std::size_t i = 0; i < D; ++i) { const T x = a[i] / m; s += x * x; }
+    return m * std::sqrt(s);
+}
+}  // namespace detail
+
+/// Euclidean norm. sqrt(a . a) as NumPy computes it (so knots agree with
+/// the `splines` package bit for bit in the common case), rescaled only when
+/// the squares would overflow or underflow. The common case is small enough
+/// to inline (arc-length integrands call it millions of times).
+template <std::size_t D, class T>
+[[gnu::always_inline]] inline T norm(const vec<D, T>& a) noexcept {
+    if constexpr (D == 1) {
+        return std::abs(a[0]);
+    } else {
+        const T m = max_abs(a);
+        // Plain formula while the squares neither overflow nor lose digits
+        // to subnormals (for double: about 1e-138 < m < 1e153).
+        const T lo = std::sqrt(std::numeric_limits<T>::min()) / std::numeric_limits<T>::epsilon();
+        const T hi = std::sqrt(std::numeric_limits<T>::max() / T(D));
+        if (m > lo && m < hi) [[likely]] return std::sqrt(dot(a, a));
+        if (m == 0 || !std::isfinite(m)) return m;
+        return detail::norm_rescaled(a, m);
+    }
 }
 
 /// Linear interpolation written as in the paper's pyramid:
