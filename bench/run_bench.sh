@@ -28,3 +28,8 @@ python3 bench/report.py "$results/cpp-$stamp.json" "$results/js-$stamp.json" | t
 cp "$results/cpp-$stamp.json" "$results/latest-cpp.json"
 cp "$results/js-$stamp.json" "$results/latest-js.json"
 cp "$results/table-$stamp.md" "$results/latest-table.md"
+# Instruction counts (callgrind): stable where the times above are not.
+if [[ -x "$build/crspline_instructions" ]] && command -v valgrind >/dev/null; then
+    echo
+    bench/count_instructions.sh "$build" | tee "$results/latest-instructions.md"
+fi
