@@ -425,18 +425,19 @@ private:
         T previous = t[0];
         while (k < n && !unsorted) {
             while (seg + 1 < nseg && t[k] >= grid_[seg + 1]) ++seg;
-            // At least t[k] itself (on unsorted input lower_bound may say
-            // otherwise): every point is evaluated and compared with the one
-            // before it, so unsorted input is always detected.
-            // Runs are capped at run_cap points: on unsorted input lower_bound
-            // can return an end far away, and the run would be evaluated in
-            // full before its sortedness flag is read.
+            // The kernel evaluates t[k] itself, then the points after it
+            // while they are below the segment's end knot: every point is
+            // evaluated and compared with the one before it, so unsorted
+            // input is always detected. (The end is found by the kernel as
+            // it goes: a binary search for it probed t far ahead of the
+            // kernel, cache misses that cost 13% of the time.) Runs are
+            // capped at run_cap points: unsorted input within one segment
+            // would otherwise be evaluated in full before its sortedness
+            // flag is read.
             const std::size_t cap = std::min(n, k + run_cap);
-            const std::size_t j = seg + 1 < nseg
-                ? std::max(k + 1, std::size_t(std::lower_bound(t.begin() + std::ptrdiff_t(k), t.begin() + std::ptrdiff_t(cap), grid_[seg + 1]) - t.begin()))
-                : cap;
-            unsorted = run(make_segment(seg), t.data() + k, out.data() + k, j - k, order, previous, stream);
-            k = j;
+            const T t_end = seg + 1 < nseg ? grid_[seg + 1] : std::numeric_limits<T>::infinity();
+            k += run(make_segment(seg), t.data() + k, out.data() + k, cap - k, order, previous, stream, t_end,
+                     unsorted);
         }
         if (stream) detail::store_fence();
         if (unsorted) return false;
@@ -468,8 +469,8 @@ private:
     // results are bit for bit those of the scalar code. Streaming (large
     // outputs) uses non-temporal stores when the output is 16-byte aligned.
     template <int Order, std::size_t... d>
-    static bool run_kernel(const segment_type& s, const T* t, point* out, std::size_t n, T& previous, bool stream,
-                           std::index_sequence<d...>) noexcept {
+    static std::size_t run_kernel(const segment_type& s, const T* t, point* out, std::size_t n, T& previous,
+                                  bool stream, T t_end, bool& unsorted, std::index_sequence<d...>) noexcept {
         const T t0 = s.t0, ih = s.inv_h;
         // Position: o, a, b, c = origin, c1, c2, c3. Velocity: 1/h folded in (o unused).
         const T o[D] = {s.origin[d]...};
@@ -498,7 +499,7 @@ private:
             // Head: at least one point (so t[k - 1] exists below), then points
             // until the output is 16-byte aligned (at most W more).
             if (n > 0) scalar_step();
-            for (std::size_t q = 0; q < W && k < n && reinterpret_cast<std::uintptr_t>(out + k) % 16 != 0; ++q)
+            for (std::size_t q = 0; q < W && k < n && t[k] < t_end && reinterpret_cast<std::uintptr_t>(out + k) % 16 != 0; ++q)
                 scalar_step();
             const bool aligned = reinterpret_cast<std::uintptr_t>(out + k) % 16 == 0;
             // Integer lanes, all ones while sorted: a compare and an and per
@@ -511,6 +512,12 @@ private:
                 for (; k + W <= n; k += W) {
                     V x, p;
                     std::memcpy(&x, t + k, sizeof x);
+                    // Stop before the first step with a point at or past the
+                    // end knot (or NaN): the scalar steps finish the run.
+                    const auto inside = x < t_end;
+                    bool all_inside = true;
+                    for (std::size_t j = 0; j < W; ++j) all_inside &= inside[j] != 0;
+                    if (!all_inside) break;
                     std::memcpy(&p, t + k - 1, sizeof p);  // the previous values, one lane behind
                     good &= (p <= x);
                     const V u = (x - t0) * ih;
@@ -528,16 +535,18 @@ private:
         }
 #endif
         (void)stream;
-        while (k < n) scalar_step();
+        if (k == 0 && n > 0) scalar_step();  // (without vector kernels: the run's first point)
+        while (k < n && t[k] < t_end) scalar_step();
         previous = prev;
-        return bad != 0;
+        unsorted = unsorted || bad != 0;
+        return k;
     }
 #if CRSPLINE_X86_DISPATCH
     // The AVX2 kernels (detail/x86_kernels.hpp) for 3-D doubles: the same
     // coefficients as run_kernel, the same operations 4 points at a time.
     template <int Order>
-    static bool run3_avx2(const segment_type& s, const T* t, point* out, std::size_t n, T& previous,
-                          bool stream) noexcept {
+    static std::size_t run3_avx2(const segment_type& s, const T* t, point* out, std::size_t n, T& previous,
+                                 bool stream, T t_end, bool& unsorted) noexcept {
         const T ih = s.inv_h;
         T o[3], a[3], b[3], c[3];
         for (std::size_t d = 0; d < 3; ++d) {
@@ -546,7 +555,8 @@ private:
             b[d] = Order == 0 ? s.c2[d] : T(2) * ih * s.c2[d];
             c[d] = Order == 0 ? s.c3[d] : T(3) * ih * s.c3[d];
         }
-        return detail::sorted_run3<Order>(o, a, b, c, s.t0, ih, t, reinterpret_cast<T*>(out), n, previous, stream);
+        return detail::sorted_run3<Order>(o, a, b, c, s.t0, ih, t, reinterpret_cast<T*>(out), n, previous, stream,
+                                          t_end, unsorted);
     }
 
     // Unsorted positions: position_unchecked with the domain check of the
@@ -626,25 +636,31 @@ private:
     }
 #endif
 
-    static bool run(const segment_type& s, const T* t, point* out, std::size_t n, int order, T& previous,
-                    bool stream) noexcept {
+    // One run on segment s: evaluates t[0], then the points after it while
+    // they are below t_end (at most n); returns how many. Sets unsorted
+    // when a point is not >= the one before it (or is NaN).
+    static std::size_t run(const segment_type& s, const T* t, point* out, std::size_t n, int order, T& previous,
+                           bool stream, T t_end, bool& unsorted) noexcept {
 #if CRSPLINE_X86_DISPATCH
         if constexpr (D == 3 && std::is_same_v<T, double>)
             if (order <= 1 && detail::avx2_enabled())
-                return order == 0 ? run3_avx2<0>(s, t, out, n, previous, stream)
-                                  : run3_avx2<1>(s, t, out, n, previous, stream);
+                return order == 0 ? run3_avx2<0>(s, t, out, n, previous, stream, t_end, unsorted)
+                                  : run3_avx2<1>(s, t, out, n, previous, stream, t_end, unsorted);
 #endif
         switch (order) {
-            case 0: return run_kernel<0>(s, t, out, n, previous, stream, std::make_index_sequence<D>{});
-            case 1: return run_kernel<1>(s, t, out, n, previous, stream, std::make_index_sequence<D>{});
+            case 0: return run_kernel<0>(s, t, out, n, previous, stream, t_end, unsorted, std::make_index_sequence<D>{});
+            case 1: return run_kernel<1>(s, t, out, n, previous, stream, t_end, unsorted, std::make_index_sequence<D>{});
             default: {
                 unsigned bad = 0;
-                for (std::size_t k = 0; k < n; ++k) {
+                std::size_t k = 0;
+                do {
                     bad |= unsigned(!(previous <= t[k]));
                     previous = t[k];
                     out[k] = s.dt(s.local(t[k]), order);
-                }
-                return bad != 0;
+                    ++k;
+                } while (k < n && t[k] < t_end);
+                unsorted = unsorted || bad != 0;
+                return k;
             }
         }
     }

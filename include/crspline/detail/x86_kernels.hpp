@@ -47,9 +47,9 @@ CRSPLINE_TARGET_AVX2 inline __m256d rot(const double* v, int r) noexcept {
 /// needed (3 permutes per 4 points instead of 6).
 template <int Order, bool Stream>
 CRSPLINE_TARGET_AVX2 std::size_t sorted_loop3(const double* o, const double* a, const double* b, const double* c,
-                                              double t0, double ih, const double* t, double* out, std::size_t k,
-                                              std::size_t n, __m256d& good) noexcept {
-    const __m256d vt0 = _mm256_set1_pd(t0), vih = _mm256_set1_pd(ih);
+                                              double t0, double ih, double t_end, const double* t, double* out,
+                                              std::size_t k, std::size_t n, __m256d& good) noexcept {
+    const __m256d vt0 = _mm256_set1_pd(t0), vih = _mm256_set1_pd(ih), vend = _mm256_set1_pd(t_end);
     // Coefficients in the three lane patterns xyzx, yzxy, zxyz (_mm256_setr_pd: lane 0 first).
     const __m256d A0 = rot(a, 0), A1 = rot(a, 1), A2 = rot(a, 2);
     const __m256d B0 = rot(b, 0), B1 = rot(b, 1), B2 = rot(b, 2);
@@ -58,7 +58,10 @@ CRSPLINE_TARGET_AVX2 std::size_t sorted_loop3(const double* o, const double* a, 
     const double* oo = Order == 0 ? o : zero;
     const __m256d O0 = rot(oo, 0), O1 = rot(oo, 1), O2 = rot(oo, 2);
     for (; k + 4 <= n; k += 4) {
-        const __m256d x = _mm256_loadu_pd(t + k), p = _mm256_loadu_pd(t + k - 1);
+        const __m256d x = _mm256_loadu_pd(t + k);
+        // Stop before a step with a point at or past the end knot (or NaN).
+        if (_mm256_movemask_pd(_mm256_cmp_pd(x, vend, _CMP_LT_OQ)) != 0xF) break;
+        const __m256d p = _mm256_loadu_pd(t + k - 1);
         good = _mm256_and_pd(good, _mm256_cmp_pd(p, x, _CMP_LE_OQ));  // false for NaN too
         const __m256d u = _mm256_mul_pd(_mm256_sub_pd(x, vt0), vih);
         const __m256d U0 = _mm256_permute4x64_pd(u, 0x40);  // u0 u0 u0 u1
@@ -84,13 +87,15 @@ CRSPLINE_TARGET_AVX2 std::size_t sorted_loop3(const double* o, const double* a, 
 
 /// One sorted run of a 3-D double segment, as catmull_rom's portable
 /// run_kernel: out[k] = o + u (a + u (b + u c)) (Order 0) or a + u (b + u c)
-/// (Order 1, o unused) with u = (t[k] - t0) ih, while checking t is sorted
-/// (returns true when it is not, or holds a NaN). out holds 3 n doubles.
-/// Large outputs (stream) use non-temporal stores once out is 32-byte aligned.
+/// (Order 1, o unused) with u = (t[k] - t0) ih, for t[0] and the points
+/// after it while they are below t_end (at most n); returns how many. Sets
+/// unsorted when t is not sorted there (or holds a NaN). out holds 3 n
+/// doubles. Large outputs (stream) use non-temporal stores once out is
+/// 32-byte aligned.
 template <int Order>
-CRSPLINE_TARGET_AVX2 bool sorted_run3(const double* o, const double* a, const double* b, const double* c,
-                                      double t0, double ih, const double* t, double* out, std::size_t n,
-                                      double& previous, bool stream) noexcept {
+CRSPLINE_TARGET_AVX2 std::size_t sorted_run3(const double* o, const double* a, const double* b, const double* c,
+                                             double t0, double ih, const double* t, double* out, std::size_t n,
+                                             double& previous, bool stream, double t_end, bool& unsorted) noexcept {
     unsigned bad = 0;
     double prev = previous;
     std::size_t k = 0;
@@ -109,19 +114,20 @@ CRSPLINE_TARGET_AVX2 bool sorted_run3(const double* o, const double* a, const do
     // until the output is 32-byte aligned (3 doubles per point: 24 bytes,
     // so 4 steps visit every 8-byte offset).
     if (n > 0) one(k++);
-    while (k < n && k < 4 && reinterpret_cast<std::uintptr_t>(out + 3 * k) % 32 != 0) one(k++);
+    while (k < n && k < 4 && t[k] < t_end && reinterpret_cast<std::uintptr_t>(out + 3 * k) % 32 != 0) one(k++);
     if (k + 4 <= n) {
         __m256d good = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
         if (stream && reinterpret_cast<std::uintptr_t>(out + 3 * k) % 32 == 0)
-            k = sorted_loop3<Order, true>(o, a, b, c, t0, ih, t, out, k, n, good);
+            k = sorted_loop3<Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, n, good);
         else
-            k = sorted_loop3<Order, false>(o, a, b, c, t0, ih, t, out, k, n, good);
+            k = sorted_loop3<Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, n, good);
         prev = t[k - 1];
         bad |= unsigned(_mm256_movemask_pd(good) != 0xF);
     }
-    while (k < n) one(k++);
+    while (k < n && t[k] < t_end) one(k++);
     previous = prev;
-    return bad != 0;
+    unsorted = unsorted || bad != 0;
+    return k;
 }
 
 /// Loads a 3-D double point into lanes 0-2 (lane 3 zero) without reading
