@@ -1,0 +1,56 @@
+// Where construction time goes at 10^6 points: user-mode time (the
+// arithmetic) against kernel time and page faults (first touch of the
+// arrays), per construction, from getrusage over 30 constructions after 3
+// warm-up ones. Same walk as crspline_bench; Boost is given a copy of the
+// points as in construct/boost. Printed by bench/run_bench.sh.
+#include <crspline/catmull_rom.hpp>
+
+#include <boost/math/interpolators/catmull_rom.hpp>
+
+#include <sys/resource.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+namespace {
+double seconds(const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); }
+}  // namespace
+
+int main() {
+    using v3 = crspline::vec<3, double>;
+    using bp = std::array<double, 3>;
+    std::mt19937_64 rng(20240601);
+    std::normal_distribution<double> g(0.0, 1.0);
+    const std::size_t n = 1'000'000;
+    std::vector<v3> p(n);
+    v3 x{};
+    for (auto& q : p) {
+        q = x;
+        v3 d{{g(rng), g(rng), g(rng)}};
+        x += (std::exp(g(rng)) / crspline::norm(d)) * d;
+    }
+    std::vector<bp> b(n);
+    for (std::size_t i = 0; i < n; ++i) b[i] = {p[i][0], p[i][1], p[i][2]};
+    volatile double sink = 0;
+    std::printf("| construct, 10^6 points | user ms | kernel ms | page faults |\n|---|---:|---:|---:|\n");
+    for (int lib = 0; lib < 2; ++lib) {
+        auto once = [&] {
+            if (lib == 0) sink = crspline::catmull_rom<3>(p).t_max();
+            else sink = boost::math::catmull_rom<bp>(std::vector<bp>(b), false, 0.5).max_parameter();
+        };
+        for (int w = 0; w < 3; ++w) once();
+        const int reps = 30;
+        rusage a{}, z{};
+        getrusage(RUSAGE_SELF, &a);
+        for (int r = 0; r < reps; ++r) once();
+        getrusage(RUSAGE_SELF, &z);
+        std::printf("| %s | %.1f | %.1f | %.0f |\n", lib == 0 ? "crspline" : "boost",
+                    1e3 * (seconds(z.ru_utime) - seconds(a.ru_utime)) / reps,
+                    1e3 * (seconds(z.ru_stime) - seconds(a.ru_stime)) / reps,
+                    double(z.ru_minflt - a.ru_minflt) / reps);
+    }
+    return 0;
+}
