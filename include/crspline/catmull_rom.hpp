@@ -333,22 +333,13 @@ private:
     const point& in_tangent(std::size_t j) const noexcept { return in_.empty() ? tangent_[j] : in_[j]; }
 
     /// Segment i, unchecked: the Hermite segment of segment_type::hermite
-    /// with 1/h from the table (no division).
+    /// with 1/h from the table (no division). (detail::hermite_point3 is the
+    /// same arithmetic in 4-lane registers.)
     segment_type make_segment(std::size_t i) const noexcept {
         const std::size_t j = next(i);
         const T h = grid_[i + 1] - grid_[i];
-        const point& p0 = points_[i];
-        const point m0 = h * out_tangent(i), m1 = h * in_tangent(j);
-        const point delta = points_[j] - p0;
-        segment_type s;
-        s.origin = p0;
-        s.c1 = m0;
-        s.c2 = T(3) * delta - T(2) * m0 - m1;
-        s.c3 = m0 + m1 - T(2) * delta;
-        s.t0 = grid_[i];
-        s.h = h;
-        s.inv_h = inv_h_[i];
-        return s;
+        return segment_type::hermite(points_[i], points_[j], h * out_tangent(i), h * in_tangent(j), grid_[i], h,
+                                     inv_h_[i]);
     }
     // locate(): bucket b = floor((t - t_min) * bucket_scale_) holds the
     // segments bucket_first_[b] .. bucket_first_[b + 1] as candidates.
@@ -468,15 +459,25 @@ private:
     // store loop). Same operations in the same order as the scalar loop: the
     // results are bit for bit those of the scalar code. Streaming (large
     // outputs) uses non-temporal stores when the output is 16-byte aligned.
+    // The kernels' coefficients. Position: o, a, b, c = origin, c1, c2, c3.
+    // Velocity: 1/h folded in (o unused).
+    template <int Order>
+    static void run_coefficients(const segment_type& s, T* o, T* a, T* b, T* c) noexcept {
+        const T ih = s.inv_h;
+        for (std::size_t d = 0; d < D; ++d) {
+            o[d] = s.origin[d];
+            a[d] = Order == 0 ? s.c1[d] : s.c1[d] * ih;
+            b[d] = Order == 0 ? s.c2[d] : T(2) * ih * s.c2[d];
+            c[d] = Order == 0 ? s.c3[d] : T(3) * ih * s.c3[d];
+        }
+    }
+
     template <int Order, std::size_t... d>
     static std::size_t run_kernel(const segment_type& s, const T* t, point* out, std::size_t n, T& previous,
                                   bool stream, T t_end, bool& unsorted, std::index_sequence<d...>) noexcept {
         const T t0 = s.t0, ih = s.inv_h;
-        // Position: o, a, b, c = origin, c1, c2, c3. Velocity: 1/h folded in (o unused).
-        const T o[D] = {s.origin[d]...};
-        const T a[D] = {(Order == 0 ? s.c1[d] : s.c1[d] * ih)...};
-        const T b[D] = {(Order == 0 ? s.c2[d] : T(2) * ih * s.c2[d])...};
-        const T c[D] = {(Order == 0 ? s.c3[d] : T(3) * ih * s.c3[d])...};
+        T o[D], a[D], b[D], c[D];
+        run_coefficients<Order>(s, o, a, b, c);
         auto horner = [&](auto u, std::size_t i) {
             if constexpr (Order == 0) return o[i] + u * (a[i] + u * (b[i] + u * c[i]));
             else return a[i] + u * (b[i] + u * c[i]);
@@ -547,20 +548,14 @@ private:
     template <int Order>
     static std::size_t run3_avx2(const segment_type& s, const T* t, point* out, std::size_t n, T& previous,
                                  bool stream, T t_end, bool& unsorted) noexcept {
-        const T ih = s.inv_h;
         T o[3], a[3], b[3], c[3];
-        for (std::size_t d = 0; d < 3; ++d) {
-            o[d] = s.origin[d];
-            a[d] = Order == 0 ? s.c1[d] : s.c1[d] * ih;
-            b[d] = Order == 0 ? s.c2[d] : T(2) * ih * s.c2[d];
-            c[d] = Order == 0 ? s.c3[d] : T(3) * ih * s.c3[d];
-        }
-        return detail::sorted_run3<Order>(o, a, b, c, s.t0, ih, t, reinterpret_cast<T*>(out), n, previous, stream,
+        run_coefficients<Order>(s, o, a, b, c);
+        return detail::sorted_run3<Order>(o, a, b, c, s.t0, s.inv_h, t, reinterpret_cast<T*>(out), n, previous, stream,
                                           t_end, unsorted);
     }
 
     // Unsorted positions: position_unchecked with the domain check of the
-    // batch, in blocks of 16 points. First every point of the block is
+    // batch, in blocks of 32 points. First every point of the block is
     // located (a chain of dependent loads and arithmetic per point, but
     // independent between points, so they overlap), then each is evaluated
     // on its segment's Hermite form in 4-lane registers. One loop doing both

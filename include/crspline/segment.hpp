@@ -30,6 +30,11 @@ struct cubic_segment {
     /// u-units (dC/du), on the knot interval [t0, t0 + h].
     static cubic_segment hermite(const point& p0, const point& p1, const point& m0, const point& m1,
                                  T t0, T h) noexcept {
+        return hermite(p0, p1, m0, m1, t0, h, h > 0 ? T(1) / h : T(0));
+    }
+    /// The same with 1 / h given (0 when h == 0), as a curve that stores it passes.
+    static cubic_segment hermite(const point& p0, const point& p1, const point& m0, const point& m1,
+                                 T t0, T h, T inv_h) noexcept {
         cubic_segment s;
         const point delta = p1 - p0;
         s.origin = p0;
@@ -38,7 +43,7 @@ struct cubic_segment {
         s.c3 = m0 + m1 - T(2) * delta;
         s.t0 = t0;
         s.h = h;
-        s.inv_h = h > 0 ? T(1) / h : T(0);
+        s.inv_h = inv_h;
         return s;
     }
 
