@@ -326,8 +326,8 @@ certificate<D, T> certify_intersection_free(const catmull_rom<D, T>& c, const ce
             cert.angle = ang;
             return fail(certify_rule::adjacent_angle,
                         "polygon angle at vertex " + std::to_string(k) + " is " +
-                            std::to_string(double(ang) * 180 / std::numbers::pi) + " degrees, not above " +
-                            std::to_string(opt.safe_angle * 180 / std::numbers::pi));
+                            detail::degrees(double(ang)) + " degrees, not above " +
+                            detail::degrees(opt.safe_angle));
         }
     }
 

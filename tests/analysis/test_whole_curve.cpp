@@ -236,6 +236,7 @@ TEST(Certify, ReportsTheFailedRuleAndWhetherItIntersects) {
         EXPECT_EQ(cert.failed_rule, certify_rule::adjacent_angle);  // 45 degrees at vertex 1
         EXPECT_EQ(cert.vertex, std::optional<std::size_t>(1));
         EXPECT_NEAR(cert.angle, pi / 4, 1e-12);
+        EXPECT_EQ(cert.detail, "polygon angle at vertex 1 is 45 degrees, not above 60");
         ASSERT_TRUE(cert.intersects.has_value());
         EXPECT_TRUE(*cert.intersects);
     }

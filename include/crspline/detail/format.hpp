@@ -22,4 +22,12 @@ inline std::string num(double x) {
 
 inline std::string num(std::size_t i) { return std::to_string(i); }
 
+/// An angle given in radians, in degrees to 4 significant digits (for
+/// messages: "19.94", "60").
+inline std::string degrees(double radians) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.4g", radians * (180 / 3.14159265358979323846));
+    return buf;
+}
+
 }  // namespace crspline::detail
