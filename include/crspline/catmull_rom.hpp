@@ -543,8 +543,9 @@ private:
         return k;
     }
 #if CRSPLINE_X86_DISPATCH
-    // The AVX2 kernels (detail/x86_kernels.hpp) for 3-D doubles: the same
-    // coefficients as run_kernel, the same operations 4 points at a time.
+    // The AVX2 kernels (detail/x86_kernels.hpp) for 3-D doubles and floats:
+    // the same coefficients as run_kernel, the same operations 4 (double) or
+    // 8 (float) points at a time.
     template <int Order>
     static std::size_t run3_avx2(const segment_type& s, const T* t, point* out, std::size_t n, T& previous,
                                  bool stream, T t_end, bool& unsorted) noexcept {
@@ -637,7 +638,7 @@ private:
     static std::size_t run(const segment_type& s, const T* t, point* out, std::size_t n, int order, T& previous,
                            bool stream, T t_end, bool& unsorted) noexcept {
 #if CRSPLINE_X86_DISPATCH
-        if constexpr (D == 3 && std::is_same_v<T, double>)
+        if constexpr (D == 3 && (std::is_same_v<T, double> || std::is_same_v<T, float>))
             if (order <= 1 && detail::avx2_enabled())
                 return order == 0 ? run3_avx2<0>(s, t, out, n, previous, stream, t_end, unsorted)
                                   : run3_avx2<1>(s, t, out, n, previous, stream, t_end, unsorted);

@@ -1,9 +1,10 @@
-// crspline: AVX2 batch kernels for 3-D double points, chosen at run time.
+// crspline: AVX2 batch kernels for 3-D points, chosen at run time.
 //
 // The library is built for the x86-64 baseline (SSE2: 2 doubles per
-// instruction). On a CPU with AVX2 the batch evaluation of 3-D double
-// points runs these kernels instead, 4 lanes per instruction, selected once
-// by a CPUID test (GCC/Clang function targets: nothing needs -mavx2 or
+// instruction). On a CPU with AVX2 the batch evaluation of 3-D points
+// (sorted t: double and float; unsorted t: double) runs these kernels
+// instead, 4 doubles or 8 floats per instruction, selected once by a CPUID
+// test (GCC/Clang function targets: nothing needs -mavx2 or
 // -march). They use no FMA, so each result goes through the same roundings,
 // in the same order, as the portable code: the same bits on every CPU.
 //
@@ -33,96 +34,159 @@ inline bool& avx2_enabled() noexcept {
     return on;
 }
 
-/// v rotated by r into lanes v[r] v[r+1] v[r+2] v[r] (indices mod 3).
-CRSPLINE_TARGET_AVX2 inline __m256d rot(const double* v, int r) noexcept {
-    return _mm256_setr_pd(v[r % 3], v[(r + 1) % 3], v[(r + 2) % 3], v[r % 3]);
-}
+/// 256-bit lanes of doubles (4) or floats (8) for the sorted kernels: the
+/// operations they use, and the two layouts that let them compute 3-D points
+/// in the order they are stored. A step covers W points, 3 W scalars, held
+/// in 3 registers exactly as laid out in memory (double: x0 y0 z0 x1 | y1 z1
+/// x2 y2 | z2 x3 y3 z3): lane j of register r holds scalar e = W r + j of
+/// the step, that is coordinate e % 3 of point e / 3. So the coefficients
+/// are arranged once per run (pattern) and u once per step (spread, one
+/// permute per register), and no result needs a shuffle.
+template <class T>
+struct lanes256;
 
-/// The vector loop of sorted_run3 from point k while 4 points remain;
-/// returns the new k. Stream: non-temporal stores (out + 3 k 32-byte aligned).
-///
-/// The lanes hold the output as it is laid out (x0 y0 z0 x1 | y1 z1 x2 y2 |
-/// z2 x3 y3 z3): u is spread to match with one permute per register and
-/// the coefficients are rotated once per run, so no shuffle of results is
-/// needed (3 permutes per 4 points instead of 6).
-template <int Order, bool Stream>
-CRSPLINE_TARGET_AVX2 std::size_t sorted_loop3(const double* o, const double* a, const double* b, const double* c,
-                                              double t0, double ih, double t_end, const double* t, double* out,
-                                              std::size_t k, std::size_t n, __m256d& good) noexcept {
-    const __m256d vt0 = _mm256_set1_pd(t0), vih = _mm256_set1_pd(ih), vend = _mm256_set1_pd(t_end);
-    // Coefficients in the three lane patterns xyzx, yzxy, zxyz (_mm256_setr_pd: lane 0 first).
-    const __m256d A0 = rot(a, 0), A1 = rot(a, 1), A2 = rot(a, 2);
-    const __m256d B0 = rot(b, 0), B1 = rot(b, 1), B2 = rot(b, 2);
-    const __m256d C0 = rot(c, 0), C1 = rot(c, 1), C2 = rot(c, 2);
-    const double zero[3] = {0.0, 0.0, 0.0};
-    const double* oo = Order == 0 ? o : zero;
-    const __m256d O0 = rot(oo, 0), O1 = rot(oo, 1), O2 = rot(oo, 2);
-    for (; k + 4 <= n; k += 4) {
-        const __m256d x = _mm256_loadu_pd(t + k);
+template <>
+struct lanes256<double> {
+    using V = __m256d;
+    static constexpr std::size_t W = 4;
+    static constexpr int all = 0xF;
+    CRSPLINE_TARGET_AVX2 static V set1(double x) noexcept { return _mm256_set1_pd(x); }
+    CRSPLINE_TARGET_AVX2 static V load(const double* p) noexcept { return _mm256_loadu_pd(p); }
+    CRSPLINE_TARGET_AVX2 static V add(V a, V b) noexcept { return _mm256_add_pd(a, b); }
+    CRSPLINE_TARGET_AVX2 static V sub(V a, V b) noexcept { return _mm256_sub_pd(a, b); }
+    CRSPLINE_TARGET_AVX2 static V mul(V a, V b) noexcept { return _mm256_mul_pd(a, b); }
+    CRSPLINE_TARGET_AVX2 static V both(V a, V b) noexcept { return _mm256_and_pd(a, b); }
+    CRSPLINE_TARGET_AVX2 static V ones() noexcept { return _mm256_castsi256_pd(_mm256_set1_epi64x(-1)); }
+    CRSPLINE_TARGET_AVX2 static V lt(V a, V b) noexcept { return _mm256_cmp_pd(a, b, _CMP_LT_OQ); }
+    CRSPLINE_TARGET_AVX2 static V le(V a, V b) noexcept { return _mm256_cmp_pd(a, b, _CMP_LE_OQ); }
+    CRSPLINE_TARGET_AVX2 static int mask(V a) noexcept { return _mm256_movemask_pd(a); }
+    CRSPLINE_TARGET_AVX2 static void store(double* p, V a) noexcept { _mm256_storeu_pd(p, a); }
+    CRSPLINE_TARGET_AVX2 static void stream(double* p, V a) noexcept { _mm256_stream_pd(p, a); }
+    CRSPLINE_TARGET_AVX2 static V pattern(const double* v, int r) noexcept {
+        return _mm256_setr_pd(v[(4 * r) % 3], v[(4 * r + 1) % 3], v[(4 * r + 2) % 3], v[(4 * r + 3) % 3]);
+    }
+    template <int r>
+    CRSPLINE_TARGET_AVX2 static V spread(V u) noexcept {
+        // lanes take u[e / 3] for e = 4 r .. 4 r + 3: 0 0 0 1 | 1 1 2 2 | 2 3 3 3
+        if constexpr (r == 0) return _mm256_permute4x64_pd(u, 0x40);
+        else if constexpr (r == 1) return _mm256_permute4x64_pd(u, 0xA5);
+        else return _mm256_permute4x64_pd(u, 0xFE);
+    }
+};
+
+template <>
+struct lanes256<float> {
+    using V = __m256;
+    static constexpr std::size_t W = 8;
+    static constexpr int all = 0xFF;
+    CRSPLINE_TARGET_AVX2 static V set1(float x) noexcept { return _mm256_set1_ps(x); }
+    CRSPLINE_TARGET_AVX2 static V load(const float* p) noexcept { return _mm256_loadu_ps(p); }
+    CRSPLINE_TARGET_AVX2 static V add(V a, V b) noexcept { return _mm256_add_ps(a, b); }
+    CRSPLINE_TARGET_AVX2 static V sub(V a, V b) noexcept { return _mm256_sub_ps(a, b); }
+    CRSPLINE_TARGET_AVX2 static V mul(V a, V b) noexcept { return _mm256_mul_ps(a, b); }
+    CRSPLINE_TARGET_AVX2 static V both(V a, V b) noexcept { return _mm256_and_ps(a, b); }
+    CRSPLINE_TARGET_AVX2 static V ones() noexcept { return _mm256_castsi256_ps(_mm256_set1_epi32(-1)); }
+    CRSPLINE_TARGET_AVX2 static V lt(V a, V b) noexcept { return _mm256_cmp_ps(a, b, _CMP_LT_OQ); }
+    CRSPLINE_TARGET_AVX2 static V le(V a, V b) noexcept { return _mm256_cmp_ps(a, b, _CMP_LE_OQ); }
+    CRSPLINE_TARGET_AVX2 static int mask(V a) noexcept { return _mm256_movemask_ps(a); }
+    CRSPLINE_TARGET_AVX2 static void store(float* p, V a) noexcept { _mm256_storeu_ps(p, a); }
+    CRSPLINE_TARGET_AVX2 static void stream(float* p, V a) noexcept { _mm256_stream_ps(p, a); }
+    CRSPLINE_TARGET_AVX2 static V pattern(const float* v, int r) noexcept {
+        float l[8];
+        for (int j = 0; j < 8; ++j) l[j] = v[(8 * r + j) % 3];
+        return _mm256_loadu_ps(l);
+    }
+    template <int r>
+    CRSPLINE_TARGET_AVX2 static V spread(V u) noexcept {
+        // lanes take u[e / 3] for e = 8 r .. 8 r + 7
+        const __m256i idx = _mm256_setr_epi32((8 * r) / 3, (8 * r + 1) / 3, (8 * r + 2) / 3, (8 * r + 3) / 3,
+                                              (8 * r + 4) / 3, (8 * r + 5) / 3, (8 * r + 6) / 3, (8 * r + 7) / 3);
+        return _mm256_permutevar8x32_ps(u, idx);
+    }
+};
+
+/// The vector loop of sorted_run3 from point k while W points remain and
+/// are below t_end; returns the new k. Stream: non-temporal stores (out + 3 k
+/// 32-byte aligned). 3 permutes per W points, no shuffle of results.
+template <class T, int Order, bool Stream>
+CRSPLINE_TARGET_AVX2 std::size_t sorted_loop3(const T* o, const T* a, const T* b, const T* c, T t0, T ih, T t_end,
+                                              const T* t, T* out, std::size_t k, std::size_t n,
+                                              typename lanes256<T>::V& good) noexcept {
+    using L = lanes256<T>;
+    using V = typename L::V;
+    constexpr std::size_t W = L::W;
+    const V vt0 = L::set1(t0), vih = L::set1(ih), vend = L::set1(t_end);
+    const V A0 = L::pattern(a, 0), A1 = L::pattern(a, 1), A2 = L::pattern(a, 2);
+    const V B0 = L::pattern(b, 0), B1 = L::pattern(b, 1), B2 = L::pattern(b, 2);
+    const V C0 = L::pattern(c, 0), C1 = L::pattern(c, 1), C2 = L::pattern(c, 2);
+    const T zero[3] = {T(0), T(0), T(0)};
+    const T* oo = Order == 0 ? o : zero;
+    const V O0 = L::pattern(oo, 0), O1 = L::pattern(oo, 1), O2 = L::pattern(oo, 2);
+    for (; k + W <= n; k += W) {
+        const V x = L::load(t + k);
         // Stop before a step with a point at or past the end knot (or NaN).
-        if (_mm256_movemask_pd(_mm256_cmp_pd(x, vend, _CMP_LT_OQ)) != 0xF) break;
-        const __m256d p = _mm256_loadu_pd(t + k - 1);
-        good = _mm256_and_pd(good, _mm256_cmp_pd(p, x, _CMP_LE_OQ));  // false for NaN too
-        const __m256d u = _mm256_mul_pd(_mm256_sub_pd(x, vt0), vih);
-        const __m256d U0 = _mm256_permute4x64_pd(u, 0x40);  // u0 u0 u0 u1
-        const __m256d U1 = _mm256_permute4x64_pd(u, 0xA5);  // u1 u1 u2 u2
-        const __m256d U2 = _mm256_permute4x64_pd(u, 0xFE);  // u2 u3 u3 u3
-        __m256d r0 = _mm256_add_pd(A0, _mm256_mul_pd(U0, _mm256_add_pd(B0, _mm256_mul_pd(U0, C0))));
-        __m256d r1 = _mm256_add_pd(A1, _mm256_mul_pd(U1, _mm256_add_pd(B1, _mm256_mul_pd(U1, C1))));
-        __m256d r2 = _mm256_add_pd(A2, _mm256_mul_pd(U2, _mm256_add_pd(B2, _mm256_mul_pd(U2, C2))));
+        if (L::mask(L::lt(x, vend)) != L::all) break;
+        good = L::both(good, L::le(L::load(t + k - 1), x));  // sorted; false for NaN too
+        const V u = L::mul(L::sub(x, vt0), vih);
+        const V U0 = L::template spread<0>(u), U1 = L::template spread<1>(u), U2 = L::template spread<2>(u);
+        V r0 = L::add(A0, L::mul(U0, L::add(B0, L::mul(U0, C0))));
+        V r1 = L::add(A1, L::mul(U1, L::add(B1, L::mul(U1, C1))));
+        V r2 = L::add(A2, L::mul(U2, L::add(B2, L::mul(U2, C2))));
         if constexpr (Order == 0) {
-            r0 = _mm256_add_pd(O0, _mm256_mul_pd(U0, r0));
-            r1 = _mm256_add_pd(O1, _mm256_mul_pd(U1, r1));
-            r2 = _mm256_add_pd(O2, _mm256_mul_pd(U2, r2));
+            r0 = L::add(O0, L::mul(U0, r0));
+            r1 = L::add(O1, L::mul(U1, r1));
+            r2 = L::add(O2, L::mul(U2, r2));
         }
-        double* dst = out + 3 * k;
+        T* dst = out + 3 * k;
         if constexpr (Stream) {
-            _mm256_stream_pd(dst, r0), _mm256_stream_pd(dst + 4, r1), _mm256_stream_pd(dst + 8, r2);
+            L::stream(dst, r0), L::stream(dst + W, r1), L::stream(dst + 2 * W, r2);
         } else {
-            _mm256_storeu_pd(dst, r0), _mm256_storeu_pd(dst + 4, r1), _mm256_storeu_pd(dst + 8, r2);
+            L::store(dst, r0), L::store(dst + W, r1), L::store(dst + 2 * W, r2);
         }
     }
     return k;
 }
 
-/// One sorted run of a 3-D double segment, as catmull_rom's portable
-/// run_kernel: out[k] = o + u (a + u (b + u c)) (Order 0) or a + u (b + u c)
-/// (Order 1, o unused) with u = (t[k] - t0) ih, for t[0] and the points
-/// after it while they are below t_end (at most n); returns how many. Sets
-/// unsorted when t is not sorted there (or holds a NaN). out holds 3 n
-/// doubles. Large outputs (stream) use non-temporal stores once out is
-/// 32-byte aligned.
-template <int Order>
-CRSPLINE_TARGET_AVX2 std::size_t sorted_run3(const double* o, const double* a, const double* b, const double* c,
-                                             double t0, double ih, const double* t, double* out, std::size_t n,
-                                             double& previous, bool stream, double t_end, bool& unsorted) noexcept {
+/// One sorted run of a 3-D segment (double or float), as catmull_rom's
+/// portable run_kernel: out[k] = o + u (a + u (b + u c)) (Order 0) or
+/// a + u (b + u c) (Order 1, o unused) with u = (t[k] - t0) ih, for t[0] and
+/// the points after it while they are below t_end (at most n); returns how
+/// many. Sets unsorted when t is not sorted there (or holds a NaN). out
+/// holds 3 n scalars. Large outputs (stream) use non-temporal stores once
+/// out is 32-byte aligned.
+template <int Order, class T>
+CRSPLINE_TARGET_AVX2 std::size_t sorted_run3(const T* o, const T* a, const T* b, const T* c, T t0, T ih,
+                                             const T* t, T* out, std::size_t n, T& previous, bool stream, T t_end,
+                                             bool& unsorted) noexcept {
+    using L = lanes256<T>;
+    constexpr std::size_t W = L::W;
     unsigned bad = 0;
-    double prev = previous;
+    T prev = previous;
     std::size_t k = 0;
     // One point, scalar: the same expression as the portable kernel.
     auto one = [&](std::size_t q) {
-        const double x = t[q];
+        const T x = t[q];
         bad |= unsigned(!(prev <= x));
         prev = x;
-        const double u = (x - t0) * ih;
+        const T u = (x - t0) * ih;
         for (int d = 0; d < 3; ++d) {
             if constexpr (Order == 0) out[3 * q + d] = o[d] + u * (a[d] + u * (b[d] + u * c[d]));
             else out[3 * q + d] = a[d] + u * (b[d] + u * c[d]);
         }
     };
-    // Head: at least one point (t[k - 1] is read below), then up to 3 more
-    // until the output is 32-byte aligned (3 doubles per point: 24 bytes,
-    // so 4 steps visit every 8-byte offset).
+    // Head: at least one point (t[k - 1] is read below), then up to W - 1
+    // more until the output is 32-byte aligned (a point is 3 scalars, so W
+    // steps visit every scalar-aligned offset).
     if (n > 0) one(k++);
-    while (k < n && k < 4 && t[k] < t_end && reinterpret_cast<std::uintptr_t>(out + 3 * k) % 32 != 0) one(k++);
-    if (k + 4 <= n) {
-        __m256d good = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+    while (k < n && k < W && t[k] < t_end && reinterpret_cast<std::uintptr_t>(out + 3 * k) % 32 != 0) one(k++);
+    if (k + W <= n) {
+        typename L::V good = L::ones();
         if (stream && reinterpret_cast<std::uintptr_t>(out + 3 * k) % 32 == 0)
-            k = sorted_loop3<Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, n, good);
+            k = sorted_loop3<T, Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, n, good);
         else
-            k = sorted_loop3<Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, n, good);
+            k = sorted_loop3<T, Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, n, good);
         prev = t[k - 1];
-        bad |= unsigned(_mm256_movemask_pd(good) != 0xF);
+        bad |= unsigned(L::mask(good) != L::all);
     }
     while (k < n && t[k] < t_end) one(k++);
     previous = prev;
