@@ -254,55 +254,42 @@ void store_floor_float(benchmark::State& state) {
 // ---------------------------------------------------------------------------
 // Evaluation.
 
-void eval_sorted_crspline(benchmark::State& state) {
+/// crspline's batch evaluation of t (position or first derivative) into
+/// the shared output buffer.
+void crspline_batch(benchmark::State& state, const std::vector<double>& t, int order) {
     const auto& c = curve();
-    const auto& t = t_sorted();
     auto& out = output<v3>(big);
     for (auto _ : state) {
-        c.evaluate(std::span<const double>(t), std::span<v3>(out), 0);
+        c.evaluate(std::span<const double>(t), std::span<v3>(out), order);
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
     state.SetItemsProcessed(std::int64_t(state.iterations() * big));
+}
+
+/// Boost, one call per point (it has no batch evaluation): f(curve, t).
+template <class F>
+void boost_loop(benchmark::State& state, const std::vector<double>& t, F f) {
+    const auto& b = bcurve();
+    auto& out = output<boost_point>(big);
+    for (auto _ : state) {
+        for (std::size_t k = 0; k < big; ++k) out[k] = f(b, boost_t(t[k]));
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(std::int64_t(state.iterations() * big));
+}
+
+const auto boost_position = [](const boost_curve& b, double t) { return b(t); };
+
+void eval_sorted_crspline(benchmark::State& state) {
+    crspline_batch(state, t_sorted(), 0);
     static const double agree = agreement_with_boost();
     state.counters["vs_boost_rel"] = agree;
 }
-
-void eval_sorted_boost(benchmark::State& state) {
-    const auto& b = bcurve();
-    const auto& t = t_sorted();
-    auto& out = output<boost_point>(big);
-    for (auto _ : state) {
-        for (std::size_t k = 0; k < big; ++k) out[k] = b(boost_t(t[k]));
-        benchmark::DoNotOptimize(out.data());
-        benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(std::int64_t(state.iterations() * big));
-}
-
-void eval_random_crspline(benchmark::State& state) {
-    const auto& c = curve();
-    const auto& t = t_random();
-    auto& out = output<v3>(big);
-    for (auto _ : state) {
-        c.evaluate(std::span<const double>(t), std::span<v3>(out), 0);
-        benchmark::DoNotOptimize(out.data());
-        benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(std::int64_t(state.iterations() * big));
-}
-
-void eval_random_boost(benchmark::State& state) {
-    const auto& b = bcurve();
-    const auto& t = t_random();
-    auto& out = output<boost_point>(big);
-    for (auto _ : state) {
-        for (std::size_t k = 0; k < big; ++k) out[k] = b(boost_t(t[k]));
-        benchmark::DoNotOptimize(out.data());
-        benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(std::int64_t(state.iterations() * big));
-}
+void eval_sorted_boost(benchmark::State& state) { boost_loop(state, t_sorted(), boost_position); }
+void eval_random_crspline(benchmark::State& state) { crspline_batch(state, t_random(), 0); }
+void eval_random_boost(benchmark::State& state) { boost_loop(state, t_random(), boost_position); }
 
 /// Derivative checks, printed beside deriv_sorted (on 10^4 interior t):
 /// each library's dx/dt against a central difference of its own positions,
@@ -343,29 +330,13 @@ deriv_errors derivative_errors() {
 }
 
 void deriv_sorted_crspline(benchmark::State& state) {
-    const auto& c = curve();
-    const auto& t = t_sorted();
-    auto& out = output<v3>(big);
-    for (auto _ : state) {
-        c.evaluate(std::span<const double>(t), std::span<v3>(out), 1);
-        benchmark::DoNotOptimize(out.data());
-        benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(std::int64_t(state.iterations() * big));
+    crspline_batch(state, t_sorted(), 1);
     static const deriv_errors e = derivative_errors();
     state.counters["fd_rel_err"] = e.crspline;
 }
 
 void deriv_sorted_boost(benchmark::State& state) {
-    const auto& b = bcurve();
-    const auto& t = t_sorted();
-    auto& out = output<boost_point>(big);
-    for (auto _ : state) {
-        for (std::size_t k = 0; k < big; ++k) out[k] = b.prime(boost_t(t[k]));
-        benchmark::DoNotOptimize(out.data());
-        benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(std::int64_t(state.iterations() * big));
+    boost_loop(state, t_sorted(), [](const boost_curve& b, double t) { return b.prime(t); });
     static const deriv_errors e = derivative_errors();
     state.counters["fd_rel_err"] = e.boost;
     state.counters["line_fd_rel_err"] = e.boost_line;
