@@ -9,10 +9,10 @@
 
 #include <sys/resource.h>
 
+#include "walk.hpp"
+
 #include <array>
-#include <cmath>
 #include <cstdio>
-#include <random>
 #include <vector>
 
 namespace {
@@ -22,16 +22,8 @@ double seconds(const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_
 int main() {
     using v3 = crspline::vec<3, double>;
     using bp = std::array<double, 3>;
-    std::mt19937_64 rng(20240601);
-    std::normal_distribution<double> g(0.0, 1.0);
     const std::size_t n = 1'000'000;
-    std::vector<v3> p(n);
-    v3 x{};
-    for (auto& q : p) {
-        q = x;
-        v3 d{{g(rng), g(rng), g(rng)}};
-        x += (std::exp(g(rng)) / crspline::norm(d)) * d;
-    }
+    const std::vector<v3> p = crspline_bench::walk(n);
     std::vector<bp> b(n);
     for (std::size_t i = 0; i < n; ++i) b[i] = {p[i][0], p[i][1], p[i][2]};
     volatile double sink = 0;

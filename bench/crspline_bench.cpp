@@ -17,6 +17,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "walk.hpp"
+
 #include <boost/math/interpolators/catmull_rom.hpp>
 
 #define GLM_ENABLE_EXPERIMENTAL
@@ -51,28 +53,13 @@ using boost_curve = boost::math::catmull_rom<boost_point>;
 
 constexpr std::size_t big = 10'000'000;  // points per batch in the eval cases
 constexpr std::size_t control_points = 1000;
-constexpr std::uint64_t seed = 20240601;
+constexpr std::uint64_t seed = crspline_bench::seed;
 
 // ---------------------------------------------------------------------------
 // Inputs, built once on first use (function-local statics: a filtered run
 // builds only what it needs).
 
-/// A 3-D random walk with uneven steps: unit directions, step lengths
-/// log-normal (exp of a standard normal, so consecutive chords differ by
-/// factors up to ~50). Seeded: the same curve on every run.
-template <class T = double>
-std::vector<vec<3, T>> walk(std::size_t n, std::uint64_t s = seed) {
-    std::mt19937_64 rng(s);
-    std::normal_distribution<double> g(0.0, 1.0);
-    std::vector<vec<3, T>> p(n);
-    vec<3, double> x{};
-    for (std::size_t i = 0; i < n; ++i) {
-        p[i] = {{T(x[0]), T(x[1]), T(x[2])}};
-        vec<3, double> d{{g(rng), g(rng), g(rng)}};
-        x += (std::exp(g(rng)) / crspline::norm(d)) * d;
-    }
-    return p;
-}
+using crspline_bench::walk;  // bench/walk.hpp
 
 std::vector<boost_point> to_boost(std::span<const v3> p) {
     std::vector<boost_point> b(p.size());

@@ -11,6 +11,8 @@
 #include <boost/math/interpolators/catmull_rom.hpp>
 #include <valgrind/callgrind.h>
 
+#include "walk.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -24,18 +26,7 @@ using v3 = crspline::vec<3, double>;
 using curve3 = crspline::catmull_rom<3, double>;
 using boost_point = std::array<double, 3>;
 
-std::vector<v3> walk(std::size_t n) {
-    std::mt19937_64 rng(20240601);
-    std::normal_distribution<double> g(0.0, 1.0);
-    std::vector<v3> p(n);
-    v3 x{};
-    for (auto& q : p) {
-        q = x;
-        v3 d{{g(rng), g(rng), g(rng)}};
-        x += (std::exp(g(rng)) / crspline::norm(d)) * d;
-    }
-    return p;
-}
+using crspline_bench::walk;  // bench/walk.hpp
 
 /// Runs f with collection on, dumps the counts as `name`, and prints the
 /// number of items so that the script can divide.
@@ -55,7 +46,7 @@ volatile double sink;
 
 int main() {
     const std::size_t n = 1'000'000;
-    const auto p = walk(1000);
+    const auto p = walk(1000);  // as crspline_bench
     const curve3 c(p);
     std::vector<boost_point> bp(p.size());
     for (std::size_t i = 0; i < p.size(); ++i) bp[i] = {p[i][0], p[i][1], p[i][2]};

@@ -584,7 +584,6 @@ private:
         constexpr std::size_t block = 32;
         std::size_t idx[block];
         T u[block];
-        const __m128d zero = _mm_setzero_pd(), top = _mm_set_sd(bmax);
         for (std::size_t k0 = 0; k0 < n; k0 += block) {
             const std::size_t m = std::min(block, n - k0);
             std::uint32_t at_end = 0;  // bit q: t is the last knot
@@ -594,10 +593,7 @@ private:
                     if (x != hi) check_t(x, k0 + q);  // throws
                     at_end |= std::uint32_t(1) << q;
                 }
-                // bucket_of() with maxsd / minsd (for a NaN first operand
-                // they return the second, as the comparisons there do).
-                const std::size_t b = std::size_t(std::int64_t(_mm_cvtsd_f64(
-                    _mm_min_sd(_mm_max_sd(_mm_set_sd((x - g[0]) * scale), zero), top))));
+                const std::size_t b = bucket_of(x, g[0], scale, bmax);
                 // locate_in's common case with one 4-lane compare of the
                 // knots lo .. lo + 3 (in the array when lo + 3 <= nseg): they
                 // increase, so the lanes with knot <= t are a prefix, and
@@ -765,7 +761,6 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
         if (split) in_[i] = x;
         else tangent_[i] = x;  // only at an open curve's last vertex, or equal to the outgoing one
     };
-    auto get_in = [&](std::size_t i) -> const point& { return split ? in_[i] : tangent_[i]; };
     auto tcb_at = [&](const std::vector<T>& a, std::size_t i) { return a.empty() ? T(0) : a[i]; };
     const bool plain = opt.kb.empty();
     if (last_kb > first_kb) {
@@ -805,7 +800,7 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
             using kind = typename end_condition<D, T>::kind;
             // natural: zero second derivative, from the other end's tangent.
             switch (opt.start.type) {
-                case kind::natural: tangent_[0] = (T(3) * v_first - get_in(1)) / T(2); break;
+                case kind::natural: tangent_[0] = (T(3) * v_first - in_tangent(1)) / T(2); break;
                 case kind::reflect: tangent_[0] = v_first; break;
                 case kind::tangent: tangent_[0] = opt.start.velocity; start_given = true; break;
             }
