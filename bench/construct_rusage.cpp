@@ -3,6 +3,10 @@
 // arrays), per construction, from getrusage over 30 constructions after 3
 // warm-up ones. Same walk as crspline_bench; Boost is given a copy of the
 // points as in construct/boost. Printed by bench/run_bench.sh.
+// Built twice: as is (large arrays advised for transparent huge pages, see
+// include/crspline/detail/storage.hpp) and with CRSPLINE_NO_HUGE_PAGES
+// (crspline_construct_rusage_4k, which prints only its crspline row), so
+// one run shows what the huge pages change.
 #include <crspline/catmull_rom.hpp>
 
 #include <boost/math/interpolators/catmull_rom.hpp>
@@ -13,6 +17,8 @@
 
 #include <array>
 #include <cstdio>
+#include <fstream>
+#include <string>
 #include <vector>
 
 namespace {
@@ -27,8 +33,18 @@ int main() {
     std::vector<bp> b(n);
     for (std::size_t i = 0; i < n; ++i) b[i] = {p[i][0], p[i][1], p[i][2]};
     volatile double sink = 0;
+#ifdef CRSPLINE_NO_HUGE_PAGES
+    const int libs = 1;
+    const char* name = "crspline, 4 KiB pages (CRSPLINE_NO_HUGE_PAGES)";
+#else
+    const int libs = 2;
+    const char* name = "crspline";
+    std::string thp = "unknown";
+    std::getline(std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled"), thp);
+    std::printf("Transparent huge pages on this machine: %s\n\n", thp.c_str());
     std::printf("| construct, 10^6 points | user ms | kernel ms | page faults |\n|---|---:|---:|---:|\n");
-    for (int lib = 0; lib < 2; ++lib) {
+#endif
+    for (int lib = 0; lib < libs; ++lib) {
         auto once = [&] {
             if (lib == 0) sink = crspline::catmull_rom<3>(p).t_max();
             else sink = boost::math::catmull_rom<bp>(std::vector<bp>(b), false, 0.5).max_parameter();
@@ -39,7 +55,7 @@ int main() {
         getrusage(RUSAGE_SELF, &a);
         for (int r = 0; r < reps; ++r) once();
         getrusage(RUSAGE_SELF, &z);
-        std::printf("| %s | %.1f | %.1f | %.0f |\n", lib == 0 ? "crspline" : "boost",
+        std::printf("| %s | %.1f | %.1f | %.0f |\n", lib == 0 ? name : "boost",
                     1e3 * (seconds(z.ru_utime) - seconds(a.ru_utime)) / reps,
                     1e3 * (seconds(z.ru_stime) - seconds(a.ru_stime)) / reps,
                     double(z.ru_minflt - a.ru_minflt) / reps);

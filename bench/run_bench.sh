@@ -30,7 +30,7 @@ cp "$results/js-$stamp.json" "$results/latest-js.json"
 cp "$results/table-$stamp.md" "$results/latest-table.md"
 # Construction at 10^6 points: user-mode vs kernel time and page faults.
 echo
-"$build/crspline_construct_rusage" | tee "$results/latest-construct.md"
+{ "$build/crspline_construct_rusage"; "$build/crspline_construct_rusage_4k"; } | tee "$results/latest-construct.md"
 # Instruction counts (callgrind): stable where the times above are not.
 if [[ -x "$build/crspline_instructions" ]] && command -v valgrind >/dev/null; then
     echo

@@ -23,6 +23,7 @@
 #endif
 
 #include "detail/format.hpp"
+#include "detail/storage.hpp"
 #include "detail/x86_kernels.hpp"
 #include "end_condition.hpp"
 #include "error.hpp"
@@ -321,11 +322,11 @@ private:
     // segment starting there and one tangent dx/dt (plus a bucket entry).
     // Segment i runs from points_[i] to points_[next(i)] with tangents
     // out_tangent(i) and in_tangent(next(i)).
-    std::vector<point> points_;
-    std::vector<T> grid_;
-    std::vector<T> inv_h_;        // 1 / (grid[i+1] - grid[i]), 0 for a zero interval; one per segment
-    std::vector<point> tangent_;  // outgoing dx/dt at each vertex; for an open curve the last is the incoming one
-    std::vector<point> in_;       // incoming dx/dt at each vertex, only when continuity can make it differ
+    detail::storage<point> points_;
+    detail::storage<T> grid_;
+    detail::storage<T> inv_h_;        // 1 / (grid[i+1] - grid[i]), 0 for a zero interval; one per segment
+    detail::storage<point> tangent_;  // outgoing dx/dt at each vertex; for an open curve the last is the incoming one
+    detail::storage<point> in_;       // incoming dx/dt at each vertex, only when continuity can make it differ
     bool closed_ = false;
 
     std::size_t next(std::size_t i) const noexcept { return i + 1 == points_.size() ? 0 : i + 1; }
@@ -343,7 +344,7 @@ private:
     }
     // locate(): bucket b = floor((t - t_min) * bucket_scale_) holds the
     // segments bucket_first_[b] .. bucket_first_[b + 1] as candidates.
-    std::vector<std::uint32_t> bucket_first_;
+    detail::storage<std::uint32_t> bucket_first_;
     T bucket_scale_ = 0, bucket_max_ = 0;
 
     void build_buckets();
@@ -702,7 +703,7 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
     const std::size_t nseg = closed_ ? n : n - 1;
     if (opt.grid) {
         check_grid(std::span<const T>(*opt.grid), nseg + 1, closed_);
-        grid_ = *opt.grid;
+        grid_.assign(opt.grid->begin(), opt.grid->end());
     } else {
         const double alpha = opt.alpha.value_or(centripetal);
         check_alpha(alpha);
