@@ -6,11 +6,15 @@
 // ~17000 (first touch of fresh memory, not arithmetic, was most of its
 // construction time), and evaluation at random on it misses the TLB far
 // less. Define CRSPLINE_NO_HUGE_PAGES to allocate everything plainly.
+// Arrays of trivial values are left uninitialized by resize(): the curve's
+// build writes every element once.
 #include <cstddef>
 #include <limits>
 #include <memory>
 #include <vector>
 #include <new>
+#include <type_traits>
+#include <utility>
 
 #if defined(__linux__) && !defined(__EMSCRIPTEN__) && !defined(CRSPLINE_NO_HUGE_PAGES)
 #include <sys/mman.h>
@@ -51,6 +55,17 @@ struct storage_allocator {
         }
 #endif
         std::allocator<T>{}.deallocate(p, n);
+    }
+    // resize() default-initializes: a double or index array is left for
+    // the build to write once instead of being zeroed first (vec still
+    // zeroes itself: its members have initializers).
+    template <class U>
+    void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... A>
+    void construct(U* p, A&&... a) {
+        ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
     }
     template <class U>
     bool operator==(const storage_allocator<U>&) const noexcept { return true; }
