@@ -2,10 +2,12 @@
 // The allocator behind a curve's per-point arrays. Small arrays come from
 // std::allocator. Large ones (at least large_array_bytes) are aligned to
 // 2 MiB and, on Linux, advised for transparent huge pages: a 10^6-point
-// curve then touches its ~68 MB in a few dozen page faults instead of
+// curve then takes ~900 page faults for its ~68 MB instead of
 // ~17000 (first touch of fresh memory, not arithmetic, was most of its
-// construction time), and evaluation at random on it misses the TLB far
-// less. Define CRSPLINE_NO_HUGE_PAGES to allocate everything plainly.
+// construction time: 49 ms against 23 ms on the bench machine, see
+// BENCHMARKS.md). Define CRSPLINE_NO_HUGE_PAGES to allocate everything
+// plainly, e.g. where a stall for memory compaction matters more than
+// throughput.
 // Arrays of trivial values are left uninitialized by resize(): the curve's
 // build writes every element once.
 #include <cstddef>
