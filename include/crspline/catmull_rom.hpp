@@ -137,14 +137,13 @@ public:
     T t_min() const noexcept { return grid_.front(); }
     T t_max() const noexcept { return grid_.back(); }
 
-    /// Segment i in power-basis form. The curve stores points, knots and one
-    /// tangent per vertex (about 60 bytes per point, not the 120 of a
-    /// cubic_segment): segments are computed on access, by the same
-    /// arithmetic every time, so every path sees the same bits.
+    /// Segment i in power-basis form. The curve stores points, knots, 1/h
+    /// and one tangent per vertex (68 bytes per 3-D point with its bucket
+    /// entry, not the 120 of a cubic_segment): segments are computed on
+    /// access, by the same arithmetic every time, so every path sees the
+    /// same bits.
     segment_type segment(std::size_t i) const {
-        if (i >= segment_count())
-            throw invalid_input("segment index " + std::to_string(i) + " is out of range (the curve has " +
-                                std::to_string(segment_count()) + " segments)");
+        check_segment_index(i);
         return make_segment(i);
     }
 
@@ -206,9 +205,7 @@ public:
     /// Tangents dx/dt at the start and end of segment i (equal at interior
     /// knots unless Kochanek-Bartels continuity breaks them).
     std::array<point, 2> tangents(std::size_t i) const {
-        if (i >= segment_count())
-            throw invalid_input("segment index " + std::to_string(i) + " is out of range (the curve has " +
-                                std::to_string(segment_count()) + " segments)");
+        check_segment_index(i);
         return {out_tangent(i), in_tangent(next(i))};
     }
 
@@ -389,6 +386,11 @@ private:
         return std::size_t(base - g);
     }
 
+    void check_segment_index(std::size_t i) const {
+        if (i >= segment_count())
+            throw invalid_input("segment index " + std::to_string(i) + " is out of range (the curve has " +
+                                std::to_string(segment_count()) + " segments)");
+    }
     static void check_order(int order) {
         if (order < 0 || order > 3)
             throw invalid_input("derivative order must be 0, 1, 2 or 3, got " + std::to_string(order));

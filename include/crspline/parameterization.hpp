@@ -113,9 +113,6 @@ void fill_intervals(std::span<const vec<D, T>> p, double alpha, bool closed, T* 
     }
     auto chord = [&](std::size_t i) { return p[i + 1 == n ? 0 : i + 1] - p[i]; };
     const T tiny = T(8) * std::numeric_limits<T>::epsilon();  // as coincident()
-    // norm()'s range for the plain formula sqrt(d . d)
-    const T small = std::sqrt(std::numeric_limits<T>::min()) / std::numeric_limits<T>::epsilon();
-    const T big = std::sqrt(std::numeric_limits<T>::max() / T(D));
     // 1. Per chord: 0 when coincident (the zero-chord-velocity limit); else
     //    d . d where norm() takes the plain formula (m is its max_abs), or
     //    -norm(d) where it rescales (rare; negated to tell it apart).
@@ -131,7 +128,7 @@ void fill_intervals(std::span<const vec<D, T>> p, double alpha, bool closed, T* 
         else if (closed) m_next = m_first;
         const T a_next = max_abs(p[i + 1 == n ? 0 : i + 1]);
         const T scale = std::max(std::max(a_here, a_next), std::max(m_prev, m_next));
-        const bool zero = m <= tiny * scale, plain = m > small && m < big;
+        const bool zero = m <= tiny * scale, plain = plain_norm_range<D>(m);
         h[i] = zero ? T(0) : plain ? dot(d, d) : -norm(d);
         m_prev = m, m = m_next, d = d_next, a_here = a_next;
     }

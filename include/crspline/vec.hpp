@@ -61,6 +61,17 @@ constexpr T max_abs(const vec<D, T>& a) noexcept {
 }
 
 namespace detail {
+/// Whether norm() takes the plain formula sqrt(a . a) for a vector whose
+/// largest absolute component is m: while the squares neither overflow nor
+/// lose digits to subnormals (for double: about 1e-138 < m < 1e153).
+/// fill_intervals() makes the same choice, so it must ask here.
+template <std::size_t D, class T>
+[[gnu::always_inline]] inline bool plain_norm_range(T m) noexcept {
+    const T lo = std::sqrt(std::numeric_limits<T>::min()) / std::numeric_limits<T>::epsilon();
+    const T hi = std::sqrt(std::numeric_limits<T>::max() / T(D));
+    return m > lo && m < hi;
+}
+
 /// norm() when the squares would overflow or lose digits: rescaled by m.
 template <std::size_t D, class T>
 [[gnu::noinline, gnu::cold]] T norm_rescaled(const vec<D, T>& a, T m) noexcept {
@@ -80,11 +91,7 @@ template <std::size_t D, class T>
         return std::abs(a[0]);
     } else {
         const T m = max_abs(a);
-        // Plain formula while the squares neither overflow nor lose digits
-        // to subnormals (for double: about 1e-138 < m < 1e153).
-        const T lo = std::sqrt(std::numeric_limits<T>::min()) / std::numeric_limits<T>::epsilon();
-        const T hi = std::sqrt(std::numeric_limits<T>::max() / T(D));
-        if (m > lo && m < hi) [[likely]] return std::sqrt(dot(a, a));
+        if (detail::plain_norm_range<D>(m)) [[likely]] return std::sqrt(dot(a, a));
         if (m == 0 || !std::isfinite(m)) return m;
         return detail::norm_rescaled(a, m);
     }
