@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # All web tests: the WASM module in node (test/module.test.mjs) and the
-# editor in headless Chromium (test/browser.test.mjs), with node's test
-# runner (TAP output). Builds the module first if it is missing or stale;
+# editor in headless Chromium (test/browser.test.mjs; test/editor.test.mjs:
+# the defects of issue 17, desktop and touch; test/designer.test.mjs: the
+# designer's keys and gestures; test/perf.test.mjs: frame times at 10^3 to
+# 10^5 points, reported, never asserted), with node's test runner (TAP output). Builds the module first if it is missing or stale;
 # installs playwright-core from package-lock.json if node_modules lacks it.
 # Needs: emscripten (apt), chromium (apt, /usr/bin/chromium or $CHROMIUM), node >= 18, npm.
 set -euo pipefail
 cd "$(dirname "$0")"
 [[ -d node_modules/playwright-core ]] || npm ci --no-audit --no-fund
 node -e "import('./test/support.mjs').then((m) => m.ensureBuilt())"
-exec node --test "$@" test/module.test.mjs test/browser.test.mjs
+exec node --test "$@" test/module.test.mjs test/browser.test.mjs test/editor.test.mjs

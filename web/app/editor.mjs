@@ -24,15 +24,25 @@ const ctx = canvas.getContext('2d');
 const state = {
   pts: new Float64Array(0),  // flat x, y in world units
   opts: { ...defaultOptions },
-  selected: -1,
+  selected: -1,              // the primary selected point (-1: none)
+  sel: new Set(),            // every selected point (marquee, Shift+click)
   overlays: { polygon: true, handles: false, cusps: true, intersections: true, volumes: false, comb: false, ticks: false },
   volumeKind: 'tightened',
   combScale: 0.5,
   tickSpacing: 25,
+  grid: false,               // draw a grid and snap to it
 };
-const view = { s: 1, ox: 0, oy: 0 };  // screen = world * s + o (CSS pixels)
+// The view: world point (x0, y0) is at the canvas' top-left corner, s CSS
+// pixels per world unit, y down (as SVG) or up (as `crspline plot`).
+// Everything reaches the canvas as (world - origin) * s, computed in double:
+// the canvas works in 32-bit floats, which far from the origin (1e8) would
+// put the curve on a staircase of 8-unit steps.
+const view = { s: 1, x0: 0, y0: 0, yUp: false };
+const ys = () => (view.yUp ? -1 : 1);
+const SX = (x) => (x - view.x0) * view.s;
+const SY = (y) => (y - view.y0) * view.s * ys();
 let version = 0;                      // bumps on every change of the curve
-let drag = null;                      // { index } or { pan: true, x, y }
+let drag = null;                      // the pointer gesture under way (see "Pointer")
 const undoStack = [], redoStack = [];
 const UNDO_LIMIT = 200;
 
@@ -166,7 +176,7 @@ const DRAG_GLOBAL_BUDGET = 50;
 let deferredGlobal = false;
 function requestGlobal() {
   if (!spline) { global = null; settle(); return; }
-  if (drag && !drag.pan && global && global.ms > DRAG_GLOBAL_BUDGET) { deferredGlobal = true; return; }
+  if (drag && drag.kind === 'move' && global && global.ms > DRAG_GLOBAL_BUDGET) { deferredGlobal = true; return; }
   deferredGlobal = false;
   const req = {
     version,
@@ -182,18 +192,19 @@ function requestGlobal() {
 const globalCurrent = () => global && global.version === version;
 
 // ---------------------------------------------------------------------------
-// Drawing
+// Drawing (in CSS pixels relative to the view origin; see `view`)
 // ---------------------------------------------------------------------------
 const colors = {
   curve: '#1f5fbf', polygon: '#9aa3b5', handle: '#e08a1e', point: '#c0392b', selected: '#111',
   cusp: '#d81b60', crossing: '#8e24aa', volume: 'rgba(46, 160, 67, 0.13)', volumeEdge: 'rgba(46, 160, 67, 0.55)',
-  comb: 'rgba(0, 150, 136, 0.55)', tick: '#37474f',
+  comb: 'rgba(0, 150, 136, 0.55)', tick: '#37474f', grid: '#eceff4', axis: '#d5dae3',
 };
 let frameRequested = false;
 const frameTimes = [];     // work per frame (ms): JS + WASM + canvas calls
 const curveTimes = [];     // of which the curve and per-segment caches (WASM)
 const frameIntervals = []; // time between frames while dragging (ms)
-let lastFrameAt = 0;
+const latencies = [];      // pointer event to the end of the frame that shows it (ms)
+let lastFrameAt = 0, pendingEventAt = 0;
 
 function requestFrame() {
   if (!frameRequested) {
@@ -218,11 +229,90 @@ function frame(now) {
   const t1 = performance.now();
   frameTimes.push(t1 - t0);
   curveTimes.push(tm - t0);
-  if (frameTimes.length > 600) { frameTimes.shift(); curveTimes.shift(); }
+  if (pendingEventAt) { latencies.push(t1 - pendingEventAt); pendingEventAt = 0; }
+  for (const a of [frameTimes, curveTimes, latencies]) if (a.length > 600) a.shift();
   if (drag && lastFrameAt) { frameIntervals.push(now - lastFrameAt); if (frameIntervals.length > 600) frameIntervals.shift(); }
   lastFrameAt = drag ? now : 0;
   updateStatus(t1 - t0);
   settle();
+}
+
+// Flat world x, y -> flat screen x, y (a reused buffer per use).
+const buffers = {};
+function toScreen(src, key) {
+  let out = buffers[key];
+  if (!out || out.length !== src.length) out = buffers[key] = new Float64Array(src.length);
+  const x0 = view.x0, y0 = view.y0, s = view.s, t = view.s * ys();
+  for (let i = 0; i < src.length; i += 2) { out[i] = (src[i] - x0) * s; out[i + 1] = (src[i + 1] - y0) * t; }
+  return out;
+}
+
+// A "nice" grid step (1, 2 or 5 times a power of ten) about 40 px wide.
+function gridStep() {
+  const raw = 40 / view.s, p = 10 ** Math.floor(Math.log10(raw)), m = raw / p;
+  return (m < 2 ? 2 : m < 5 ? 5 : 10) * p;
+}
+
+function drawGrid(w, h) {
+  const step = gridStep();
+  const path = new Path2D(), axes = new Path2D();
+  const xa = view.x0, xb = view.x0 + w / view.s;
+  const ya = Math.min(view.y0, view.y0 + (h / view.s) * ys()), yb = Math.max(view.y0, view.y0 + (h / view.s) * ys());
+  for (let i = Math.ceil(xa / step); i * step <= xb; ++i) {
+    const x = Math.round(SX(i * step)) + 0.5;
+    (i === 0 ? axes : path).moveTo(x, 0); (i === 0 ? axes : path).lineTo(x, h);
+  }
+  for (let i = Math.ceil(ya / step); i * step <= yb; ++i) {
+    const y = Math.round(SY(i * step)) + 0.5;
+    (i === 0 ? axes : path).moveTo(0, y); (i === 0 ? axes : path).lineTo(w, y);
+  }
+  ctx.lineWidth = 1;
+  ctx.strokeStyle = colors.grid;
+  ctx.stroke(path);
+  ctx.strokeStyle = colors.axis;
+  ctx.stroke(axes);
+}
+
+// Paths clipped to the canvas (plus a margin) before they reach it: zoomed
+// far in, a segment can be 10^6 px long, and Skia flattens (and dashes) all
+// of it, which takes seconds. Cubics are split (de Casteljau) until each
+// piece is either outside the view, dropped, or under 2048 px; lines are
+// clipped (Liang-Barsky). Consecutive pieces continue one subpath.
+function clipPen(path) {
+  const m = 16, X0 = -m, Y0 = -m, X1 = canvas.clientWidth + m, Y1 = canvas.clientHeight + m;
+  let lx = NaN, ly = NaN;  // where the subpath ends now
+  const start = (x, y) => { if (x !== lx || y !== ly) path.moveTo(x, y); };
+  const pen = {
+    line(ax, ay, bx, by) {
+      let t0 = 0, t1 = 1;
+      const dx = bx - ax, dy = by - ay;
+      for (const [p, q] of [[-dx, ax - X0], [dx, X1 - ax], [-dy, ay - Y0], [dy, Y1 - ay]]) {
+        if (p === 0) { if (q < 0) return; continue; }
+        const r = q / p;
+        if (p < 0) { if (r > t1) return; if (r > t0) t0 = r; } else { if (r < t0) return; if (r < t1) t1 = r; }
+      }
+      const sx = t0 === 0 ? ax : ax + t0 * dx, sy = t0 === 0 ? ay : ay + t0 * dy;
+      const ex = t1 === 1 ? bx : ax + t1 * dx, ey = t1 === 1 ? by : ay + t1 * dy;
+      start(sx, sy);
+      path.lineTo(ex, ey);
+      lx = ex; ly = ey;
+    },
+    cubic(x0, y0, x1, y1, x2, y2, x3, y3, depth) {
+      const xa = Math.min(x0, x1, x2, x3), xb = Math.max(x0, x1, x2, x3), ya = Math.min(y0, y1, y2, y3), yb = Math.max(y0, y1, y2, y3);
+      if (xb < X0 || xa > X1 || yb < Y0 || ya > Y1) return;  // outside: the hull contains the curve
+      if ((xb - xa < 2048 && yb - ya < 2048) || depth > 40) {
+        start(x0, y0);
+        path.bezierCurveTo(x1, y1, x2, y2, x3, y3);
+        lx = x3; ly = y3;
+        return;
+      }
+      const ax = (x0 + x1) / 2, ay = (y0 + y1) / 2, bx = (x1 + x2) / 2, by = (y1 + y2) / 2, cx = (x2 + x3) / 2, cy = (y2 + y3) / 2;
+      const dx = (ax + bx) / 2, dy = (ay + by) / 2, ex = (bx + cx) / 2, ey = (by + cy) / 2, fx = (dx + ex) / 2, fy = (dy + ey) / 2;
+      pen.cubic(x0, y0, ax, ay, dx, dy, fx, fy, depth + 1);
+      pen.cubic(fx, fy, ex, ey, cx, cy, x3, y3, depth + 1);
+    },
+  };
+  return pen;
 }
 
 function draw() {
@@ -230,73 +320,72 @@ function draw() {
   ctx.setTransform(1, 0, 0, 1, 0, 0);
   ctx.fillStyle = '#fff';
   ctx.fillRect(0, 0, canvas.width, canvas.height);
-  ctx.setTransform(dpr * view.s, 0, 0, dpr * view.s, dpr * view.ox, dpr * view.oy);
-  const px = 1 / view.s;  // one CSS pixel in world units
+  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
   ctx.lineJoin = 'round';
   ctx.lineCap = 'round';
-  const n = count(), P = state.pts, o = state.overlays;
+  if (state.grid) drawGrid(canvas.clientWidth, canvas.clientHeight);
+  const n = count(), o = state.overlays;
+  const P = toScreen(state.pts, 'pts');
+  const B = toScreen(bez, 'bez');
   const fresh = globalCurrent();
   const g = global && !global.error ? global : null;
 
   // Bounding volumes first (under everything).
   if (o.volumes && g && g.volumes) {
     ctx.globalAlpha = fresh ? 1 : 0.4;
-    drawVolumes(g.volumes, px);
+    drawVolumes(g.volumes);
     ctx.globalAlpha = 1;
   }
   if (o.polygon && n >= 2) {
-    const path = new Path2D();
-    path.moveTo(P[0], P[1]);
-    for (let i = 1; i < n; ++i) path.lineTo(P[2 * i], P[2 * i + 1]);
-    if (state.opts.closed) path.closePath();
-    if (n <= 2000) ctx.setLineDash([4 * px, 4 * px]);  // dashing 10^4 edges costs more than the curve
+    const path = new Path2D(), pen = clipPen(path);
+    for (let i = 1; i < n; ++i) pen.line(P[2 * i - 2], P[2 * i - 1], P[2 * i], P[2 * i + 1]);
+    if (state.opts.closed) pen.line(P[2 * n - 2], P[2 * n - 1], P[0], P[1]);
+    if (n <= 2000) ctx.setLineDash([4, 4]);  // dashing 10^4 edges costs more than the curve
     ctx.strokeStyle = colors.polygon;
-    ctx.lineWidth = px;
+    ctx.lineWidth = 1;
     ctx.stroke(path);
     ctx.setLineDash([]);
   }
-  if (o.comb && cache.comb) drawComb(px);
+  if (o.comb && cache.comb) drawComb();
   // The curve: one path of cubic Béziers.
-  const nb = bez.length / 8;
+  const nb = B.length / 8;
   if (nb > 0) {
-    const path = new Path2D();
-    path.moveTo(bez[0], bez[1]);
+    const path = new Path2D(), pen = clipPen(path);
     for (let i = 0; i < nb; ++i) {
       const k = 8 * i;
-      path.bezierCurveTo(bez[k + 2], bez[k + 3], bez[k + 4], bez[k + 5], bez[k + 6], bez[k + 7]);
+      pen.cubic(B[k], B[k + 1], B[k + 2], B[k + 3], B[k + 4], B[k + 5], B[k + 6], B[k + 7], 0);
     }
     ctx.strokeStyle = colors.curve;
     // Past a few thousand segments a 1-pixel line (Skia's hairline path)
     // rasterizes several times faster than a thick stroke.
-    ctx.lineWidth = (nb > 2000 ? 1 : 2.5) * px;
+    ctx.lineWidth = nb > 2000 ? 1 : 2.5;
     ctx.stroke(path);
   }
   if (o.handles && nb > 0) {
-    const lines = new Path2D(), dots = new Path2D();
-    const r = 2.5 * px;
+    const lines = new Path2D(), dots = new Path2D(), r = 2.5, pen = clipPen(lines);
     for (let i = 0; i < nb; ++i) {
       const k = 8 * i;
-      lines.moveTo(bez[k], bez[k + 1]); lines.lineTo(bez[k + 2], bez[k + 3]);
-      lines.moveTo(bez[k + 6], bez[k + 7]); lines.lineTo(bez[k + 4], bez[k + 5]);
-      dots.rect(bez[k + 2] - r, bez[k + 3] - r, 2 * r, 2 * r);
-      dots.rect(bez[k + 4] - r, bez[k + 5] - r, 2 * r, 2 * r);
+      pen.line(B[k], B[k + 1], B[k + 2], B[k + 3]);
+      pen.line(B[k + 6], B[k + 7], B[k + 4], B[k + 5]);
+      dots.rect(B[k + 2] - r, B[k + 3] - r, 2 * r, 2 * r);
+      dots.rect(B[k + 4] - r, B[k + 5] - r, 2 * r, 2 * r);
     }
     ctx.strokeStyle = colors.handle;
-    ctx.lineWidth = px;
+    ctx.lineWidth = 1;
     ctx.stroke(lines);
     ctx.fillStyle = colors.handle;
     ctx.fill(dots);
   }
   if (o.ticks && g && g.ticks) {
     ctx.globalAlpha = fresh ? 1 : 0.4;
-    const t = g.ticks, m = t.length / 4, path = new Path2D(), L = 5 * px;
-    for (let k = 0; k < m; ++k) {
-      const x = t[2 * k], y = t[2 * k + 1], tx = t[2 * (m + k)], ty = t[2 * (m + k) + 1];
+    const t = g.ticks, m = t.length / 4, path = new Path2D(), L = 5, k = ys();
+    for (let j = 0; j < m; ++j) {
+      const x = SX(t[2 * j]), y = SY(t[2 * j + 1]), tx = t[2 * (m + j)], ty = t[2 * (m + j) + 1] * k;
       path.moveTo(x - ty * L, y + tx * L);
       path.lineTo(x + ty * L, y - tx * L);
     }
     ctx.strokeStyle = colors.tick;
-    ctx.lineWidth = 1.2 * px;
+    ctx.lineWidth = 1.2;
     ctx.stroke(path);
     ctx.globalAlpha = 1;
   }
@@ -305,44 +394,52 @@ function draw() {
     ctx.fillStyle = colors.point;
     if (n > 2000) {
       // Many points: fillRect each (one path of 10^4 squares fills slower).
-      for (let i = 0; i < n; ++i) ctx.fillRect(P[2 * i] - px, P[2 * i + 1] - px, 2 * px, 2 * px);
+      for (let i = 0; i < n; ++i) ctx.fillRect(P[2 * i] - 1, P[2 * i + 1] - 1, 2, 2);
     } else {
-      const r = 4 * px, path = new Path2D();
+      const r = 4, path = new Path2D();
       for (let i = 0; i < n; ++i) path.rect(P[2 * i] - r, P[2 * i + 1] - r, 2 * r, 2 * r);
       ctx.fill(path);
     }
-    if (state.selected >= 0 && state.selected < n) {
-      const s = state.selected;
+    if (state.sel.size) {
       ctx.strokeStyle = colors.selected;
-      ctx.lineWidth = 1.5 * px;
-      ctx.strokeRect(P[2 * s] - 7 * px, P[2 * s + 1] - 7 * px, 14 * px, 14 * px);
+      ctx.lineWidth = 1.5;
+      for (const s of state.sel) if (s < n) ctx.strokeRect(P[2 * s] - 7, P[2 * s + 1] - 7, 14, 14);
     }
   }
   if (o.cusps && cache.cusps) {
-    const path = new Path2D(), r = 6 * px;
+    const path = new Path2D(), r = 6;
     for (const c of cache.cusps) {
       if (!c) continue;
-      for (let k = 0; k < c.length; k += 2) { path.moveTo(c[k] + r, c[k + 1]); path.arc(c[k], c[k + 1], r, 0, 2 * Math.PI); }
+      for (let k = 0; k < c.length; k += 2) { const x = SX(c[k]), y = SY(c[k + 1]); path.moveTo(x + r, y); path.arc(x, y, r, 0, 2 * Math.PI); }
     }
     ctx.strokeStyle = colors.cusp;
-    ctx.lineWidth = 2.5 * px;
+    ctx.lineWidth = 2.5;
     ctx.stroke(path);
   }
   if (o.intersections && g && g.intersections) {
     ctx.globalAlpha = fresh ? 1 : 0.4;
-    const x = g.intersections, path = new Path2D(), r = 6 * px;
-    for (let k = 0; k < x.length; k += 2) {
-      path.moveTo(x[k] - r, x[k + 1] - r); path.lineTo(x[k] + r, x[k + 1] + r);
-      path.moveTo(x[k] - r, x[k + 1] + r); path.lineTo(x[k] + r, x[k + 1] - r);
+    const X = g.intersections, path = new Path2D(), r = 6;
+    for (let k = 0; k < X.length; k += 2) {
+      const x = SX(X[k]), y = SY(X[k + 1]);
+      path.moveTo(x - r, y - r); path.lineTo(x + r, y + r);
+      path.moveTo(x - r, y + r); path.lineTo(x + r, y - r);
     }
     ctx.strokeStyle = colors.crossing;
-    ctx.lineWidth = 2.5 * px;
+    ctx.lineWidth = 2.5;
     ctx.stroke(path);
     ctx.globalAlpha = 1;
   }
+  if (drag && drag.kind === 'marquee') {
+    const [ax, ay, bx, by] = drag.rect;
+    ctx.setLineDash([3, 3]);
+    ctx.strokeStyle = colors.selected;
+    ctx.lineWidth = 1;
+    ctx.strokeRect(Math.min(ax, bx) + 0.5, Math.min(ay, by) + 0.5, Math.abs(bx - ax), Math.abs(by - ay));
+    ctx.setLineDash([]);
+  }
 }
 
-function drawVolumes(v, px) {
+function drawVolumes(v) {
   const boxes = new Path2D(), S = v.boxStride;
   for (let k = 0; k + S <= v.boxes.length; k += S) {
     const b = v.boxes;
@@ -351,14 +448,14 @@ function drawVolumes(v, px) {
     if (!(L > 0) || !Number.isFinite(w)) continue;
     const nx = -dy / L * w, ny = dx / L * w;
     const p0x = ax + l0 * dx, p0y = ay + l0 * dy, p1x = ax + l1 * dx, p1y = ay + l1 * dy;
-    boxes.moveTo(p0x + nx, p0y + ny);
-    boxes.lineTo(p1x + nx, p1y + ny);
-    boxes.lineTo(p1x - nx, p1y - ny);
-    boxes.lineTo(p0x - nx, p0y - ny);
+    boxes.moveTo(SX(p0x + nx), SY(p0y + ny));
+    boxes.lineTo(SX(p1x + nx), SY(p1y + ny));
+    boxes.lineTo(SX(p1x - nx), SY(p1y - ny));
+    boxes.lineTo(SX(p0x - nx), SY(p0y - ny));
     boxes.closePath();
   }
   for (let k = 0; k + v.ballStride <= v.balls.length; k += v.ballStride) {
-    const x = v.balls[k + 1], y = v.balls[k + 2], r = v.balls[k + 3];
+    const x = SX(v.balls[k + 1]), y = SY(v.balls[k + 2]), r = v.balls[k + 3] * view.s;
     if (!Number.isFinite(r)) continue;
     boxes.moveTo(x + r, y);
     boxes.arc(x, y, r, 0, 2 * Math.PI);
@@ -366,11 +463,11 @@ function drawVolumes(v, px) {
   ctx.fillStyle = colors.volume;
   ctx.fill(boxes, 'nonzero');
   ctx.strokeStyle = colors.volumeEdge;
-  ctx.lineWidth = px;
+  ctx.lineWidth = 1;
   ctx.stroke(boxes);
 }
 
-function drawComb(px) {
+function drawComb() {
   // Teeth point away from the centre of curvature, with length proportional
   // to the curvature: the 90th percentile of |k| gets 30 px times twice the
   // comb slider; the rare huge values (near cusps) are clipped at twice that.
@@ -380,19 +477,20 @@ function drawComb(px) {
   ks.sort((a, b) => a - b);
   const k90 = ks[Math.floor(0.9 * (ks.length - 1))] || ks[ks.length - 1];
   if (!(k90 > 0)) return;
-  const scale = (60 * state.combScale * px) / k90, kmax = 2 * k90;
+  const scale = (60 * state.combScale) / k90, kmax = 2 * k90, sg = ys();
   const teeth = new Path2D(), hull = new Path2D();
   for (const c of cache.comb) {
     for (let j = 0; j < c.length; j += 5) {
       const k = Math.max(-kmax, Math.min(kmax, c[j + 4]));
-      const tx = c[j] - c[j + 2] * k * scale, ty = c[j + 1] - c[j + 3] * k * scale;
-      teeth.moveTo(c[j], c[j + 1]);
+      const x = SX(c[j]), y = SY(c[j + 1]);
+      const tx = x - c[j + 2] * k * scale, ty = y - c[j + 3] * sg * k * scale;
+      teeth.moveTo(x, y);
       teeth.lineTo(tx, ty);
       if (j === 0) hull.moveTo(tx, ty); else hull.lineTo(tx, ty);
     }
   }
   ctx.strokeStyle = colors.comb;
-  ctx.lineWidth = px;
+  ctx.lineWidth = 1;
   ctx.stroke(teeth);
   ctx.stroke(hull);
 }
@@ -401,6 +499,9 @@ function drawComb(px) {
 // Status line
 // ---------------------------------------------------------------------------
 const fmt = (x, d = 2) => (Number.isFinite(x) ? x.toFixed(d) : String(x));
+// Significant digits, whatever the scale: 7 (at least 6 asked for), no
+// trailing exponent noise for ordinary magnitudes.
+const sig = (x, d = 7) => (Number.isFinite(x) ? (x === 0 ? '0' : x.toPrecision(d).replace(/e\+?/, 'e')) : String(x));
 function totalLength() {
   if (!cache.len) return NaN;
   let s = 0, c = 0;  // Kahan sum
@@ -415,12 +516,12 @@ function cuspCount() {
 }
 function updateStatus(ms) {
   const n = count();
-  $('status-points').textContent = `${n} point${n === 1 ? '' : 's'}`;
+  $('status-points').textContent = `${n} point${n === 1 ? '' : 's'}` + (state.sel.size > 1 ? ` (${state.sel.size} selected)` : '');
   const nseg = spline ? spline.segmentCount() : 0;
   $('status-segments').textContent = `${nseg} segment${nseg === 1 ? '' : 's'}`;
-  $('status-length').textContent = spline ? `length ${fmt(totalLength(), 3)}` : 'length —';
+  $('status-length').textContent = spline ? `length ${sig(totalLength())}` : 'length —';
   const cc = cuspCount();
-  $('status-cusps').textContent = cc === null ? 'cusps off' : `${cc} cusp${cc === 1 ? '' : 's'}`;
+  $('status-cusps').textContent = !spline ? 'cusps —' : cc === null ? 'cusps off' : `${cc} cusp${cc === 1 ? '' : 's'}`;
   const cert = $('status-cert');
   cert.className = '';
   if (!spline) {
@@ -439,8 +540,10 @@ function updateStatus(ms) {
     cert.textContent = `not certified (${c.failedRule.replace(/_/g, ' ')}: ${c.detail})${found}`;
     cert.className = c.intersects ? 'bad' : '';
   }
+  cert.title = cert.textContent;
   $('status-frame').textContent = `frame ${fmt(ms, 1)} ms`;
-  $('message').textContent = importMessage || splineError || '';
+  showMessage(importMessage || splineError || '');
+  syncPointFields();
   const d = document.body.dataset;
   d.points = n;
   d.segments = nseg;
@@ -451,29 +554,59 @@ function updateStatus(ms) {
   d.version = version;
 }
 
+// The message (import errors, the library's complaint about the curve):
+// shown over the canvas, announced (role=alert), closable.
+function showMessage(text) {
+  const m = $('message');
+  if (m.textContent !== text) m.textContent = text;
+  $('toast').hidden = !text;
+}
+
 // ---------------------------------------------------------------------------
-// Edits (each one undoable)
+// Edits and undo. An edit (or a gesture: a drag, a slider pull) starts with
+// beginEdit() and ends with endEdit(), which records one undo step only if
+// the points or options actually changed. Selecting is not an edit.
 // ---------------------------------------------------------------------------
-function snapshot() { return { pts: state.pts.slice(), opts: { ...state.opts }, selected: state.selected }; }
-function pushUndo() {
-  undoStack.push(snapshot());
+function snapshot() { return { pts: state.pts.slice(), opts: { ...state.opts }, selected: state.selected, sel: [...state.sel] }; }
+let pendingEdit = null;
+function sameAsNow(s) {
+  if (s.pts.length !== state.pts.length) return false;
+  for (let i = 0; i < s.pts.length; ++i) if (!Object.is(s.pts[i], state.pts[i])) return false;
+  for (const k of Object.keys(state.opts)) if (s.opts[k] !== state.opts[k]) return false;
+  return true;
+}
+function beginEdit() { if (!pendingEdit) pendingEdit = snapshot(); }
+function endEdit() {
+  if (!pendingEdit) return;
+  const s = pendingEdit;
+  pendingEdit = null;
+  if (sameAsNow(s)) return;
+  undoStack.push(s);
   if (undoStack.length > UNDO_LIMIT) undoStack.shift();
   redoStack.length = 0;
 }
+function edit(f) { beginEdit(); f(); endEdit(); }
 function restore(s) {
   state.pts = s.pts;
   state.opts = s.opts;
-  state.selected = Math.min(s.selected, count() - 1);
+  state.sel = new Set(s.sel.filter((i) => i < count()));
+  state.selected = s.selected < count() ? s.selected : -1;
   syncControls();
   markAll();
   changed();
 }
-function undo() { if (undoStack.length) { redoStack.push(snapshot()); restore(undoStack.pop()); } }
-function redo() { if (redoStack.length) { undoStack.push(snapshot()); restore(redoStack.pop()); } }
+function undo() { endEdit(); if (undoStack.length) { redoStack.push(snapshot()); restore(undoStack.pop()); } }
+function redo() { endEdit(); if (redoStack.length) { undoStack.push(snapshot()); restore(redoStack.pop()); } }
+
+function select(list, primary = list.length ? list[list.length - 1] : -1) {
+  state.sel = new Set(list);
+  state.selected = primary;
+  requestFrame();
+}
 
 function setPoints(flat) {
   state.pts = flat;
-  state.selected = -1;
+  select([]);
   markAll();
   changed();
 }
@@ -485,7 +618,7 @@ function insertPoint(k, x, y) {
   a.set(state.pts.subarray(2 * k), 2 * k + 2);
   const before = state.opts.closed ? n : n - 1;
   state.pts = a;
-  state.selected = k;
+  select([k]);
   if (before >= 1 && k > 0) { shiftCaches(k, +1); markAround(k, -3, 2); } else markAll();
   changed();
 }
@@ -497,25 +630,46 @@ function deletePoint(k) {
   a.set(state.pts.subarray(0, 2 * k));
   a.set(state.pts.subarray(2 * k + 2), 2 * k);
   state.pts = a;
-  state.selected = Math.min(k, n - 2);
+  const next = Math.min(k, n - 2);
+  select(next >= 0 ? [next] : []);
   if (n - 1 >= 3 && k > 0 && k < n - 1) { shiftCaches(k, -1); markAround(k, -3, 2); } else markAll();
   changed();
 }
 
-function movePoint(k, x, y) {
-  state.pts[2 * k] = x;
-  state.pts[2 * k + 1] = y;
-  markAround(k);
+function deleteSelected() {
+  const sel = [...state.sel].filter((i) => i < count());
+  if (!sel.length) return;
+  if (sel.length === 1) { edit(() => deletePoint(sel[0])); return; }
+  edit(() => {
+    const drop = new Set(sel), keep = [];
+    for (let i = 0; i < count(); ++i) if (!drop.has(i)) keep.push(state.pts[2 * i], state.pts[2 * i + 1]);
+    state.pts = Float64Array.from(keep);
+    select([]);
+    markAll();
+    changed();
+  });
+}
+
+// Move points `idx` to their positions in `from` plus (dx, dy).
+function movePoints(idx, from, dx, dy) {
+  for (let j = 0; j < idx.length; ++j) {
+    const k = idx[j];
+    state.pts[2 * k] = from[2 * j] + dx;
+    state.pts[2 * k + 1] = from[2 * j + 1] + dy;
+    if (idx.length <= 64) markAround(k);
+  }
+  if (idx.length > 64) markAll();
   changed();
 }
 
 function setOption(key, value) {
   if (state.opts[key] === value) return;
-  pushUndo();
-  state.opts = { ...state.opts, [key]: value };
-  syncControls();
-  markAll();
-  changed();
+  edit(() => {
+    state.opts = { ...state.opts, [key]: value };
+    syncControls();
+    markAll();
+    changed();
+  });
 }
 
 // The point after `k` on the curve: the middle (in t) of segment k, or past
@@ -524,103 +678,341 @@ function insertAfter(k) {
   const n = count();
   if (n === 0) return;
   if (k < 0) k = n - 1;
-  pushUndo();
-  const nseg = spline ? spline.segmentCount() : 0;
-  if (spline && k < nseg) {
-    const g = spline.grid();
-    const p = spline.evaluate((g[k] + g[k + 1]) / 2);
-    insertPoint(k + 1, p[0], p[1]);
-  } else {
-    const x = state.pts[2 * k], y = state.pts[2 * k + 1];
-    const dx = n > 1 ? x - state.pts[2 * k - 2] : 40 / view.s, dy = n > 1 ? y - state.pts[2 * k - 1] : 0;
-    insertPoint(k + 1, x + dx / 2, y + dy / 2);
-  }
+  edit(() => {
+    const nseg = spline ? spline.segmentCount() : 0;
+    if (spline && k < nseg) {
+      const g = spline.grid();
+      const p = spline.evaluate((g[k] + g[k + 1]) / 2);
+      insertPoint(k + 1, p[0], p[1]);
+    } else {
+      const x = state.pts[2 * k], y = state.pts[2 * k + 1];
+      const dx = n > 1 ? x - state.pts[2 * k - 2] : 40 / view.s, dy = n > 1 ? y - state.pts[2 * k - 1] : 0;
+      insertPoint(k + 1, x + dx / 2, y + dy / 2);
+    }
+  });
 }
 
 // ---------------------------------------------------------------------------
-// Pointer and keyboard
+// View
 // ---------------------------------------------------------------------------
-function toWorld(e) {
-  const r = canvas.getBoundingClientRect();
-  const sx = e.clientX - r.left - canvas.clientLeft, sy = e.clientY - r.top - canvas.clientTop;
-  return [(sx - view.ox) / view.s, (sy - view.oy) / view.s];
+// Zoom limits, relative to the scale that fits the points: 1e-3 to 1e6
+// times it (and never so far in that one pixel is under ~16 ulps of the
+// coordinates, where the curve itself stops being smooth).
+function scaleLimits() {
+  const f = fitScale();
+  let m = Math.max(Math.abs(view.x0), Math.abs(view.y0));
+  for (let i = 0; i < Math.min(state.pts.length, 4); ++i) m = Math.max(m, Math.abs(state.pts[i]));
+  const ulpLimit = m > 0 ? 1 / (16 * m * Number.EPSILON) : Infinity;
+  return [f * 1e-3, Math.min(f * 1e6, Math.max(ulpLimit, f))];
 }
-function hit(x, y) {
-  const P = state.pts, n = count(), r = 9 / view.s;
+function zoomAt(px, py, factor) {
+  const [lo, hi] = scaleLimits();
+  const s = Math.min(hi, Math.max(lo, view.s * factor));
+  const wx = view.x0 + px / view.s, wy = view.y0 + (py * ys()) / view.s;
+  view.s = s;
+  view.x0 = wx - px / s;
+  view.y0 = wy - (py * ys()) / s;
+  requestFrame();
+}
+function panBy(dx, dy) {
+  view.x0 -= dx / view.s;
+  view.y0 -= (dy * ys()) / view.s;
+  requestFrame();
+}
+function bounds() {
+  const n = count();
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  for (let i = 0; i < n; ++i) {
+    x0 = Math.min(x0, state.pts[2 * i]); x1 = Math.max(x1, state.pts[2 * i]);
+    y0 = Math.min(y0, state.pts[2 * i + 1]); y1 = Math.max(y1, state.pts[2 * i + 1]);
+  }
+  return [x0, y0, x1, y1];
+}
+function fitScale() {
+  const n = count();
+  if (n === 0) return 1;
+  const [x0, y0, x1, y1] = bounds();
+  const w = canvas.clientWidth, h = canvas.clientHeight;
+  const ext = Math.max(x1 - x0, y1 - y0);
+  const tiny = Math.max(ext, Math.abs(x0), Math.abs(y0), 1e-300) * 1e-9;
+  const s = Math.min(Math.max(w - 80, 40) / Math.max(x1 - x0, tiny), Math.max(h - 80, 40) / Math.max(y1 - y0, tiny));
+  return Number.isFinite(s) && s > 0 ? s : 1;
+}
+function fit() {
+  const n = count();
+  const w = canvas.clientWidth, h = canvas.clientHeight;
+  if (n === 0) { view.s = 1; view.x0 = 0; view.y0 = view.yUp ? h : 0; requestFrame(); return; }
+  const [x0, y0, x1, y1] = bounds();
+  view.s = fitScale();
+  view.x0 = (x0 + x1) / 2 - w / 2 / view.s;
+  view.y0 = (y0 + y1) / 2 - (ys() * h) / 2 / view.s;
+  requestFrame();
+}
+function setYUp(on) {
+  if (view.yUp === on) return;
+  // Keep the world point at the canvas centre where it is.
+  const h = canvas.clientHeight, cy = view.y0 + (ys() * h) / 2 / view.s;
+  view.yUp = on;
+  view.y0 = cy - (ys() * h) / 2 / view.s;
+  $('y-up').checked = on;
+  requestFrame();
+}
+
+// ---------------------------------------------------------------------------
+// Pointer: mouse, pen and touch through pointer events (touch-action: none
+// on the canvas; the pointer is captured). Gestures (`drag`):
+//   move     points `idx` follow the pointer (from their positions `from`)
+//   pan      the view follows the pointer (right/middle button, Space+drag,
+//            one finger on empty canvas once it moves)
+//   tap      a finger on empty canvas, not yet moved: a point on release
+//   pinch    two fingers: zoom about them and pan with them
+//   marquee  Shift+drag on empty canvas: select the points inside
+// ---------------------------------------------------------------------------
+const pointers = new Map();  // pointerId -> [x, y] in canvas CSS px
+function local(e) {
+  const r = canvas.getBoundingClientRect();
+  return [e.clientX - r.left - canvas.clientLeft, e.clientY - r.top - canvas.clientTop];
+}
+const toWorld = (px, py) => [view.x0 + px / view.s, view.y0 + (py * ys()) / view.s];
+function snap(x, y) {
+  if (!state.grid) return [x, y];
+  const g = gridStep();
+  return [Math.round(x / g) * g, Math.round(y / g) * g];
+}
+// The point under screen position (px, py) within r CSS px: compared in
+// screen space (the differences are small, exact enough far from 0).
+function hit(px, py, r = 9) {
+  const P = state.pts, n = count(), k = view.s * ys();
   let best = -1, bd = r * r;
   for (let i = 0; i < n; ++i) {
-    const dx = P[2 * i] - x, dy = P[2 * i + 1] - y, d = dx * dx + dy * dy;
+    const dx = (P[2 * i] - view.x0) * view.s - px, dy = (P[2 * i + 1] - view.y0) * k - py, d = dx * dx + dy * dy;
     if (d <= bd) { bd = d; best = i; }
   }
   return best;
 }
+// The nearest curve point to screen (px, py) if within r px: { segment, point }.
+function nearCurve(px, py, r) {
+  if (!spline) return null;
+  const near = spline.nearest(toWorld(px, py));
+  return Math.sqrt(near.distanceSq) * view.s <= r ? near : null;
+}
+let spaceDown = false;
+
+function startMove(idx, px, py) {
+  beginEdit();
+  const from = new Float64Array(2 * idx.length);
+  idx.forEach((k, j) => { from[2 * j] = state.pts[2 * k]; from[2 * j + 1] = state.pts[2 * k + 1]; });
+  drag = { kind: 'move', idx, from, start: toWorld(px, py), lead: idx.indexOf(state.selected) };
+}
 
 canvas.addEventListener('contextmenu', (e) => e.preventDefault());
 canvas.addEventListener('pointerdown', (e) => {
-  canvas.focus();
+  canvas.focus({ preventScroll: true });
   try { canvas.setPointerCapture(e.pointerId); } catch { /* synthetic events have no active pointer */ }
-  if (e.button === 1 || e.button === 2) { drag = { pan: true, x: e.clientX, y: e.clientY }; return; }
+  const [px, py] = local(e);
+  pointers.set(e.pointerId, [px, py]);
+  const touch = e.pointerType === 'touch';
+  if (touch && pointers.size === 2) {
+    // A second finger: whatever the first one began becomes a pinch; a
+    // point it was dragging goes back where it was.
+    if (drag && drag.kind === 'move') { movePoints(drag.idx, drag.from, 0, 0); endEdit(); }
+    const [a, b] = [...pointers.values()];
+    drag = { kind: 'pinch', last: [a, b] };
+    return;
+  }
+  if (pointers.size > 1) return;
+  if (e.button === 1 || e.button === 2 || (e.button === 0 && spaceDown)) { drag = { kind: 'pan', x: px, y: py }; return; }
   if (e.button !== 0) return;
-  const [x, y] = toWorld(e);
-  const k = hit(x, y);
+  const k = hit(px, py, touch ? 22 : 9);
   if (k >= 0) {
-    pushUndo();
-    state.selected = k;
-    drag = { index: k };
+    if (e.shiftKey) {
+      // Shift+click toggles the point in the selection.
+      const s = new Set(state.sel);
+      if (s.has(k)) s.delete(k); else s.add(k);
+      select([...s], s.has(k) ? k : [...s].pop() ?? -1);
+      if (!s.has(k)) return;
+    } else if (!state.sel.has(k)) select([k]);
+    else state.selected = k;
+    startMove([...state.sel], px, py);
     requestFrame();
     return;
   }
-  if (e.shiftKey && spline) {
-    // Insert on the curve, at the nearest point, if it is near.
-    const near = spline.nearest([x, y]);
-    if (Math.sqrt(near.distanceSq) * view.s <= 12) {
-      pushUndo();
+  if (e.shiftKey) {
+    // Shift on the curve inserts there; elsewhere starts a marquee.
+    const near = nearCurve(px, py, 12);
+    if (near) {
+      beginEdit();
       insertPoint(near.segment + 1, near.point[0], near.point[1]);
-      drag = { index: near.segment + 1 };
+      startMove([near.segment + 1], px, py);
       return;
     }
-  }
-  pushUndo();
-  insertPoint(count(), x, y);
-  drag = { index: count() - 1 };
-});
-canvas.addEventListener('pointermove', (e) => {
-  if (!drag) return;
-  if (drag.pan) {
-    view.ox += e.clientX - drag.x; view.oy += e.clientY - drag.y;
-    drag.x = e.clientX; drag.y = e.clientY;
-    requestFrame();
+    drag = { kind: 'marquee', rect: [px, py, px, py], base: [...state.sel] };
     return;
   }
-  const [x, y] = toWorld(e);
-  movePoint(drag.index, x, y);
+  if (touch) { drag = { kind: 'tap', x: px, y: py }; return; }
+  // On the curve: wait for a double-click (which inserts there).
+  if (nearCurve(px, py, 5)) { select([]); return; }
+  addPoint(px, py);
+  startMove([state.selected], px, py);
 });
-const endDrag = () => {
+
+// A new point under (px, py): at the start when the first point is the
+// selected one (continuing the curve backwards), else at the end.
+function addPoint(px, py) {
+  beginEdit();
+  const [x, y] = snap(...toWorld(px, py));
+  const atStart = state.selected === 0 && count() > 1 && state.sel.size === 1;
+  insertPoint(atStart ? 0 : count(), x, y);
+}
+
+canvas.addEventListener('pointermove', (e) => {
+  const [px, py] = local(e);
+  showPointer(px, py);
+  if (!pointers.has(e.pointerId)) return;
+  pointers.set(e.pointerId, [px, py]);
   if (!drag) return;
+  pendingEventAt = pendingEventAt || e.timeStamp;
+  if (drag.kind === 'pinch') {
+    const [a, b] = [...pointers.values()];
+    const [la, lb] = drag.last;
+    const c0 = [(la[0] + lb[0]) / 2, (la[1] + lb[1]) / 2], c1 = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
+    const d0 = Math.hypot(la[0] - lb[0], la[1] - lb[1]), d1 = Math.hypot(a[0] - b[0], a[1] - b[1]);
+    panBy(c1[0] - c0[0], c1[1] - c0[1]);
+    if (d0 > 0 && d1 > 0) zoomAt(c1[0], c1[1], d1 / d0);
+    drag.last = [a, b];
+    return;
+  }
+  if (drag.kind === 'tap') {
+    if (Math.hypot(px - drag.x, py - drag.y) > 8) { panBy(px - drag.x, py - drag.y); drag = { kind: 'pan', x: px, y: py }; }
+    return;
+  }
+  if (drag.kind === 'pan') {
+    panBy(px - drag.x, py - drag.y);
+    drag.x = px; drag.y = py;
+    return;
+  }
+  if (drag.kind === 'marquee') {
+    drag.rect[2] = px; drag.rect[3] = py;
+    const [ax, ay, bx, by] = drag.rect;
+    const P = toScreen(state.pts, 'hit'), inside = [];
+    for (let i = 0; i < count(); ++i) {
+      const x = P[2 * i], y = P[2 * i + 1];
+      if (x >= Math.min(ax, bx) && x <= Math.max(ax, bx) && y >= Math.min(ay, by) && y <= Math.max(ay, by)) inside.push(i);
+    }
+    select([...new Set([...drag.base, ...inside])]);
+    return;
+  }
+  if (drag.kind === 'move') {
+    const [wx, wy] = toWorld(px, py);
+    let dx = wx - drag.start[0], dy = wy - drag.start[1];
+    if (state.grid && drag.lead >= 0) {
+      // Snap the point under the pointer; the others keep their offsets.
+      const [sx, sy] = snap(drag.from[2 * drag.lead] + dx, drag.from[2 * drag.lead + 1] + dy);
+      dx = sx - drag.from[2 * drag.lead]; dy = sy - drag.from[2 * drag.lead + 1];
+    }
+    movePoints(drag.idx, drag.from, dx, dy);
+  }
+});
+function endPointer(e) {
+  if (!pointers.has(e.pointerId)) return;
+  pointers.delete(e.pointerId);
+  if (!drag) return;
+  if (drag.kind === 'pinch') { if (pointers.size === 0) finishDrag(); return; }
+  if (drag.kind === 'tap' && e.type === 'pointerup') {
+    const [px, py] = local(e);
+    const k = hit(px, py, 22);
+    if (k >= 0) select([k]); else edit(() => addPoint(drag.x, drag.y));
+  }
+  if (drag.kind === 'marquee' && drag.rect[0] === drag.rect[2] && drag.rect[1] === drag.rect[3]) select([]);
+  finishDrag();
+}
+function finishDrag() {
   drag = null;
+  endEdit();
   lastFrameAt = 0;
   if (deferredGlobal) requestGlobal();
   requestFrame();
-};
-canvas.addEventListener('pointerup', endDrag);
-canvas.addEventListener('pointercancel', endDrag);
+}
+canvas.addEventListener('pointerup', endPointer);
+canvas.addEventListener('pointercancel', endPointer);
+canvas.addEventListener('pointerleave', () => { $('status-pointer').textContent = ''; });
+canvas.addEventListener('dblclick', (e) => {
+  const [px, py] = local(e);
+  if (hit(px, py) >= 0) return;
+  const near = nearCurve(px, py, 8);
+  if (near) edit(() => insertPoint(near.segment + 1, near.point[0], near.point[1]));
+});
+// Wheel: scroll pans, Ctrl/⌘+scroll zooms (a touchpad pinch arrives as
+// Ctrl+wheel too).
 canvas.addEventListener('wheel', (e) => {
   e.preventDefault();
-  const r = canvas.getBoundingClientRect();
-  const sx = e.clientX - r.left - canvas.clientLeft, sy = e.clientY - r.top - canvas.clientTop;
-  const f = Math.exp(-e.deltaY * 0.0015);
-  view.ox = sx - (sx - view.ox) * f; view.oy = sy - (sy - view.oy) * f; view.s *= f;
-  requestFrame();
+  const unit = e.deltaMode === 1 ? 16 : e.deltaMode === 2 ? canvas.clientHeight : 1;
+  if (e.ctrlKey || e.metaKey) {
+    const [px, py] = local(e);
+    zoomAt(px, py, Math.exp(-e.deltaY * unit * 0.0025));
+  } else if (e.shiftKey && !e.deltaX) {
+    panBy(-e.deltaY * unit, 0);
+  } else {
+    panBy(-e.deltaX * unit, -e.deltaY * unit);
+  }
 }, { passive: false });
 
+// The coordinate readout: enough digits to tell neighbouring pixels apart.
+function showPointer(px, py) {
+  const [x, y] = toWorld(px, py);
+  const d = (v) => {
+    const digits = Math.max(1, Math.min(17, Math.ceil(Math.log10(Math.max(Math.abs(v), 1e-300) * view.s)) + 1));
+    return sig(v, Math.max(digits, 3));
+  };
+  $('status-pointer').textContent = `x ${d(x)}, y ${d(y)}`;
+}
+
+// ---------------------------------------------------------------------------
+// Keyboard. Undo and redo work wherever the focus is (a slider, a checkbox,
+// a dropdown), except in text fields, which keep their own. The other keys
+// act on the canvas only when no form control has the focus.
+// ---------------------------------------------------------------------------
+const isTextField = (t) => (t instanceof HTMLInputElement && !['checkbox', 'range', 'radio', 'button', 'file'].includes(t.type)) || t instanceof HTMLTextAreaElement;
+const isControl = (t) => t instanceof HTMLInputElement || t instanceof HTMLSelectElement || t instanceof HTMLTextAreaElement || t instanceof HTMLButtonElement;
 window.addEventListener('keydown', (e) => {
-  if (e.target instanceof HTMLInputElement && e.target.type !== 'checkbox' && e.target.type !== 'range') return;
+  if (isTextField(e.target)) return;
   const mod = e.ctrlKey || e.metaKey;
-  if (mod && (e.key === 'z' || e.key === 'Z')) { e.preventDefault(); if (e.shiftKey) redo(); else undo(); }
-  else if (mod && (e.key === 'y' || e.key === 'Y')) { e.preventDefault(); redo(); }
-  else if ((e.key === 'Delete' || e.key === 'Backspace') && state.selected >= 0) { e.preventDefault(); pushUndo(); deletePoint(state.selected); }
-  else if ((e.key === 'i' || e.key === 'I') && !mod) { e.preventDefault(); insertAfter(state.selected); }
+  if (mod && (e.key === 'z' || e.key === 'Z')) { e.preventDefault(); if (e.shiftKey) redo(); else undo(); return; }
+  if (mod && (e.key === 'y' || e.key === 'Y')) { e.preventDefault(); redo(); return; }
+  if (e.key === 'Escape') {
+    if (!$('help').hidden) { toggleHelp(false); e.preventDefault(); return; }
+    if (drag && drag.kind === 'marquee') { select(drag.base); drag = null; }
+    if (!isControl(e.target)) { select([]); e.preventDefault(); }
+    return;
+  }
+  if (isControl(e.target)) return;
+  if (mod && (e.key === 'a' || e.key === 'A')) { e.preventDefault(); select(Array.from({ length: count() }, (_, i) => i)); return; }
+  if (mod) return;
+  if (e.key === 'Delete' || e.key === 'Backspace') { if (state.sel.size) { e.preventDefault(); deleteSelected(); } return; }
+  if (e.key === 'i' || e.key === 'I') { e.preventDefault(); insertAfter(state.selected); return; }
+  if (e.key === 'f' || e.key === 'F' || (e.key === '!' && e.shiftKey)) { e.preventDefault(); fit(); return; }
+  if (e.key === '?') { e.preventDefault(); toggleHelp(); return; }
+  if (e.key === 'g' || e.key === 'G') { e.preventDefault(); $('grid').click(); return; }
+  if (e.key === ' ') { e.preventDefault(); if (!spaceDown) { spaceDown = true; canvas.classList.add('grab'); } return; }
+  const arrows = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] };
+  if (arrows[e.key] && state.sel.size) {
+    e.preventDefault();
+    // One screen pixel (Shift: ten), or one grid step with the grid on.
+    const step = (state.grid ? gridStep() : 1 / view.s) * (e.shiftKey ? 10 : 1);
+    const [ax, ay] = arrows[e.key];
+    const idx = [...state.sel];
+    const from = Float64Array.from(idx.flatMap((k) => [state.pts[2 * k], state.pts[2 * k + 1]]));
+    edit(() => movePoints(idx, from, ax * step, ay * ys() * step));
+  }
 });
+window.addEventListener('keyup', (e) => { if (e.key === ' ') { spaceDown = false; canvas.classList.remove('grab'); } });
+window.addEventListener('blur', () => { spaceDown = false; canvas.classList.remove('grab'); });
+
+function toggleHelp(show = $('help').hidden) {
+  $('help').hidden = !show;
+  $('help-button').setAttribute('aria-expanded', String(show));
+  if (show) $('help-close').focus(); else canvas.focus({ preventScroll: true });
+}
 
 // ---------------------------------------------------------------------------
 // Controls
@@ -635,17 +1027,42 @@ function syncControls() {
   for (const b of document.querySelectorAll('.presets button')) b.classList.toggle('active', Number(b.dataset.alpha) === o.alpha);
 }
 
-// Sliders: one undo entry per gesture (on pointerdown / focus), live updates.
+// The selected point's coordinates, editable (shortest round-trip text).
+function syncPointFields() {
+  const one = state.sel.size === 1 && state.selected >= 0 && state.selected < count();
+  for (const [id, off] of [['point-x', 0], ['point-y', 1]]) {
+    const el = $(id);
+    el.disabled = !one;
+    if (document.activeElement === el) continue;
+    const v = one ? String(state.pts[2 * state.selected + off]) : '';
+    if (el.value !== v) el.value = v;
+  }
+}
+for (const [id, off] of [['point-x', 0], ['point-y', 1]]) {
+  $(id).addEventListener('change', (e) => {
+    const v = Number(e.target.value), k = state.selected;
+    if (e.target.value.trim() === '' || !Number.isFinite(v) || k < 0 || k >= count()) { importMessage = `${off ? 'y' : 'x'}: "${e.target.value}" is not a finite number`; requestFrame(); return; }
+    edit(() => {
+      const from = Float64Array.of(state.pts[2 * k], state.pts[2 * k + 1]);
+      movePoints([k], from, off ? 0 : v - from[0], off ? v - from[1] : 0);
+      state.pts[2 * k + off] = v;  // exactly the typed double
+    });
+  });
+}
+
+// Sliders: one undo step per gesture (from the first input to the change
+// that ends it), live updates in between.
 for (const id of ['alpha', 'tension']) {
   const el = $(id);
-  el.addEventListener('pointerdown', () => pushUndo());
-  el.addEventListener('keydown', () => pushUndo());
   el.addEventListener('input', () => {
+    beginEdit();
     state.opts = { ...state.opts, [id]: Number(el.value) };
     syncControls();
     markAll();
     changed();
   });
+  el.addEventListener('change', endEdit);
+  el.addEventListener('blur', endEdit);
 }
 for (const b of document.querySelectorAll('.presets button')) b.addEventListener('click', () => setOption('alpha', Number(b.dataset.alpha)));
 $('closed').addEventListener('change', (e) => setOption('closed', e.target.checked));
@@ -665,15 +1082,30 @@ $('tick-spacing').addEventListener('change', (e) => {
   const v = Number(e.target.value);
   if (v > 0) { state.tickSpacing = v; if (state.overlays.ticks) { builtVersion = -1; requestFrame(); } }
 });
+$('y-up').addEventListener('change', (e) => setYUp(e.target.checked));
+$('grid').addEventListener('change', (e) => { state.grid = e.target.checked; requestFrame(); });
 
 $('undo').addEventListener('click', undo);
 $('redo').addEventListener('click', redo);
-$('delete').addEventListener('click', () => { if (state.selected >= 0) { pushUndo(); deletePoint(state.selected); } });
+$('delete').addEventListener('click', deleteSelected);
 $('insert').addEventListener('click', () => insertAfter(state.selected));
-$('clear').addEventListener('click', () => { pushUndo(); setPoints(new Float64Array(0)); });
-$('demo').addEventListener('click', () => { pushUndo(); loadDemo(); });
-$('stress').addEventListener('click', () => { pushUndo(); loadStress(10000); });
-$('fit').addEventListener('click', () => { fit(); requestFrame(); });
+$('clear').addEventListener('click', () => edit(() => setPoints(new Float64Array(0))));
+$('demo').addEventListener('click', () => edit(() => loadDemo()));
+$('stress').addEventListener('click', () => edit(() => loadStress(10000)));
+for (const id of ['fit', 'fit-stage']) $(id).addEventListener('click', () => fit());
+$('help-button').addEventListener('click', () => toggleHelp());
+$('help-close').addEventListener('click', () => toggleHelp(false));
+$('toast-close').addEventListener('click', () => { importMessage = ''; showMessage(''); });
+
+// The panel: beside the canvas on wide screens, a drawer over it on narrow
+// ones (closed at first there).
+const panelToggle = $('panel-toggle');
+function setPanel(open) {
+  document.body.classList.toggle('panel-closed', !open);
+  panelToggle.setAttribute('aria-expanded', String(open));
+}
+panelToggle.addEventListener('click', () => setPanel(document.body.classList.contains('panel-closed')));
+setPanel(!window.matchMedia('(max-width: 700px)').matches);
 
 function download(name, text, type) {
   const url = URL.createObjectURL(new Blob([text], { type }));
@@ -694,10 +1126,11 @@ $('export-svg').addEventListener('click', () => {
 async function importFile(file) {
   try {
     const { points, options } = parsePoints(await file.text(), file.name);
-    pushUndo();
-    state.opts = options;
-    syncControls();
-    setPoints(points);
+    edit(() => {
+      state.opts = options;
+      syncControls();
+      setPoints(points);
+    });
     fit();
   } catch (e) {
     importMessage = `import ${file.name}: ${e.message}`;
@@ -709,29 +1142,18 @@ canvas.addEventListener('dragover', (e) => e.preventDefault());
 canvas.addEventListener('drop', (e) => { e.preventDefault(); if (e.dataTransfer.files[0]) importFile(e.dataTransfer.files[0]); });
 
 // ---------------------------------------------------------------------------
-// View and sample data
+// Sample data
 // ---------------------------------------------------------------------------
-function fit() {
-  const n = count();
-  const w = canvas.clientWidth, h = canvas.clientHeight;
-  if (n === 0) { view.s = 1; view.ox = 0; view.oy = 0; return; }
-  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
-  for (let i = 0; i < n; ++i) {
-    x0 = Math.min(x0, state.pts[2 * i]); x1 = Math.max(x1, state.pts[2 * i]);
-    y0 = Math.min(y0, state.pts[2 * i + 1]); y1 = Math.max(y1, state.pts[2 * i + 1]);
-  }
-  const s = Math.min((w - 80) / Math.max(x1 - x0, 1e-9), (h - 80) / Math.max(y1 - y0, 1e-9));
-  view.s = Number.isFinite(s) && s > 0 ? s : 1;
-  view.ox = w / 2 - view.s * (x0 + x1) / 2;
-  view.oy = h / 2 - view.s * (y0 + y1) / 2;
-}
+// The view at zoom 1 with the canvas' top-left corner at the world origin
+// (y up: the bottom-left corner).
+function resetView() { view.s = 1; view.x0 = 0; view.y0 = view.yUp ? canvas.clientHeight : 0; }
 
 // The demo: a polygon with a sharp turn and a crossing, in the visible area.
 function loadDemo() {
   const w = canvas.clientWidth, h = canvas.clientHeight;
   const rel = [[0.08, 0.7], [0.2, 0.25], [0.36, 0.2], [0.42, 0.72], [0.3, 0.8], [0.55, 0.45], [0.62, 0.5], [0.66, 0.15], [0.8, 0.3], [0.93, 0.75]];
-  view.s = 1; view.ox = 0; view.oy = 0;
-  setPoints(Float64Array.from(rel.flatMap(([u, v]) => [u * w, v * h])));
+  resetView();
+  setPoints(Float64Array.from(rel.flatMap(([u, v]) => toWorld(u * w, v * h))));
 }
 
 // n points on a spiral filling the view (seeded wobble): the stress test.
@@ -740,12 +1162,12 @@ function loadStress(n) {
   let seed = 12345;
   const rnd = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
   const a = new Float64Array(2 * n);
+  resetView();
   for (let i = 0; i < n; ++i) {
     const t = i / n, ang = t * 2 * Math.PI * 40, r = R * (0.08 + 0.92 * t) * (1 + 0.01 * (rnd() - 0.5));
-    a[2 * i] = w / 2 + r * Math.cos(ang);
-    a[2 * i + 1] = h / 2 + r * Math.sin(ang);
+    const [x, y] = toWorld(w / 2 + r * Math.cos(ang), h / 2 + r * Math.sin(ang));
+    a[2 * i] = x; a[2 * i + 1] = y;
   }
-  view.s = 1; view.ox = 0; view.oy = 0;
   setPoints(a);
 }
 
@@ -770,9 +1192,15 @@ window.editor = {
   get points() { return Array.from(state.pts); },
   get options() { return { ...state.opts }; },
   get selected() { return state.selected; },
+  get selection() { return [...state.sel].sort((a, b) => a - b); },
   get view() { return { ...view }; },
-  setPoints(list) { pushUndo(); setPoints(Float64Array.from(list.flat())); },
-  worldToScreen(x, y) { return [x * view.s + view.ox, y * view.s + view.oy]; },
+  get undoDepth() { return undoStack.length; },
+  setPoints(list) { edit(() => setPoints(Float64Array.from(list.flat()))); },
+  worldToScreen(x, y) { return [SX(x), SY(y)]; },
+  screenToWorld(px, py) { return toWorld(px, py); },
+  zoomBy(f, px = canvas.clientWidth / 2, py = canvas.clientHeight / 2) { zoomAt(px, py, f); },
+  fitView() { fit(); },
+  gridStep,
   evaluate(t) { rebuild(); return spline ? Array.from(spline.evaluate(t)) : null; },
   grid() { rebuild(); return spline ? Array.from(spline.grid()) : null; },
   bezier() { rebuild(); return Array.from(bez); },
@@ -780,8 +1208,8 @@ window.editor = {
   cusps() { rebuild(); return cache.cusps ? cache.cusps.filter(Boolean).flatMap((c) => Array.from(c)) : null; },
   global() { return global; },
   idle() { return new Promise((resolve) => { idleWaiters.push(resolve); requestFrame(); }); },
-  resetFrameStats() { frameTimes.length = 0; curveTimes.length = 0; frameIntervals.length = 0; },
-  frameStats() { return { work: quantiles(frameTimes), curve: quantiles(curveTimes), interval: quantiles(frameIntervals) }; },
+  resetFrameStats() { frameTimes.length = 0; curveTimes.length = 0; frameIntervals.length = 0; latencies.length = 0; },
+  frameStats() { return { work: quantiles(frameTimes), curve: quantiles(curveTimes), interval: quantiles(frameIntervals), latency: quantiles(latencies) }; },
   loadStress,
   loadDemo,
 };
