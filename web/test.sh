@@ -10,4 +10,4 @@ set -euo pipefail
 cd "$(dirname "$0")"
 [[ -d node_modules/playwright-core ]] || npm ci --no-audit --no-fund
 node -e "import('./test/support.mjs').then((m) => m.ensureBuilt())"
-exec node --test "$@" test/module.test.mjs test/browser.test.mjs test/editor.test.mjs test/designer.test.mjs
+exec node --test "$@" test/module.test.mjs test/browser.test.mjs test/editor.test.mjs test/designer.test.mjs test/perf.test.mjs

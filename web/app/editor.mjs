@@ -278,31 +278,42 @@ function drawGrid(w, h) {
 // of it, which takes seconds. Cubics are split (de Casteljau) until each
 // piece is either outside the view, dropped, or under 2048 px; lines are
 // clipped (Liang-Barsky). Consecutive pieces continue one subpath.
-function clipPen(path) {
+function clipPen(path, inside = false) {
   const m = 16, X0 = -m, Y0 = -m, X1 = canvas.clientWidth + m, Y1 = canvas.clientHeight + m;
   let lx = NaN, ly = NaN;  // where the subpath ends now
-  const start = (x, y) => { if (x !== lx || y !== ly) path.moveTo(x, y); };
   const pen = {
     line(ax, ay, bx, by) {
-      let t0 = 0, t1 = 1;
-      const dx = bx - ax, dy = by - ay;
-      for (const [p, q] of [[-dx, ax - X0], [dx, X1 - ax], [-dy, ay - Y0], [dy, Y1 - ay]]) {
-        if (p === 0) { if (q < 0) return; continue; }
-        const r = q / p;
-        if (p < 0) { if (r > t1) return; if (r > t0) t0 = r; } else { if (r < t0) return; if (r < t1) t1 = r; }
+      if (!inside) {
+        let t0 = 0, t1 = 1;
+        const dx = bx - ax, dy = by - ay;
+        // Liang-Barsky against the four sides, without allocating.
+        for (let side = 0; side < 4; ++side) {
+          const p = side === 0 ? -dx : side === 1 ? dx : side === 2 ? -dy : dy;
+          const q = side === 0 ? ax - X0 : side === 1 ? X1 - ax : side === 2 ? ay - Y0 : Y1 - ay;
+          if (p === 0) { if (q < 0) return; continue; }
+          const r = q / p;
+          if (p < 0) { if (r > t1) return; if (r > t0) t0 = r; } else { if (r < t0) return; if (r < t1) t1 = r; }
+        }
+        if (t0 > 0 || t1 < 1) {
+          const sx = ax + t0 * dx, sy = ay + t0 * dy, ex = ax + t1 * dx, ey = ay + t1 * dy;
+          path.moveTo(sx, sy); path.lineTo(ex, ey);
+          lx = ex; ly = ey;
+          return;
+        }
       }
-      const sx = t0 === 0 ? ax : ax + t0 * dx, sy = t0 === 0 ? ay : ay + t0 * dy;
-      const ex = t1 === 1 ? bx : ax + t1 * dx, ey = t1 === 1 ? by : ay + t1 * dy;
-      start(sx, sy);
-      path.lineTo(ex, ey);
-      lx = ex; ly = ey;
+      if (ax !== lx || ay !== ly) path.moveTo(ax, ay);
+      path.lineTo(bx, by);
+      lx = bx; ly = by;
     },
     cubic(x0, y0, x1, y1, x2, y2, x3, y3, depth) {
       const xa = Math.min(x0, x1, x2, x3), xb = Math.max(x0, x1, x2, x3), ya = Math.min(y0, y1, y2, y3), yb = Math.max(y0, y1, y2, y3);
-      if (xb < X0 || xa > X1 || yb < Y0 || ya > Y1) return;  // outside: the hull contains the curve
+      if (!inside && (xb < X0 || xa > X1 || yb < Y0 || ya > Y1)) return;  // outside: the hull contains the curve
       if ((xb - xa < 2048 && yb - ya < 2048) || depth > 40) {
-        start(x0, y0);
-        path.bezierCurveTo(x1, y1, x2, y2, x3, y3);
+        if (x0 !== lx || y0 !== ly) path.moveTo(x0, y0);
+        // A piece whose hull fits in a quarter pixel is drawn as its chord:
+        // the same pixels, far fewer for Skia to flatten at 10^5 segments.
+        if (xb - xa < 0.25 && yb - ya < 0.25) path.lineTo(x3, y3);
+        else path.bezierCurveTo(x1, y1, x2, y2, x3, y3);
         lx = x3; ly = y3;
         return;
       }
@@ -313,6 +324,14 @@ function clipPen(path) {
     },
   };
   return pen;
+}
+
+// Whether every coordinate of a flat screen array is within the canvas (the
+// common case: then nothing needs clipping).
+function allInside(a) {
+  const X1 = canvas.clientWidth, Y1 = canvas.clientHeight;
+  for (let i = 0; i < a.length; i += 2) if (!(a[i] >= 0 && a[i] <= X1 && a[i + 1] >= 0 && a[i + 1] <= Y1)) return false;
+  return true;
 }
 
 function draw() {
@@ -337,7 +356,7 @@ function draw() {
     ctx.globalAlpha = 1;
   }
   if (o.polygon && n >= 2) {
-    const path = new Path2D(), pen = clipPen(path);
+    const path = new Path2D(), pen = clipPen(path, allInside(P));
     for (let i = 1; i < n; ++i) pen.line(P[2 * i - 2], P[2 * i - 1], P[2 * i], P[2 * i + 1]);
     if (state.opts.closed) pen.line(P[2 * n - 2], P[2 * n - 1], P[0], P[1]);
     if (n <= 2000) ctx.setLineDash([4, 4]);  // dashing 10^4 edges costs more than the curve
@@ -350,7 +369,7 @@ function draw() {
   // The curve: one path of cubic Béziers.
   const nb = B.length / 8;
   if (nb > 0) {
-    const path = new Path2D(), pen = clipPen(path);
+    const path = new Path2D(), pen = clipPen(path, allInside(B));
     for (let i = 0; i < nb; ++i) {
       const k = 8 * i;
       pen.cubic(B[k], B[k + 1], B[k + 2], B[k + 3], B[k + 4], B[k + 5], B[k + 6], B[k + 7], 0);
@@ -393,8 +412,18 @@ function draw() {
   if (n > 0) {
     ctx.fillStyle = colors.point;
     if (n > 2000) {
-      // Many points: fillRect each (one path of 10^4 squares fills slower).
-      for (let i = 0; i < n; ++i) ctx.fillRect(P[2 * i] - 1, P[2 * i + 1] - 1, 2, 2);
+      // Many points: fillRect each (one path of 10^4 squares fills slower),
+      // those in view only; past 20 000 in view they are closer than the
+      // pixels and the curve through them shows where they are.
+      const W = canvas.clientWidth, H = canvas.clientHeight;
+      let visible = 0;
+      for (let i = 0; i < n; ++i) { const x = P[2 * i], y = P[2 * i + 1]; if (x >= -2 && x <= W + 2 && y >= -2 && y <= H + 2) ++visible; }
+      if (visible <= 20000) {
+        for (let i = 0; i < n; ++i) {
+          const x = P[2 * i], y = P[2 * i + 1];
+          if (x >= -2 && x <= W + 2 && y >= -2 && y <= H + 2) ctx.fillRect(x - 1, y - 1, 2, 2);
+        }
+      }
     } else {
       const r = 4, path = new Path2D();
       for (let i = 0; i < n; ++i) path.rect(P[2 * i] - r, P[2 * i + 1] - r, 2 * r, 2 * r);
