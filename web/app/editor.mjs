@@ -763,7 +763,8 @@ function fitScale() {
   const [x0, y0, x1, y1] = bounds();
   const w = canvas.clientWidth, h = canvas.clientHeight;
   const ext = Math.max(x1 - x0, y1 - y0);
-  const tiny = Math.max(ext, Math.abs(x0), Math.abs(y0), 1e-300) * 1e-9;
+  if (!(ext > 0)) return 1;  // one point (or all equal): zoom 1, centred on it
+  const tiny = ext * 1e-9;
   const s = Math.min(Math.max(w - 80, 40) / Math.max(x1 - x0, tiny), Math.max(h - 80, 40) / Math.max(y1 - y0, tiny));
   return Number.isFinite(s) && s > 0 ? s : 1;
 }
@@ -1002,7 +1003,9 @@ function showPointer(px, py) {
 // act on the canvas only when no form control has the focus.
 // ---------------------------------------------------------------------------
 const isTextField = (t) => (t instanceof HTMLInputElement && !['checkbox', 'range', 'radio', 'button', 'file'].includes(t.type)) || t instanceof HTMLTextAreaElement;
-const isControl = (t) => t instanceof HTMLInputElement || t instanceof HTMLSelectElement || t instanceof HTMLTextAreaElement || t instanceof HTMLButtonElement;
+// Controls with keys of their own (arrows, Backspace, Space); a focused
+// button has none but Space and Enter.
+const isControl = (t) => t instanceof HTMLInputElement || t instanceof HTMLSelectElement || t instanceof HTMLTextAreaElement;
 window.addEventListener('keydown', (e) => {
   if (isTextField(e.target)) return;
   const mod = e.ctrlKey || e.metaKey;
@@ -1022,7 +1025,7 @@ window.addEventListener('keydown', (e) => {
   if (e.key === 'f' || e.key === 'F' || (e.key === '!' && e.shiftKey)) { e.preventDefault(); fit(); return; }
   if (e.key === '?') { e.preventDefault(); toggleHelp(); return; }
   if (e.key === 'g' || e.key === 'G') { e.preventDefault(); $('grid').click(); return; }
-  if (e.key === ' ') { e.preventDefault(); if (!spaceDown) { spaceDown = true; canvas.classList.add('grab'); } return; }
+  if (e.key === ' ' && !(e.target instanceof HTMLButtonElement)) { e.preventDefault(); if (!spaceDown) { spaceDown = true; canvas.classList.add('grab'); } return; }
   const arrows = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] };
   if (arrows[e.key] && state.sel.size) {
     e.preventDefault();
