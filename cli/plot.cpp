@@ -62,7 +62,7 @@ figure_curve make_figure_curve(const curve_spec& spec, const overlay_options& ov
         for (const auto& x : find_intersections(curve).intersections) fc.intersections.push_back(fp(x.point));
     }
     if (ov.volumes) {
-        const auto vol = paper_bounding_volumes(curve, spec.alpha.value_or(0.5));
+        const auto vol = paper_bounding_volumes(curve);
         for (const auto& e : vol.boxes) {
             const vec<2, double> d = e.b - e.a;
             const double L = norm(d);

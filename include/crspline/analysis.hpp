@@ -564,34 +564,33 @@ segment_analysis<D, T> analyze_segment(const vec<D, T>& p0, const vec<D, T>& p1,
 namespace detail {
 
 // Is segment i of the curve the plain Catmull-Rom segment of its four
-// control points (no tension, no Kochanek-Bartels, an interior segment)?
-// Returns the points and intervals when it is.
+// control points (an interior segment of a curve built without tension or
+// Kochanek-Bartels values)? Read from how the curve was built
+// (catmull_rom::options()), never guessed from its Bézier points: a guess
+// with a tolerance depends on where the curve lies. Returns the points and
+// knot intervals when it is, and every interval is nonzero.
 template <std::size_t D, class T>
 std::optional<std::pair<std::array<vec<D, T>, 4>, std::array<T, 3>>> plain_neighbourhood(
     const catmull_rom<D, T>& c, std::size_t i) {
     const auto pts = c.points();
     const auto grid = c.grid();
     const std::size_t n = pts.size(), nseg = c.segment_count();
-    if (!c.closed() && (i == 0 || i + 1 >= nseg)) return std::nullopt;
+    if (!c.closed() && (i == 0 || i + 1 >= nseg)) return std::nullopt;  // an end segment: end conditions
+    const auto& o = c.options();
+    if (o.tension != T(0) || !o.kb.empty()) return std::nullopt;
     auto interval = [&](std::size_t k) { return grid[k + 1] - grid[k]; };
     const std::size_t ib = (i + nseg - 1) % nseg, ia = (i + 1) % nseg;
     std::array<vec<D, T>, 4> p{pts[(i + n - 1) % n], pts[i], pts[(i + 1) % n], pts[(i + 2) % n]};
     std::array<T, 3> h{interval(ib), interval(i), interval(ia)};
     if (!(h[0] > 0 && h[1] > 0 && h[2] > 0)) return std::nullopt;
-    // The curve's own Bézier points must be those of Eq. 2 (rounding aside).
-    const auto mine = c.bezier(i);
-    const auto eq2 = catmull_rom_bezier(p, std::array<T, 4>{T(0), h[0], h[0] + h[1], h[0] + h[1] + h[2]});
-    T size = 0;
-    for (const auto& q : p) size = std::max(size, max_abs(q - p[1]));
-    const T tol = T(256) * std::numeric_limits<T>::epsilon() * size;
-    if (max_abs(mine[1] - eq2[1]) > tol || max_abs(mine[2] - eq2[2]) > tol) return std::nullopt;
     return std::make_pair(p, h);
 }
 
 }  // namespace detail
 
-/// Analysis of every segment of a curve. Interior segments that are plain
-/// Catmull-Rom segments (tension 0, no Kochanek-Bartels) also get the paper
+/// Analysis of every segment of a curve. Interior segments of a curve built
+/// as plain Catmull-Rom (tension 0, no Kochanek-Bartels: catmull_rom::options())
+/// also get the paper
 /// bounds, computed from points[i-1..i+2] and the curve's knots. End segments
 /// of an open curve have no P(i-1) or P(i+2): their end tangents come from the
 /// end conditions, Eq. 5, 6 and 8 do not exist there, and `bounds` is nullopt;

@@ -122,7 +122,7 @@ public:
     using point = vec<D, T>;
     using scalar = T;
     using segment_type = cubic_segment<D, T>;
-    using options_type = options<D, T>;
+    using options_type = crspline::options<D, T>;
     static constexpr std::size_t dimension = D;
 
     explicit catmull_rom(std::span<const point> points, const options_type& opt = {}) { build(points, opt); }
@@ -133,6 +133,19 @@ public:
     std::span<const point> points() const noexcept { return points_; }
     std::span<const T> grid() const noexcept { return grid_; }
     bool closed() const noexcept { return closed_; }
+
+    /// How the curve was built: the options given to the constructor, so that
+    /// the analysis (and anyone else) reads the construction instead of
+    /// guessing it from the numbers. Two differences from what was passed:
+    /// `alpha` holds the exponent actually used (centripetal when none was
+    /// given) when the knots came from alpha, and is empty when they came
+    /// from an explicit grid; and `grid` is always empty, since the knots are
+    /// stored once, as grid(). To rebuild the same curve:
+    /// `auto o = c.options(); if (!o.alpha) o.grid.emplace(c.grid().begin(), c.grid().end());`
+    const options_type& options() const noexcept { return options_; }
+    /// The knots came from an explicit grid, not from alpha.
+    bool explicit_grid() const noexcept { return !options_.alpha.has_value(); }
+
     std::size_t segment_count() const noexcept { return inv_h_.size(); }
     T t_min() const noexcept { return grid_.front(); }
     T t_max() const noexcept { return grid_.back(); }
@@ -325,6 +338,7 @@ private:
     detail::storage<point> tangent_;  // outgoing dx/dt at each vertex; for an open curve the last is the incoming one
     detail::storage<point> in_;       // incoming dx/dt at each vertex, only when continuity can make it differ
     bool closed_ = false;
+    options_type options_;            // how it was built (alpha resolved, grid not copied): see options()
 
     std::size_t next(std::size_t i) const noexcept { return i + 1 == points_.size() ? 0 : i + 1; }
     const point& out_tangent(std::size_t i) const noexcept { return tangent_[i]; }
@@ -827,6 +841,15 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
                 if (!(i == n - 1 && end_given)) in_[i] *= keep;
     }
     build_buckets();
+    // 5. Remember how the curve was built (the grid is grid_, not copied).
+    options_.alpha = opt.grid ? std::nullopt : std::optional<double>(opt.alpha.value_or(centripetal));
+    options_.grid.reset();
+    options_.start = opt.start;
+    options_.end = opt.end;
+    options_.closed = opt.closed;
+    options_.tension = opt.tension;
+    options_.kb = opt.kb;
+    options_.strict = opt.strict;
 }
 
 template <std::size_t D, class T>

@@ -94,24 +94,29 @@ edge_box<D, T> bezier_box(std::size_t i, const segment_analysis<D, T>& an) {
 
 }  // namespace detail
 
-/// The paper's bounding volumes for a curve built with knot exponent alpha.
-/// Interior segments: the edge extruded by the Eq. 6 bound (two-sided) and
-/// balls of the Eq. 8 radius at the vertices; `local` uses the suprema over
-/// the neighbours' lengths (local_eq6_factor, local_eq8_factor: infinite for
-/// alpha < 1/2, where the paper has no bound). End segments of an open curve
-/// (no neighbour on one side, end conditions instead of Eq. 2) and segments
-/// that are not plain Catmull-Rom (tension, Kochanek-Bartels) get the box of
-/// their actual Bézier points instead (lambda range of the hull, half width
-/// 3/4 of the larger Bézier height), which holds for any cubic.
+/// The paper's bounding volumes of a curve, for the knots it was built with
+/// (catmull_rom::options()). Interior segments: the edge extruded by the
+/// Eq. 6 bound (two-sided) and balls of the Eq. 8 radius at the vertices;
+/// `local` uses the suprema over the neighbours' lengths (local_eq6_factor,
+/// local_eq8_factor: infinite for alpha < 1/2, where the paper has no
+/// bound). For knots from alpha the printed formulas in alpha are used; for
+/// an explicit grid the same bounds in general knots (paper_bounds::eq6,
+/// eq8_start, eq8_end), and `local` has no factor (boxes from the Bézier
+/// points). End segments of an open curve (no neighbour on one side, end
+/// conditions instead of Eq. 2) and segments that are not plain
+/// Catmull-Rom (tension, Kochanek-Bartels) get the box of their actual
+/// Bézier points instead (lambda range of the hull, half width 3/4 of the
+/// larger Bézier height), which holds for any cubic.
 template <std::size_t D, class T>
-bounding_volumes<D, T> paper_bounding_volumes(const catmull_rom<D, T>& c, double alpha,
+bounding_volumes<D, T> paper_bounding_volumes(const catmull_rom<D, T>& c,
                                               volume_kind kind = volume_kind::tightened) {
+    const std::optional<double> alpha = c.options().alpha;
     bounding_volumes<D, T> v;
     const auto an = analyze(c);
     const std::size_t n = c.segment_count(), np = c.points().size();
     std::vector<T> radius(np, T(0));
     for (std::size_t i = 0; i < n; ++i) {
-        if (!an[i].bounds) {
+        if (!an[i].bounds || (!alpha && kind == volume_kind::local)) {
             v.boxes.push_back(detail::bezier_box(i, an[i]));
             continue;
         }
@@ -121,16 +126,21 @@ bounding_volumes<D, T> paper_bounding_volumes(const catmull_rom<D, T>& c, double
         e.a = an[i].bezier[0];
         e.b = an[i].bezier[3];
         T r1, r2;
-        if (kind == volume_kind::local) {
-            e.half_width = b.d2 * T(local_eq6_factor(alpha));
-            r1 = r2 = b.d2 * T(local_eq8_factor(alpha));
+        if (!alpha) {
+            // Explicit grid: the same bounds written in general knots.
+            e.half_width = b.eq6;
+            r1 = b.eq8_start;
+            r2 = b.eq8_end;
+        } else if (kind == volume_kind::local) {
+            e.half_width = b.d2 * T(local_eq6_factor(*alpha));
+            r1 = r2 = b.d2 * T(local_eq8_factor(*alpha));
         } else {
             // The printed formulas in r = d1/d2, d3/d2 and alpha (Eq. 8 is
             // then identically 0 at alpha = 1/2, not the sqrt of the knots'
             // rounding).
-            e.half_width = paper_eq6_two_sided(b.d1, b.d2, b.d3, alpha);
-            r1 = paper_eq8(b.d2, b.d1 / b.d2, alpha);
-            r2 = paper_eq8(b.d2, b.d3 / b.d2, alpha);
+            e.half_width = paper_eq6_two_sided(b.d1, b.d2, b.d3, *alpha);
+            r1 = paper_eq8(b.d2, b.d1 / b.d2, *alpha);
+            r2 = paper_eq8(b.d2, b.d3 / b.d2, *alpha);
         }
         v.boxes.push_back(e);
         radius[i] = std::max(radius[i], r1);
@@ -148,8 +158,11 @@ bounding_volumes<D, T> paper_bounding_volumes(const catmull_rom<D, T>& c, double
 /// The smallest polygon angle the certificate accepts at a vertex between
 /// two segments. The paper's summary says pi/6, but its Section 5 derives
 /// pi/3 (each side's curve may enter the "V" by gamma < pi/6); adjacent
-/// centripetal segments have been seen to cross at 20.9 degrees, none
-/// between 30 and 60 (tests/reference/SOURCES.md). pi/3 is the safe value.
+/// interior centripetal segments have been seen to cross at polygon angles
+/// of at least 28.9 degrees (one confirmed exactly at 28.72), none between
+/// 30 and 60 (tests/reference/SOURCES.md). pi/3 is the safe value. The rule
+/// covers only two interior segments of a plain centripetal curve; every
+/// other adjacent pair is proved apart by an exact check (adjacent_pair).
 inline constexpr double safe_adjacent_angle = std::numbers::pi / 3;
 
 enum class certify_rule {
@@ -158,6 +171,8 @@ enum class certify_rule {
     coincident_points,  ///< a zero-length polygon edge: the angle rule has no angle
     adjacent_angle,     ///< rule 2: a polygon angle <= safe_adjacent_angle
     overlapping_boxes,  ///< rule 3: boxes of two non-adjacent segments overlap
+    adjacent_pair,      ///< two adjacent segments the angle rule does not cover (an end segment,
+                        ///< tension, Kochanek-Bartels) that the exact check could not prove apart
 };
 
 inline const char* to_string(certify_rule r) noexcept {
@@ -167,6 +182,7 @@ inline const char* to_string(certify_rule r) noexcept {
         case certify_rule::coincident_points: return "coincident_points";
         case certify_rule::adjacent_angle: return "adjacent_angle";
         case certify_rule::overlapping_boxes: return "overlapping_boxes";
+        case certify_rule::adjacent_pair: return "adjacent_pair";
     }
     return "unknown";
 }
@@ -183,7 +199,7 @@ struct certificate {
     certify_rule failed_rule = certify_rule::none;
     std::optional<std::size_t> vertex;                   ///< coincident_points, adjacent_angle: the vertex
     std::optional<std::size_t> segment;                  ///< not_centripetal: the offending segment, if one
-    std::optional<std::array<std::size_t, 2>> segments;  ///< overlapping_boxes: the pair
+    std::optional<std::array<std::size_t, 2>> segments;  ///< overlapping_boxes, adjacent_pair: the pair
     T angle = 0;                                         ///< adjacent_angle: the angle there (radians)
     std::string detail;                                  ///< one line saying what failed
     std::optional<bool> intersects;                      ///< when not certified and searched: does it?
@@ -252,28 +268,141 @@ bool boxes_overlap(const edge_box<D, T>& p, const edge_box<D, T>& q, T margin) {
     }
 }
 
+// Exact check that two adjacent segments meet only at their joint.
+//
+// a and b are the Bézier points of the two segments relative to the joint J,
+// a[3] = b[0] = 0 exactly (the joint is a stored point, the end of one
+// segment and the start of the next by construction). Each Bézier point is
+// known to within `pad` (its rounding; see the caller). Subdivide both
+// pieces (de Casteljau, which keeps the joint at exactly 0 in the pieces
+// that touch it) and discard a pair of pieces when
+//   * their control boxes, each grown by pad, are disjoint: the convex hulls
+//     contain the pieces; or
+//   * they both touch the joint and some direction d puts every control
+//     point of the piece of a except the joint strictly behind J and every
+//     one of the piece of b except the joint strictly ahead of it
+//     (d.(x - J) < -pad |d|, resp. > pad |d|): a point of a piece other than
+//     J is a convex combination giving a positive weight to a point other
+//     than J, so the pieces lie in opposite open half-spaces except at J.
+// Returns true when every pair of pieces was discarded (the two segments
+// meet only at J), false when the budget or the depth ran out: the caller
+// then reports that it could not prove them apart, which is never wrong.
+// Rounding of the subdivision: every level adds at most ~2 eps of the
+// largest |control point| per coordinate; pad is chosen by the caller to
+// cover 64 levels in all D coordinates, and depth stops well before.
+template <std::size_t D, class T>
+bool adjacent_pair_apart(const std::array<vec<D, T>, 4>& a, const std::array<vec<D, T>, 4>& b, T pad,
+                         std::size_t budget = 20000) {
+    struct piece {
+        std::array<vec<D, T>, 4> b;
+        int depth;
+    };
+    // A piece touches the joint while its end (for a) or start (for b) is 0.
+    auto split = [](const piece& p) {
+        const auto& q = p.b;
+        const T h = T(0.5);
+        const auto a0 = lerp(q[0], q[1], h), a1 = lerp(q[1], q[2], h), a2 = lerp(q[2], q[3], h);
+        const auto q0 = lerp(a0, a1, h), q1 = lerp(a1, a2, h);
+        const auto m = lerp(q0, q1, h);
+        return std::array<piece, 2>{piece{{q[0], a0, q0, m}, p.depth + 1}, piece{{m, q1, a2, q[3]}, p.depth + 1}};
+    };
+    auto apart_at_joint = [&](const std::array<vec<D, T>, 4>& pa, const std::array<vec<D, T>, 4>& pb) {
+        // Candidate directions: the pieces' own directions at the joint
+        // (first nonzero control-point difference) and their bisector.
+        vec<D, T> da{}, db{};
+        for (int k = 2; k >= 0 && !(norm(da) > 0); --k) da = pa[3] - pa[std::size_t(k)];
+        for (int k = 1; k <= 3 && !(norm(db) > 0); ++k) db = pb[std::size_t(k)] - pb[0];
+        std::array<vec<D, T>, 3> dirs{da, db, vec<D, T>{}};
+        if (norm(da) > 0 && norm(db) > 0) dirs[2] = da / norm(da) + db / norm(db);
+        for (const auto& d : dirs) {
+            const T len = norm(d);
+            if (!(len > 0)) continue;
+            bool ok = true;
+            for (std::size_t k = 0; k < 3 && ok; ++k) ok = dot(pa[k], d) < -pad * len;
+            for (std::size_t k = 1; k < 4 && ok; ++k) ok = dot(pb[k], d) > pad * len;
+            if (ok) return true;
+        }
+        return false;
+    };
+    auto hull_box = [&](const std::array<vec<D, T>, 4>& q) {
+        std::array<vec<D, T>, 2> bx{q[0], q[0]};
+        for (const auto& x : q)
+            for (std::size_t k = 0; k < D; ++k) {
+                bx[0][k] = std::min(bx[0][k], x[k]);
+                bx[1][k] = std::max(bx[1][k], x[k]);
+            }
+        return bx;
+    };
+    const vec<D, T> zero{};
+    std::vector<std::pair<piece, piece>> stack{{piece{a, 0}, piece{b, 0}}};
+    std::size_t visits = 0;
+    while (!stack.empty()) {
+        if (++visits > budget) return false;
+        const auto [pa, pb] = stack.back();
+        stack.pop_back();
+        const auto ba = hull_box(pa.b), bb = hull_box(pb.b);
+        bool disjoint = false;
+        for (std::size_t k = 0; k < D && !disjoint; ++k)
+            disjoint = ba[0][k] - pad > bb[1][k] + pad || bb[0][k] - pad > ba[1][k] + pad;
+        if (disjoint) continue;
+        const bool corner = pa.b[3] == zero && pb.b[0] == zero;
+        if (corner && apart_at_joint(pa.b, pb.b)) continue;
+        if (pa.depth >= 48 && pb.depth >= 48) return false;  // too close to decide: not proved
+        const T sa = norm(ba[1] - ba[0]), sb = norm(bb[1] - bb[0]);
+        if ((sa >= sb && pa.depth < 48) || pb.depth >= 48) {
+            const auto h = split(pa);
+            stack.push_back({h[0], pb});
+            stack.push_back({h[1], pb});
+        } else {
+            const auto h = split(pb);
+            stack.push_back({pa, h[0]});
+            stack.push_back({pa, h[1]});
+        }
+    }
+    return true;
+}
+
 }  // namespace detail
 
-/// Section 5's three rules: (1) centripetal: the knots are the centripetal
-/// ones and every interior segment is the plain Catmull-Rom segment of its
-/// points (tension 0, no Kochanek-Bartels); the end segments of an open
-/// curve, shaped by end conditions the paper does not cover, must have no
-/// cusp, loop or fold (checked exactly); (2) every polygon angle between two
-/// segments exceeds options.safe_angle (pi/3); (3) the boxes of
-/// non-adjacent segments are disjoint: interior segments use the edge
-/// extruded by the two-sided Eq. 6 bound (Theorem 3: a centripetal segment
-/// never leaves [0, 1] along its edge, so no balls are needed), end segments
-/// the box of their Bézier points. A certified curve has no
-/// self-intersection. When certification fails, the first failing rule is
-/// reported with where it failed, and (options.search_on_failure) the
-/// exact search says whether the curve actually intersects itself.
+/// Section 5's rules, made sound for every curve catmull_rom builds:
+///
+///  (1) centripetal knots: the curve was built with alpha = 1/2 (read from
+///      catmull_rom::options(), never guessed from the numbers); an explicit
+///      grid or another alpha fails not_centripetal. No segment may have a
+///      cusp, loop or fold (checked exactly: analyze()). Centripetal
+///      interior segments never do (Theorem 3); end segments (end
+///      conditions) and segments with tension or Kochanek-Bartels values
+///      may, and are checked the same way.
+///  (2) adjacent segments: two interior segments of a plain centripetal
+///      curve (no tension, no Kochanek-Bartels) are apart when the polygon
+///      angle at their shared vertex exceeds options.safe_angle (pi/3; the
+///      paper's Section 5 argument, measured: crossings exist up to at least
+///      28.9 degrees, none found above 30). Every other adjacent pair -- an
+///      end segment of an open curve with any end condition (natural and
+///      reflect included: their safety was only ever measured), or a
+///      segment with tension or Kochanek-Bartels values -- is proved apart
+///      by an exact subdivision check (detail::adjacent_pair_apart, with
+///      the rounding of its arithmetic bounded), or fails adjacent_pair.
+///  (3) the boxes of non-adjacent segments are disjoint: interior plain
+///      segments use the edge extruded by the two-sided Eq. 6 bound
+///      (Theorem 3: a centripetal segment never leaves [0, 1] along its
+///      edge, so no balls are needed), all others the box of their Bézier
+///      points (valid for any cubic).
+///
+/// A certified curve has no self-intersection. Every test is done relative
+/// to the curve's own points, so the answer does not change when the curve
+/// is moved. When certification fails, the first failing rule is reported
+/// with where it failed, and (options.search_on_failure) the search says
+/// whether the curve actually intersects itself.
 template <std::size_t D, class T>
 certificate<D, T> certify_intersection_free(const catmull_rom<D, T>& c, const certify_options& opt = {}) {
     certificate<D, T> cert;
     const auto pts = c.points();
     const auto grid = c.grid();
+    const auto& built = c.options();
     const std::size_t n = c.segment_count(), np = pts.size();
     const bool closed = c.closed();
+    const bool plain = built.tension == T(0) && built.kb.empty();
     auto fail = [&](certify_rule r, std::string why) {
         cert.certified = false;
         cert.failed_rule = r;
@@ -284,6 +413,7 @@ certificate<D, T> certify_intersection_free(const catmull_rom<D, T>& c, const ce
         }
         return cert;
     };
+    auto end_segment = [&](std::size_t i) { return !closed && (i == 0 || i + 1 == n); };
 
     // Coincident consecutive points: zero edges.
     for (std::size_t i = 0; i < n; ++i)
@@ -293,45 +423,72 @@ certificate<D, T> certify_intersection_free(const catmull_rom<D, T>& c, const ce
                         "points " + std::to_string(i) + " and " + std::to_string((i + 1) % np) + " coincide");
         }
 
-    // Rule 1: centripetal knots, plain interior segments, clean end segments.
-    for (std::size_t i = 0; i < n; ++i) {
-        const T h = grid[i + 1] - grid[i], want = std::sqrt(norm(pts[(i + 1) % np] - pts[i]));
-        if (std::abs(h - want) > T(16) * std::numeric_limits<T>::epsilon() * (want + std::abs(grid[i + 1]))) {
-            cert.segment = i;
-            return fail(certify_rule::not_centripetal,
-                        "knot interval " + std::to_string(i) + " is not |P(i+1) - P(i)|^(1/2)");
-        }
-    }
+    // Rule 1: centripetal knots, as built; no segment cusps, loops or folds.
+    if (!built.alpha)
+        return fail(certify_rule::not_centripetal, "the knots were given as an explicit grid, not from alpha = 0.5");
+    if (*built.alpha != centripetal)
+        return fail(certify_rule::not_centripetal,
+                    "the knots are from alpha = " + detail::num(*built.alpha) + ", not 0.5 (centripetal)");
     const auto an = analyze(c);
-    for (std::size_t i = 0; i < n; ++i) {
-        const bool interior = closed || (i > 0 && i + 1 < n);
-        if (interior && !an[i].bounds && n > 1) {
-            cert.segment = i;
-            return fail(certify_rule::not_centripetal,
-                        "segment " + std::to_string(i) + " is not the plain Catmull-Rom segment (tension or Kochanek-Bartels)");
-        }
+    for (std::size_t i = 0; i < n; ++i)
         if (an[i].has_cusp() || an[i].has_self_intersection()) {
             cert.segment = i;
+            std::string why = end_segment(i) ? " (shaped by its end condition)"
+                              : !plain       ? " (shaped by tension or Kochanek-Bartels values)"
+                                             : "";
             return fail(certify_rule::not_centripetal,
-                        "segment " + std::to_string(i) + " has a cusp, loop or fold (an end condition)");
+                        "segment " + std::to_string(i) + " has a cusp, loop or fold" + why);
         }
-    }
 
-    // Rule 2: the polygon angle at every vertex between two segments.
+    // Rule 2: adjacent pairs. The angle rule for two interior plain
+    // segments; the exact check for every other pair.
     const std::size_t first = closed ? 0 : 1, last = closed ? np : np - 1;
     for (std::size_t k = first; k < last && n > 1; ++k) {
-        const T ang = detail::angle_between(pts[(k + np - 1) % np] - pts[k], pts[(k + 1) % np] - pts[k]);
-        if (!(ang > T(opt.safe_angle))) {
+        const std::size_t before = (k + n - 1) % n, after = k % n;  // the segments ending and starting at vertex k
+        if (plain && !end_segment(before) && !end_segment(after)) {
+            const T ang = detail::angle_between(pts[(k + np - 1) % np] - pts[k], pts[(k + 1) % np] - pts[k]);
+            if (!(ang > T(opt.safe_angle))) {
+                cert.vertex = k;
+                cert.angle = ang;
+                return fail(certify_rule::adjacent_angle,
+                            "polygon angle at vertex " + std::to_string(k) + " is " +
+                                detail::degrees(double(ang)) + " degrees, not above " +
+                                detail::degrees(opt.safe_angle));
+            }
+            continue;
+        }
+        // Bézier points relative to the joint P(k), from the stored points
+        // and tangents (B1 = P + h/3 v), so the joint is exactly 0 in both.
+        const vec<D, T> J = pts[k];
+        const auto [va0, va1] = c.tangents(before);
+        const auto [vb0, vb1] = c.tangents(after);
+        const T ha = grid[before + 1] - grid[before], hb = grid[after + 1] - grid[after];
+        const vec<D, T> pa0 = pts[before] - J, pb3 = pts[(after + 1) % np] - J;
+        const std::array<vec<D, T>, 4> a{pa0, pa0 + (ha / T(3)) * va0, -((ha / T(3)) * va1), vec<D, T>{}};
+        const std::array<vec<D, T>, 4> b{vec<D, T>{}, (hb / T(3)) * vb0, pb3 - (hb / T(3)) * vb1, pb3};
+        T M = 0;
+        for (std::size_t q = 0; q < 4; ++q) M = std::max({M, max_abs(a[q]), max_abs(b[q])});
+        // Rounding of these points (a few eps of M) and of 48 levels of
+        // halving (at most 1.5 eps of M per level and coordinate), in D
+        // coordinates: 128 D eps M covers both with room.
+        const T pad = T(128) * T(D) * std::numeric_limits<T>::epsilon() * M;
+        if (!detail::adjacent_pair_apart(a, b, pad)) {
             cert.vertex = k;
-            cert.angle = ang;
-            return fail(certify_rule::adjacent_angle,
-                        "polygon angle at vertex " + std::to_string(k) + " is " +
-                            detail::degrees(double(ang)) + " degrees, not above " +
-                            detail::degrees(opt.safe_angle));
+            cert.segments = std::array<std::size_t, 2>{std::min(before, after), std::max(before, after)};
+            const std::string which = end_segment(before) || end_segment(after)
+                                          ? "an end segment (end condition)"
+                                          : "tension or Kochanek-Bartels values";
+            return fail(certify_rule::adjacent_pair,
+                        "segments " + std::to_string(before) + " and " + std::to_string(after) +
+                            " (joined at vertex " + std::to_string(k) + ", " + which +
+                            ", not covered by the angle rule) could not be proved apart");
         }
     }
 
-    // Rule 3: boxes of non-adjacent segments are disjoint.
+    // Rule 3: boxes of non-adjacent segments are disjoint. Boxes are taken
+    // relative to the first point, so their rounding (and the margin that
+    // covers it) is relative to the curve's extent, not its position.
+    const vec<D, T> ref = pts[0];
     std::vector<edge_box<D, T>> boxes(n);
     T scale = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -343,7 +500,9 @@ certificate<D, T> certify_intersection_free(const catmull_rom<D, T>& c, const ce
         } else {
             boxes[i] = detail::bezier_box(i, an[i]);
         }
-        scale = std::max({scale, max_abs(pts[i]), max_abs(pts[(i + 1) % np])});
+        boxes[i].a -= ref;
+        boxes[i].b -= ref;
+        scale = std::max({scale, max_abs(boxes[i].a), max_abs(boxes[i].b)});
     }
     // Rounding of the box geometry: a few ulps of the coordinates.
     const T margin = T(64) * std::numeric_limits<T>::epsilon() * scale;

@@ -89,10 +89,28 @@ bool monotone_along(const std::array<vec<D, T>, 4>& b, const vec<D, T>& d) {
     return true;
 }
 
-// Gauss-Newton on |C_i(u) - C_j(v)|^2 from (u, v), clamped to [0, 1]^2.
+// Position of s at u relative to its origin: c1 u + c2 u^2 + c3 u^3, without
+// adding the origin (whose ulp may exceed the tolerance far from the origin
+// of coordinates).
+template <std::size_t D, class T>
+vec<D, T> relative_at(const cubic_segment<D, T>& s, T u) noexcept {
+    return u * (s.c1 + u * (s.c2 + u * s.c3));
+}
+
+// Bézier points of s relative to a pair origin, given offset = s.origin -
+// that origin: B0 = offset exactly, then offset + (Bk - B0).
+template <std::size_t D, class T>
+std::array<vec<D, T>, 4> relative_bezier(const cubic_segment<D, T>& s, const vec<D, T>& offset) {
+    return {offset, offset + s.c1 / T(3), offset + (T(2) * s.c1 + s.c2) / T(3), offset + (s.c1 + s.c2 + s.c3)};
+}
+
+// Gauss-Newton on |C_i(u) - C_j(v)|^2 from (u, v), clamped to [0, 1]^2, with
+// C_i - C_j = (origin_i - origin_j) + relative parts: no absolute position is
+// ever formed, so the residual keeps the precision of the curve's size.
 template <std::size_t D, class T>
 std::array<T, 3> polish(const cubic_segment<D, T>& A, const cubic_segment<D, T>& B, T u, T v) {
-    auto F = [&](T x, T y) { return (A.origin - B.origin) + (A.at(x) - A.origin) - (B.at(y) - B.origin); };
+    const vec<D, T> offset = A.origin - B.origin;
+    auto F = [&](T x, T y) { return offset + relative_at(A, x) - relative_at(B, y); };
     T best = norm(F(u, v));
     for (int it = 0; it < 30 && best > 0; ++it) {
         const vec<D, T> f = F(u, v), ja = A.du(u, 1), jb = -B.du(v, 1);
@@ -118,6 +136,84 @@ std::array<T, 3> polish(const cubic_segment<D, T>& A, const cubic_segment<D, T>&
     return {u, v, best};
 }
 
+/// How two segments of a curve touch by construction.
+enum class pair_joint {
+    none,   ///< not adjacent
+    next,   ///< A(1) = B(0): consecutive segments
+    wrap,   ///< A(0) = B(1): the first and last segments of a closed curve
+};
+
+/// Meetings of segments A and B closer than tol (the per-pair step of
+/// find_intersections): Bézier subdivision with box rejection, then a
+/// polish. Everything is relative to A's origin, so a curve far from the
+/// origin of coordinates is searched as precisely as one near it. Excludes
+/// the shared joint of adjacent segments. Returns {u, v, distance} per
+/// meeting; sets complete = false when the budget of sub-pair visits runs
+/// out (overlapping collinear pieces meet in a continuum).
+template <std::size_t D, class T>
+std::vector<std::array<T, 3>> segment_pair_meetings(const cubic_segment<D, T>& A, const cubic_segment<D, T>& B,
+                                                    pair_joint joint, T tol, bool& complete,
+                                                    std::size_t budget = 200000) {
+    using point = vec<D, T>;
+    using sub = sub_bezier<D, T>;
+    const bool adjacent = joint != pair_joint::none, next = joint == pair_joint::next;
+    const auto ba0 = relative_bezier(A, point{}), bb0 = relative_bezier(B, point(B.origin - A.origin));
+    const T ju = next ? T(1) : T(0), jv = next ? T(0) : T(1);
+    point tangent{};
+    if (adjacent) {
+        const auto& S = next ? B : A;  // the segment that starts at the joint
+        const auto& b = next ? bb0 : ba0;
+        tangent = S.du(T(0), 1);
+        if (!(norm(tangent) > 0)) tangent = S.du(T(0), 2);  // zero speed at the joint
+        if (!(norm(tangent) > 0)) tangent = b[3] - b[0];
+    }
+    std::vector<std::pair<sub, sub>> stack{{sub{ba0, T(0), T(1)}, sub{bb0, T(0), T(1)}}};
+    std::vector<std::array<T, 3>> found;
+    std::size_t visits = 0;
+    while (!stack.empty()) {
+        if (++visits > budget) { complete = false; break; }
+        auto [a, b] = stack.back();
+        stack.pop_back();
+        const auto ba = box_of(a.b), bb = box_of(b.b);
+        if (!boxes_meet(ba, bb, tol)) continue;
+        const bool corner = adjacent && (a.u0 == ju || a.u1 == ju) && (b.u0 == jv || b.u1 == jv);
+        if (corner) {
+            // Both pieces monotone along the joint tangent, on its two
+            // sides: they meet only at the joint.
+            const point d = next ? tangent : -tangent;  // direction of travel i -> j through the joint
+            if (monotone_along(a.b, d) && monotone_along(b.b, d)) continue;
+            if (!next && monotone_along(a.b, tangent) && monotone_along(b.b, tangent)) continue;
+        }
+        const T sa = norm(ba[1] - ba[0]), sb = norm(bb[1] - bb[0]);
+        const bool leaf = (sa <= tol && sb <= tol) || (a.u1 - a.u0 < T(1e-12) && b.u1 - b.u0 < T(1e-12));
+        if (leaf) {
+            if (corner) continue;  // the joint itself
+            const auto r = polish(A, B, (a.u0 + a.u1) / 2, (b.u0 + b.u1) / 2);
+            if (!(r[2] <= tol)) continue;
+            // Not the joint (polish can slide into it).
+            if (adjacent && std::abs(r[0] - ju) < T(1e-6) && std::abs(r[1] - jv) < T(1e-6)) continue;
+            bool dup = false;
+            for (const auto& f : found)
+                if ((std::abs(f[0] - r[0]) < T(1e-7) && std::abs(f[1] - r[1]) < T(1e-7)) ||
+                    norm(relative_at(A, f[0]) - relative_at(A, r[0])) <= 2 * tol)
+                    dup = true;
+            if (!dup) found.push_back(r);
+            continue;
+        }
+        // Split the larger piece (both when similar).
+        if (sa >= sb) {
+            const auto h = split_half(a);
+            stack.push_back({h[0], b});
+            stack.push_back({h[1], b});
+        } else {
+            const auto h = split_half(b);
+            stack.push_back({a, h[0]});
+            stack.push_back({a, h[1]});
+        }
+    }
+    return found;
+}
+
 }  // namespace detail
 
 /// All meetings of the curve with itself closer than `tolerance` (a
@@ -127,7 +223,6 @@ std::array<T, 3> polish(const cubic_segment<D, T>& A, const cubic_segment<D, T>&
 template <std::size_t D, class T>
 intersection_result<D, T> find_intersections(const catmull_rom<D, T>& c, T tolerance = T(0)) {
     using point = vec<D, T>;
-    using sub = detail::sub_bezier<D, T>;
     intersection_result<D, T> out;
     const std::size_t n = c.segment_count();
     const auto bez = c.bezier();
@@ -151,71 +246,22 @@ intersection_result<D, T> find_intersections(const catmull_rom<D, T>& c, T toler
 
     std::vector<std::array<point, 2>> boxes(n);
     for (std::size_t i = 0; i < n; ++i) boxes[i] = detail::box_of(bez[i]);
-    const std::size_t budget = 200000;  // sub-pair visits per segment pair
+    // Candidate pairs by their boxes in absolute coordinates: pad by the
+    // rounding of those coordinates too, so no pair is dropped for it (the
+    // per-pair search below is relative and exact to the tolerance).
+    const T pad = tol + T(8) * std::numeric_limits<T>::epsilon() * std::max(max_abs(lo), max_abs(hi));
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = i + 1; j < n; ++j) {
-            if (!detail::boxes_meet(boxes[i], boxes[j], tol)) continue;
+            if (!detail::boxes_meet(boxes[i], boxes[j], pad)) continue;
             // Joint of adjacent segments: (end of i, start of j) or, closing
             // a closed curve, (start of i = 0, end of j = n - 1).
             const bool next = j == i + 1;
             const bool wrap = c.closed() && i == 0 && j == n - 1 && n > 2;
-            const bool adjacent = next || wrap || (c.closed() && n == 2);
-            const T ju = next ? T(1) : T(0), jv = next ? T(0) : T(1);
-            point joint{}, tangent{};
-            if (adjacent) {
-                joint = next ? bez[j][0] : bez[i][0];
-                const auto& S = c.segment(next ? j : i);
-                tangent = S.du(T(0), 1);
-                if (!(norm(tangent) > 0)) tangent = S.du(T(0), 2);  // zero speed at the joint
-                if (!(norm(tangent) > 0)) tangent = bez[next ? j : i][3] - joint;
-            }
+            const auto joint = next ? detail::pair_joint::next : wrap ? detail::pair_joint::wrap : detail::pair_joint::none;
             const auto& A = c.segment(i);
             const auto& B = c.segment(j);
-            std::vector<std::pair<sub, sub>> stack{{sub{bez[i], T(0), T(1)}, sub{bez[j], T(0), T(1)}}};
-            std::vector<std::array<T, 3>> found;
-            std::size_t visits = 0;
-            while (!stack.empty()) {
-                if (++visits > budget) { out.complete = false; break; }
-                auto [a, b] = stack.back();
-                stack.pop_back();
-                const auto ba = detail::box_of(a.b), bb = detail::box_of(b.b);
-                if (!detail::boxes_meet(ba, bb, tol)) continue;
-                const bool corner = adjacent && (a.u0 == ju || a.u1 == ju) && (b.u0 == jv || b.u1 == jv);
-                if (corner) {
-                    // Both pieces monotone along the joint tangent, on its two
-                    // sides: they meet only at the joint.
-                    const point d = next ? tangent : -tangent;  // direction of travel i -> j through the joint
-                    if (detail::monotone_along(a.b, d) && detail::monotone_along(b.b, d)) continue;
-                    if (!next && detail::monotone_along(a.b, tangent) && detail::monotone_along(b.b, tangent)) continue;
-                }
-                const T sa = norm(ba[1] - ba[0]), sb = norm(bb[1] - bb[0]);
-                const bool leaf = (sa <= tol && sb <= tol) || (a.u1 - a.u0 < T(1e-12) && b.u1 - b.u0 < T(1e-12));
-                if (leaf) {
-                    if (corner) continue;  // the joint itself
-                    const auto r = detail::polish(A, B, (a.u0 + a.u1) / 2, (b.u0 + b.u1) / 2);
-                    if (!(r[2] <= tol)) continue;
-                    // Not the joint (polish can slide into it).
-                    if (adjacent && std::abs(r[0] - ju) < T(1e-6) && std::abs(r[1] - jv) < T(1e-6)) continue;
-                    bool dup = false;
-                    for (const auto& f : found)
-                        if ((std::abs(f[0] - r[0]) < T(1e-7) && std::abs(f[1] - r[1]) < T(1e-7)) ||
-                            norm(A.at(f[0]) - A.at(r[0])) <= 2 * tol)
-                            dup = true;
-                    if (!dup) found.push_back(r);
-                    continue;
-                }
-                // Split the larger piece (both when similar).
-                if (sa >= sb) {
-                    const auto h = detail::split_half(a);
-                    stack.push_back({h[0], b});
-                    stack.push_back({h[1], b});
-                } else {
-                    const auto h = detail::split_half(b);
-                    stack.push_back({a, h[0]});
-                    stack.push_back({a, h[1]});
-                }
-            }
-            for (const auto& f : found) out.intersections.push_back({{i, j}, {f[0], f[1]}, A.at(f[0]), f[2]});
+            for (const auto& f : detail::segment_pair_meetings(A, B, joint, tol, out.complete))
+                out.intersections.push_back({{i, j}, {f[0], f[1]}, A.at(f[0]), f[2]});
         }
     return out;
 }

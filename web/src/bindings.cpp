@@ -608,19 +608,18 @@ public:
         });
     }
     val certify0() const { return certify(val::undefined()); }
-    // The paper's bounding volumes (Figure 5), for the alpha the curve was
-    // built with. boxes: per segment (segment, a..., b..., lambdaMin,
+    // The paper's bounding volumes (Figure 5), for the knots the curve was
+    // built with (alpha or a grid). boxes: per segment (segment, a..., b..., lambdaMin,
     // lambdaMax, halfWidth); balls: per vertex (vertex, center..., radius).
     val boundingVolumes(std::string kind) const {
         return guarded([&] {
             return visit([&](const auto& c) {
                 constexpr std::size_t D = std::decay_t<decltype(c.curve)>::dimension;
-                if (std::isnan(c.alpha)) throw cr::invalid_input("bounding volumes need a curve built from alpha, not a grid");
                 cr::volume_kind k;
                 if (kind == "tightened") k = cr::volume_kind::tightened;
                 else if (kind == "local") k = cr::volume_kind::local;
                 else throw cr::invalid_input("volume kind must be \"tightened\" or \"local\", got \"" + kind + "\"");
-                const auto v = cr::paper_bounding_volumes(c.curve, c.alpha, k);
+                const auto v = cr::paper_bounding_volumes(c.curve, k);
                 std::vector<double> boxes, balls;
                 for (const auto& b : v.boxes) {
                     boxes.push_back(double(b.segment));
