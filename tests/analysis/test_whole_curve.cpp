@@ -324,7 +324,9 @@ TEST(Certify, AdjacentSegmentsCrossAtSmallAngles) {
                 EXPECT_TRUE(cert.failed_rule == certify_rule::adjacent_angle ||
                             cert.failed_rule == certify_rule::adjacent_pair)
                     << cert.detail;
-                if (k == 2) EXPECT_EQ(cert.failed_rule, certify_rule::adjacent_angle) << cert.detail;
+                if (k == 2) {
+                    EXPECT_EQ(cert.failed_rule, certify_rule::adjacent_angle) << cert.detail;
+                }
                 EXPECT_TRUE(cert.intersects.value_or(false));
                 break;
             }
