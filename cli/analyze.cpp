@@ -46,6 +46,9 @@ output_json run_analyze(const document& input) {
             m["segments"] = {x.segments[0], x.segments[1]};
             m["u"] = {x.u[0], x.u[1]};
             m["point"] = coords(x.point);
+            // 0 to rounding for a crossing; up to the tolerance for a near
+            // miss (in 3-D, closest approaches are what is reported).
+            m["distance"] = x.distance;
             meets.push_back(std::move(m));
         }
 
@@ -62,6 +65,9 @@ output_json run_analyze(const document& input) {
         out["segments"] = std::move(segments);
         out["intersections"] = std::move(meets);
         out["folds"] = found.folds;
+        // false: some pair of segments ran out of the search's budget (the
+        // list may then miss meetings).
+        out["complete"] = found.complete;
         out["intersection_free"] = std::move(free);
         return out;
     });

@@ -73,7 +73,7 @@ class Analysis(TypedDict):
 
 class Certificate(TypedDict):
     certified: bool
-    failed_rule: Literal["none", "not_centripetal", "coincident_points", "adjacent_angle", "overlapping_boxes"]
+    failed_rule: Literal["none", "not_centripetal", "coincident_points", "adjacent_angle", "overlapping_boxes", "adjacent_pair"]
     vertex: Union[int, None]
     segment: Union[int, None]
     segments: Union[tuple[int, int], None]

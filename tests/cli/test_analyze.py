@@ -8,6 +8,7 @@ test_segment_oracle.cpp): parameters to 1e-12, distances to 1e-13 of the
 segment's size (max |P - P1|) plus one ulp of the coordinates (both sides
 round to binary64), the Eq. 6 bound to 1e-12 relative (the curve's knots are running sums).
 """
+import json
 import math
 
 from cli_support import load_reference, run, run_json, ulp_of
@@ -60,7 +61,8 @@ LOOP = [[0, 0], [1, 1], [1.1, 1], [2, 0]]
 
 def test_uniform_loop_and_centripetal_certificate():
     uniform = run_json("analyze", {"points": LOOP, "alpha": 0})
-    assert list(uniform) == ["segments", "intersections", "folds", "intersection_free"]
+    assert list(uniform) == ["segments", "intersections", "folds", "complete", "intersection_free"]
+    assert uniform["complete"] is True
     loops = [s for s in uniform["segments"] if s["self_intersection"]]
     assert [s["index"] for s in loops] == [1]
     u, v = loops[0]["self_intersection"][0]
@@ -79,6 +81,8 @@ def test_crossing_between_segments_and_certified_curve():
     out = run_json("analyze", {"points": [[0, 0], [2, 2], [2, 0], [0, 2]]})
     cross = [x for x in out["intersections"] if x["segments"][0] != x["segments"][1]]
     assert len(cross) == 1 and cross[0]["segments"] == [0, 2]
+    # A crossing, not a near miss: its distance is zero to rounding.
+    assert 0 <= cross[0]["distance"] <= 1e-12
     # The reported point lies on both segments: evaluate through the CLI.
     grid = run_json("bezier", {"points": [[0, 0], [2, 2], [2, 0], [0, 2]]})["grid"]
     ts = [grid[i] + u * (grid[i + 1] - grid[i]) for i, u in zip(cross[0]["segments"], cross[0]["u"])]
@@ -97,3 +101,21 @@ def test_analyze_from_csv_with_options(tmp_path):
     p = run(["analyze", "--uniform", str(path)])
     assert p.returncode == 0, p.stderr
     assert '"self_intersection":[[' in p.stdout
+
+
+def test_given_start_tangent_that_crosses_is_not_certified():
+    # Issue 13: the end segment shaped by a given tangent crosses its
+    # neighbour twice; the angle rule never covered it, and the certificate
+    # now names the pair it could not prove apart.
+    doc = {"points": [[0, 0], [1, 0], [1, 1]], "alpha": 0.5, "end": {"start": [10, 10]}}
+    out = run_json("analyze", doc)
+    cross = sorted(x["u"] for x in out["intersections"] if x["segments"] == [0, 1])
+    assert len(cross) == 2
+    assert math.isclose(cross[0][0], 0.1274, abs_tol=1e-4) and math.isclose(cross[1][0], 0.8523, abs_tol=1e-4)
+    free = out["intersection_free"]
+    assert free["certified"] is False and free["failed_rule"] == "adjacent_pair"
+    assert "segments 0 and 1" in free["detail"] and "end condition" in free["detail"]
+    # The same with the command-line tangent.
+    p = run(["analyze", "--start=10,10", "-"], json.dumps({"points": doc["points"]}))
+    assert p.returncode == 0, p.stderr
+    assert '"failed_rule":"adjacent_pair"' in p.stdout
