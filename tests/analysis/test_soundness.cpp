@@ -337,6 +337,43 @@ TEST(Soundness, GivenEndTangentThatCrossesIsNotCertified) {
     EXPECT_TRUE(ok.certified) << ok.detail;
 }
 
+// Issue 13, item 3: the curve knows how it was built. options() gives the
+// construction back (alpha resolved, the grid not copied), and building
+// again from it, with grid() where the knots were explicit, gives the same
+// curve bit for bit.
+TEST(Soundness, CurveRemembersHowItWasBuilt) {
+    const std::vector<P2> p{P2{{0, 0}}, P2{{1, 2}}, P2{{3, 1}}, P2{{4, 3}}, P2{{6, 0}}};
+    {
+        const catmull_rom<2> c(p);
+        EXPECT_EQ(c.options().alpha, std::optional<double>(0.5));  // the default, resolved
+        EXPECT_FALSE(c.options().grid.has_value());
+        EXPECT_FALSE(c.explicit_grid());
+    }
+    options<2> o{.alpha = 1.0, .start = end_condition<2>::tangent(P2{{1, -1}}), .end = end_condition<2>::reflect(),
+                 .tension = 0.25};
+    o.kb.bias = {0, 0.1, -0.2, 0.3, 0};
+    const catmull_rom<2> c(p, o);
+    const auto& b = c.options();
+    EXPECT_EQ(b.alpha, std::optional<double>(1.0));
+    EXPECT_EQ(b.start, o.start);
+    EXPECT_EQ(b.end, o.end);
+    EXPECT_EQ(b.tension, 0.25);
+    EXPECT_EQ(b.kb.bias, o.kb.bias);
+    EXPECT_FALSE(b.closed);
+    const catmull_rom<2> again(p, b);
+    for (std::size_t i = 0; i < c.segment_count(); ++i) EXPECT_EQ(again.bezier(i), c.bezier(i)) << "segment " << i;
+    // An explicit grid: alpha empty, the knots are grid().
+    const std::vector<double> g{0, 1, 3, 4, 7};
+    const catmull_rom<2> e(p, {.grid = g, .closed = false});
+    EXPECT_TRUE(e.explicit_grid());
+    EXPECT_FALSE(e.options().alpha.has_value());
+    EXPECT_FALSE(e.options().grid.has_value());  // stored once, as grid()
+    auto eo = e.options();
+    eo.grid.emplace(e.grid().begin(), e.grid().end());
+    const catmull_rom<2> e2(p, eo);
+    for (std::size_t i = 0; i < e.segment_count(); ++i) EXPECT_EQ(e2.bezier(i), e.bezier(i)) << "segment " << i;
+}
+
 // Issue 13, item 2: a crossing of segments 0 and 3 is found however far the
 // curve is moved (it was lost at 3e7).
 TEST(Soundness, CrossingFoundFarFromTheOrigin) {
