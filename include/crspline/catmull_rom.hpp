@@ -129,6 +129,27 @@ public:
     catmull_rom(std::initializer_list<point> points, const options_type& opt = {})
         : catmull_rom(std::span<const point>(points.begin(), points.size()), opt) {}
 
+    /// A cubic Hermite curve: the points, their knots and a tangent dx/dt at
+    /// every vertex, taken as given (Catmull-Rom and Kochanek-Bartels are the
+    /// special cases whose tangents come from the neighbours). `grid` has N
+    /// values, N + 1 when closed (the last knot closes the loop back to
+    /// points[0]). `outgoing[i]` starts the segment leaving vertex i,
+    /// `incoming[i]` ends the segment arriving at it; an open curve uses
+    /// outgoing[0 .. N-2] and incoming[1 .. N-1] only (the other two entries
+    /// are ignored). Throws invalid_input naming the index and value of a
+    /// bad point, tangent or knot.
+    static catmull_rom hermite(std::span<const point> points, std::span<const point> outgoing,
+                               std::span<const point> incoming, std::span<const T> grid, bool closed = false) {
+        catmull_rom c(hermite_tag{});
+        c.build_hermite(points, outgoing, incoming, grid, closed);
+        return c;
+    }
+    /// The same with one tangent per vertex, incoming = outgoing (a C1 curve).
+    static catmull_rom hermite(std::span<const point> points, std::span<const point> tangents,
+                               std::span<const T> grid, bool closed = false) {
+        return hermite(points, tangents, tangents, grid, closed);
+    }
+
     // --- what the curve is made of ------------------------------------------
     std::span<const point> points() const noexcept { return points_; }
     std::span<const T> grid() const noexcept { return grid_; }
@@ -675,16 +696,74 @@ private:
     }
 
     void build(std::span<const point> p, const options_type& opt);
+
+    struct hermite_tag {};
+    explicit catmull_rom(hermite_tag) noexcept {}
+    void build_hermite(std::span<const point> p, std::span<const point> outgoing, std::span<const point> incoming,
+                       std::span<const T> grid, bool closed);
 };
+
+template <std::size_t D, class T>
+void catmull_rom<D, T>::build_hermite(std::span<const point> p, std::span<const point> outgoing,
+                                      std::span<const point> incoming, std::span<const T> grid, bool closed) {
+    const std::size_t n = p.size();
+    closed_ = closed;
+    // 1. Validate at the boundary: enough points, finite values, a tangent
+    //    per vertex, an increasing grid of the right length.
+    if (n < 2)
+        throw invalid_input(std::string(closed ? "a closed curve" : "a curve") + " needs at least 2 points, got " +
+                            std::to_string(n));
+    check_finite(p);
+    const std::size_t nseg = closed ? n : n - 1;
+    const std::pair<std::span<const point>, const char*> given[2] = {{outgoing, "outgoing"}, {incoming, "incoming"}};
+    for (const auto& [tangents, name] : given) {
+        if (tangents.size() != n)
+            throw invalid_input(std::string(name) + " tangents: got " + std::to_string(tangents.size()) +
+                                ", expected one per point (" + std::to_string(n) + ")");
+        // An open curve does not use the outgoing tangent of its last vertex
+        // nor the incoming one of its first.
+        const std::size_t skip = closed ? n : (name[0] == 'o' ? n - 1 : 0);
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t k = 0; k < D && i != skip; ++k)
+                if (!std::isfinite(tangents[i][k]))
+                    throw invalid_input(std::string(name) + " tangent " + std::to_string(i) + ", coordinate " +
+                                        std::to_string(k) + " is not finite (" + detail::num(double(tangents[i][k])) +
+                                        ")");
+    }
+    check_grid(grid, nseg + 1, closed);
+
+    // 2. Store points, knots and 1/h as build() does.
+    points_.assign(p.begin(), p.end());
+    grid_.assign(grid.begin(), grid.end());
+    inv_h_.resize(nseg);
+    for (std::size_t i = 0; i < nseg; ++i) inv_h_[i] = T(1) / (grid_[i + 1] - grid_[i]);
+
+    // 3. Tangents: one shared array when incoming and outgoing agree at every
+    //    vertex that uses both (bit for bit), else both arrays. An open
+    //    curve's last entry of the shared array is its incoming end tangent.
+    bool split = false;
+    for (std::size_t i = closed ? 0 : 1; i < (closed ? n : n - 1) && !split; ++i)
+        for (std::size_t k = 0; k < D; ++k)
+            if (!(outgoing[i][k] == incoming[i][k])) split = true;
+    tangent_.assign(outgoing.begin(), outgoing.end());
+    if (!closed) tangent_[n - 1] = incoming[n - 1];
+    if (split) {
+        in_.assign(incoming.begin(), incoming.end());
+        if (!closed) in_[0] = outgoing[0];  // unused
+    } else {
+        in_.clear();
+    }
+    build_buckets();
+}
 
 template <std::size_t D, class T>
 void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt) {
     const std::size_t n = p.size();
     closed_ = opt.closed;
     // 1. Validate the input once, here at the boundary.
-    if (n < (closed_ ? 3u : 2u))
-        throw invalid_input(std::string(closed_ ? "a closed curve" : "a curve") + " needs at least " +
-                            (closed_ ? "3" : "2") + " points, got " + std::to_string(n));
+    if (n < 2)  // a closed curve through 2 points is a loop of two segments
+        throw invalid_input(std::string(closed_ ? "a closed curve" : "a curve") + " needs at least 2 points, got " +
+                            std::to_string(n));
     check_finite(p);
     if (opt.alpha && opt.grid) throw invalid_input("give alpha or grid, not both");
     if (!(opt.tension >= 0 && opt.tension <= 1))
