@@ -428,7 +428,7 @@ curve_spec parse_curve(const document& doc, std::string_view command, std::initi
             fail("end", expected + describe(e));
         }
     }
-    const std::size_t n = c.point_count(), needed = c.closed ? 3 : 2;
+    const std::size_t n = c.point_count(), needed = 2;  // closed too: a loop of two segments
     if (n < needed)
         fail(points_name, std::string(c.closed ? "a closed curve" : "a curve") + " needs at least " +
                            std::to_string(needed) + " points, got " + std::to_string(n));

@@ -36,6 +36,14 @@ def _make_curve(
 ) -> _Curve:
     """Build a curve from validated, normalized arguments."""
 
+def _make_hermite(
+    points: _A,
+    outgoing: _A,
+    incoming: Union[_A, None],
+    grid: list[float],
+    closed: bool,
+) -> _Curve: ...
+
 class _ArcLengthTable:
     """Cumulative arc length of a curve, and its inverse."""
 

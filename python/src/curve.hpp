@@ -139,5 +139,6 @@ void bind_arc_length(py::module_& m, py::class_<curve>& cls);
 void bind_geometry(py::module_& m, py::class_<curve>& cls);
 void bind_frames(py::module_& m, py::class_<curve>& cls);
 void bind_analysis(py::module_& m, py::class_<curve>& cls);
+void bind_hermite(py::module_& m, py::class_<curve>& cls);
 
 }  // namespace crspline::python

@@ -29,6 +29,7 @@ PYBIND11_MODULE(_crspline, m) {
     py::class_<curve> cls(m, "_Curve", "A Catmull-Rom curve of run-time dimension and scalar type.");
     bind_curve(m, cls);
     bind_arc_length(m, cls);
+    bind_hermite(m, cls);
 #ifdef CRSPLINE_PY_GEOMETRY
     bind_geometry(m, cls);
 #endif

@@ -10,8 +10,8 @@ P = [[0, 0], [1, 2], [3, 2], [4, 0]]
 
 @pytest.mark.parametrize("args, kwargs, exc, message", [
     (([[0, 0]],), {}, crspline.InvalidInput, "a curve needs at least 2 points, got 1"),
-    (([[0, 0], [1, 1]],), {"endconditions": "closed"}, crspline.InvalidInput,
-     "a closed curve needs at least 3 points, got 2"),
+    (([[0, 0]],), {"endconditions": "closed"}, crspline.InvalidInput,
+     "a closed curve needs at least 2 points, got 1"),
     (([[0, 0], [1, np.nan]],), {}, crspline.InvalidInput, "point 1, coordinate 1 is not finite (nan)"),
     (([[0, 0], [np.inf, 1]],), {}, crspline.InvalidInput, "point 1, coordinate 0 is not finite (inf)"),
     ((P,), {"alpha": 1.5}, crspline.InvalidInput, "alpha must be in [0, 1], got 1.5"),

@@ -1,0 +1,380 @@
+"""crspline.splines as a drop-in for the `splines` package.
+
+1. Every probe of tests/reference/splines_dropin_probes.json (what `splines`
+   0.3.3 itself returned: numbers, shapes, types, exceptions) run through
+   crspline.splines with `import splines` bound to it.
+2. The patterns of the `splines` documentation the probes do not cover
+   (subclass tangent hooks, closed Kochanek-Bartels curves with per-vertex
+   TCB, more than 4 dimensions with alpha != 0, CubicHermite), against the
+   `splines` formulas re-derived here and a Hermite evaluator written here,
+   never against crspline itself.
+"""
+import builtins
+import sys
+
+import numpy as np
+import pytest
+
+from conftest import load_reference
+
+from crspline import splines as compat
+
+PROBES = load_reference("splines_dropin_probes.json")
+
+
+# ------------------------------------------------------------------ probes
+def _run_probe(case):
+    """Runs the cells as the probe file's README says; returns {label: value or exception}."""
+    got = {}
+    counts = {}
+    namespace = {"np": np}
+    saved = sys.modules.get("splines")
+    sys.modules["splines"] = compat  # `import splines` in a cell gets crspline.splines
+    try:
+        for cell in case["cells"]:
+            cid = cell["id"]
+
+            def record(label, value, cid=cid):
+                k = counts.get(cid, 0)
+                counts[cid] = k + 1
+                got[f"{cid}.{k:02d}:{label}"] = value
+
+            namespace["record"] = record
+            try:
+                exec(compile(cell["src"], f"<{case['id']} {cid}>", "exec"), namespace)
+            except Exception as e:  # noqa: BLE001 - the probe records what was raised
+                got[f"{cid}:exception"] = e
+        for key, exp in case["expected"].items():
+            if not key.startswith("probe["):
+                continue
+            var, what = key[len("probe["):].split("]:", 1)
+            s = namespace[var]
+            if what == "grid":
+                got[key] = s.grid
+            elif what.startswith("evaluate(grid, "):
+                got[key] = s.evaluate(s.grid, int(what[len("evaluate(grid, "):-1]))
+            elif what.startswith("evaluate(t_inner, "):
+                got[key] = s.evaluate(exp["t"], int(what[len("evaluate(t_inner, "):-1]))
+            else:
+                raise AssertionError(f"unknown probe {key}")
+    finally:
+        if saved is None:
+            del sys.modules["splines"]
+        else:
+            sys.modules["splines"] = saved
+    return got
+
+
+def _check(key, exp, actual):
+    if exp["kind"] == "error":
+        assert isinstance(actual, BaseException), f"{key}: expected {exp['type']}, got {actual!r}"
+        cls = getattr(builtins, exp["type"])
+        assert isinstance(actual, cls), f"{key}: expected {exp['type']}, got {type(actual).__name__}: {actual}"
+        assert str(actual) == exp["msg"], f"{key}: message {str(actual)!r} != {exp['msg']!r}"
+        return
+    assert not isinstance(actual, BaseException), f"{key}: raised {type(actual).__name__}: {actual}"
+    if exp["kind"] == "value":
+        assert actual == exp["value"] and type(actual) is type(exp["value"]), \
+            f"{key}: {actual!r} != {exp['value']!r}"
+        return
+    a = np.asarray(actual)
+    assert a.dtype.kind in "fiu", f"{key}: dtype {a.dtype}"
+    assert list(a.shape) == exp["shape"], f"{key}: shape {a.shape} != {tuple(exp['shape'])}"
+    e = np.asarray(exp["data"], dtype=np.float64)
+    # The file's tolerance: max(1e-12 * max(1, max|expected|), 1e-9 * |expected|) per number.
+    tol = np.maximum(1e-12 * max(1.0, float(np.abs(e).max(initial=0))), 1e-9 * np.abs(e))
+    err = np.abs(a.astype(np.float64).ravel() - e)
+    assert np.all(err <= tol), f"{key}: worst error {err.max()} at {int(err.argmax())} (tolerance {tol[err.argmax()]})"
+
+
+def test_probe_file_has_every_case():
+    # 76 probes: the count guards against a truncated copy.
+    assert len(PROBES["cases"]) == 76
+    assert PROBES["splines_version"] == "0.3.3"
+
+
+@pytest.mark.parametrize("case", PROBES["cases"], ids=[c["id"] for c in PROBES["cases"]])
+def test_probe(case):
+    got = _run_probe(case)
+    unexpected = [k for k in got if k.endswith(":exception") and k not in case["expected"]]
+    assert not unexpected, f"unexpected exceptions: {[(k, got[k]) for k in unexpected]}"
+    for key, exp in case["expected"].items():
+        assert key in got, f"{key}: nothing recorded"
+        _check(key, exp, got[key])
+
+
+# ------------------------------------------------ an independent evaluator
+def hermite_eval(x, outgoing, incoming, grid, t, n=0):
+    """Cubic Hermite curve through the rows of x on grid, segment i with
+    dx/dt outgoing[i] at its start and incoming[i] at its end, written with
+    the four Hermite basis polynomials (and their derivatives) of u."""
+    x = np.asarray(x, float)
+    grid = np.asarray(grid, float)
+    out = []
+    for tt in np.atleast_1d(t):
+        i = len(grid) - 2 if tt == grid[-1] else int(np.searchsorted(grid, tt, side="right")) - 1
+        h = grid[i + 1] - grid[i]
+        u = (tt - grid[i]) / h
+        basis = [
+            [2 * u**3 - 3 * u**2 + 1, u**3 - 2 * u**2 + u, -2 * u**3 + 3 * u**2, u**3 - u**2],
+            [6 * u**2 - 6 * u, 3 * u**2 - 4 * u + 1, -6 * u**2 + 6 * u, 3 * u**2 - 2 * u],
+            [12 * u - 6, 6 * u - 4, -12 * u + 6, 6 * u - 2],
+        ][n]
+        p = basis[0] * x[i] + basis[1] * h * outgoing[i] + basis[2] * x[i + 1] + basis[3] * h * incoming[i]
+        out.append(p / h**n)
+    return np.array(out)
+
+
+def knots(x, alpha):
+    d = np.linalg.norm(np.diff(x, axis=0), axis=1)
+    return np.concatenate([[0.0], np.cumsum(d**alpha)])
+
+
+def sample_t(grid, per=7):
+    """Points inside every segment and the knots."""
+    grid = np.asarray(grid, float)
+    inner = [grid[i] + (grid[i + 1] - grid[i]) * k / per for i in range(len(grid) - 1) for k in range(per)]
+    return np.array(inner + [grid[-1]])
+
+
+def close(a, b, scale):
+    # The compared quantities are short sums of products of inputs of size
+    # `scale`; both sides round them differently: 1e-12 relative is ~4500 ulp.
+    np.testing.assert_allclose(a, b, rtol=0, atol=1e-12 * max(1.0, scale))
+
+
+# ------------------------------------------- subclass hooks of the splines docs
+POINTS = np.array([(-1, -0.5), (0, 2.3), (1, 1), (4, 1.3), (3.8, -0.2), (2.5, 0.1)])  # the splines docs' points1
+TIMES = [0, 1, 2.2, 3, 4, 4.5]  # non-uniform: the tangent variants differ
+
+
+def natural_ends(x, grid, in_first_interior, out_last_interior):
+    """splines' natural end condition: zero second derivative at each end,
+    (3 chord velocity - the tangent at the segment's other end) / 2."""
+    d0, d1 = grid[1] - grid[0], grid[-1] - grid[-2]
+    start = (3 * (x[1] - x[0]) / d0 - in_first_interior) / 2
+    end = (3 * (x[-1] - x[-2]) / d1 - out_last_interior) / 2
+    return start, end
+
+
+def open_curve_reference(x, grid, tangent_pairs):
+    """Hermite data of an open splines curve from (incoming, outgoing) at the
+    interior vertices and natural ends."""
+    n = len(x)
+    inc = np.array([p[0] for p in tangent_pairs])
+    out = np.array([p[1] for p in tangent_pairs])
+    start, end = natural_ends(x, grid, inc[0], out[-1])
+    seg_out = np.concatenate([[start], out])       # segment i starts at vertex i
+    seg_in = np.concatenate([inc, [end]])          # and ends at vertex i + 1
+    assert len(seg_out) == len(seg_in) == n - 1
+    return seg_out, seg_in
+
+
+def mean_velocity(points, times):
+    x_1, x0, x1 = np.asarray(points)
+    t_1, t0, t1 = times
+    return ((x0 - x_1) / (t0 - t_1) + (x1 - x0) / (t1 - t0)) / 2
+
+
+def wikipedia(points, times):
+    x_1, _, x1 = np.asarray(points)
+    t_1, _, t1 = times
+    return (x1 - x_1) / (t1 - t_1)
+
+
+def x3d_pair(points, times):
+    """X3D-style: the uniform tangent (x1 - x_1) / 2 scaled per side by
+    2 h_side / (h_before + h_after); incoming and outgoing differ."""
+    x_1, _, x1 = np.asarray(points)
+    t_1, t0, t1 = times
+    tangent = (x1 - x_1) / 2
+    return 2 * (t0 - t_1) / (t1 - t_1) * tangent, 2 * (t1 - t0) / (t1 - t_1) * tangent
+
+
+class MeanVelocity(compat.CatmullRom):
+    calls = 0
+
+    @staticmethod
+    def _calculate_tangent(points, times):
+        MeanVelocity.calls += 1
+        return mean_velocity(points, times)
+
+
+class Wikipedia(compat.CatmullRom):
+    @staticmethod
+    def _calculate_tangent(points, times):
+        return wikipedia(points, times)
+
+
+class X3D(compat.CatmullRom):
+    def _calculate_tangents(self, points, times):
+        return x3d_pair(points, times)
+
+
+@pytest.mark.parametrize("cls, formula", [
+    (MeanVelocity, lambda p, t: (mean_velocity(p, t),) * 2),
+    (Wikipedia, lambda p, t: (wikipedia(p, t),) * 2),
+    (X3D, x3d_pair),
+])
+def test_tangent_hooks_are_honoured(cls, formula):
+    s = cls(POINTS, grid=TIMES)
+    pairs = [formula(POINTS[i - 1:i + 2], TIMES[i - 1:i + 2]) for i in range(1, len(POINTS) - 1)]
+    seg_out, seg_in = open_curve_reference(POINTS, TIMES, pairs)
+    t = sample_t(TIMES)
+    for n in range(3):
+        close(s.evaluate(t, n), hermite_eval(POINTS, seg_out, seg_in, TIMES, t, n), 100)
+    # The hook matters here: the plain Catmull-Rom curve is far from it.
+    plain = compat.CatmullRom(POINTS, grid=TIMES)
+    assert np.abs(plain.evaluate(t) - s.evaluate(t)).max() > 1e-3
+
+
+def test_hook_is_called_once_per_interior_vertex():
+    MeanVelocity.calls = 0
+    MeanVelocity(POINTS, grid=TIMES)
+    assert MeanVelocity.calls == len(POINTS) - 2
+    MeanVelocity.calls = 0
+    MeanVelocity(POINTS, endconditions="closed", alpha=0.5)
+    assert MeanVelocity.calls == len(POINTS)
+
+
+def test_hook_on_a_closed_curve():
+    # Closed: every vertex is interior; the seam tangent uses the last and
+    # the second vertex (splines' convention); the grid from alpha.
+    s = Wikipedia(POINTS, endconditions="closed", alpha=0.5)
+    x = np.concatenate([POINTS, POINTS[:1]])
+    grid = knots(x, 0.5)
+    assert s.grid == pytest.approx(list(grid), rel=1e-15)
+    ext = np.concatenate([x, POINTS[1:2]])
+    gext = np.concatenate([grid, [grid[-1] + grid[1] - grid[0]]])
+    tang = np.array([wikipedia(ext[i - 1:i + 2], gext[i - 1:i + 2]) for i in range(1, len(ext) - 1)])
+    # tang[k] belongs to vertex k + 1 of x; vertex 0 (= vertex N) is the last.
+    at = np.concatenate([tang[-1:], tang])  # dx/dt at x[0], x[1], ..., x[N]
+    t = sample_t(grid)
+    for n in range(2):
+        close(s.evaluate(t, n), hermite_eval(x, at[:-1], at[1:], grid, t, n), 10)
+
+
+# ------------------------------------------- Kochanek-Bartels, closed, per vertex
+def kb_pair(points, times, tcb):
+    """The Kochanek-Bartels tangents on a non-uniform grid (splines docs)."""
+    x_1, x0, x1 = np.asarray(points)
+    t_1, t0, t1 = times
+    T, C, B = tcb
+    a, b = (1 - T) * (1 + C) * (1 + B), (1 - T) * (1 - C) * (1 - B)
+    c, d = (1 - T) * (1 - C) * (1 + B), (1 - T) * (1 + C) * (1 - B)
+    h0, h1 = t0 - t_1, t1 - t0
+    denominator = h0 * h1 * (h0 + h1)
+    incoming = (c * h1**2 * (x0 - x_1) + d * h0**2 * (x1 - x0)) / denominator
+    outgoing = (a * h1**2 * (x0 - x_1) + b * h0**2 * (x1 - x0)) / denominator
+    return incoming, outgoing
+
+
+@pytest.mark.parametrize("alpha", [None, 0.5, 1])
+def test_closed_kochanek_bartels_with_per_vertex_tcb(alpha):
+    rng = np.random.default_rng(20261124)
+    x = rng.normal(size=(6, 3))
+    tcb = rng.uniform(-0.8, 0.8, size=(6, 3))  # vertex 0 first
+    s = compat.KochanekBartels(x, tcb=tcb, alpha=alpha, endconditions="closed")
+    xc = np.concatenate([x, x[:1]])
+    grid = np.arange(7.0) if alpha is None else knots(xc, alpha)
+    assert np.asarray(s.grid) == pytest.approx(grid, rel=1e-15)
+    # Tangents at vertex k with its own TCB, neighbours wrapping around.
+    h = np.diff(grid)
+    pairs = []
+    for k in range(6):
+        hb, ha = h[k - 1], h[k]  # interval before (wrapping) and after vertex k
+        pairs.append(kb_pair((x[k - 1], x[k], x[(k + 1) % 6]), (-hb, 0.0, ha), tcb[k]))
+    inc = np.array([p[0] for p in pairs])
+    out = np.array([p[1] for p in pairs])
+    seg_out = out                                   # segment k leaves vertex k
+    seg_in = np.concatenate([inc[1:], inc[:1]])     # and arrives at vertex k + 1
+    t = sample_t(grid)
+    for n in range(3):
+        close(s.evaluate(t, n), hermite_eval(xc, seg_out, seg_in, grid, t, n), 1000)
+    # Continuity != 0 breaks C1: just left of knot 2 the incoming tangent.
+    left = s.evaluate(np.nextafter(grid[2], -np.inf), 1)
+    close(left, inc[2], 1000)
+    close(s.evaluate(grid[2], 1), out[2], 1000)
+
+
+# --------------------------------------------------- more than 4 dimensions
+@pytest.mark.parametrize("dim", [5, 6, 9])
+def test_more_than_four_dimensions_with_alpha(dim):
+    # The knots come from the full-dimensional chord lengths: a per-group
+    # curve with its own alpha knots would be wrong; crspline.splines
+    # computes the knots once and splits only the Hermite data.
+    rng = np.random.default_rng(dim)
+    x = rng.normal(size=(7, dim))
+    s = compat.CatmullRom(x, alpha=0.5)
+    grid = knots(x, 0.5)
+    assert np.asarray(s.grid) == pytest.approx(grid, rel=1e-15)
+    pairs = []
+    for i in range(1, 6):
+        h0, h1 = grid[i] - grid[i - 1], grid[i + 1] - grid[i]
+        v = (h1**2 * (x[i] - x[i - 1]) + h0**2 * (x[i + 1] - x[i])) / (h0 * h1 * (h0 + h1))
+        pairs.append((v, v))
+    seg_out, seg_in = open_curve_reference(x, grid, pairs)
+    t = sample_t(grid)
+    for n in range(4 if dim < 9 else 2):
+        if n == 3:
+            continue
+        close(s.evaluate(t, n), hermite_eval(x, seg_out, seg_in, grid, t, n), 100)
+    assert s.evaluate(t).shape == (len(t), dim)
+    assert len(s.segments) == 6 and s.segments[0].shape == (4, dim)
+
+
+# --------------------------------------------------------- CubicHermite
+def test_cubic_hermite_reproduces_a_cubic():
+    # Points and exact derivatives of one cubic polynomial: the curve is that
+    # polynomial (closed form), on any grid.
+    a, b, c, d = np.array([1.0, -2]), np.array([0.5, 3]), np.array([-1.0, 0.25]), np.array([0.3, -0.7])
+
+    def f(t):
+        return a + b * t + c * t**2 + d * t**3
+
+    def df(t):
+        return b + 2 * c * t + 3 * d * t**2
+
+    grid = [0.0, 0.4, 1.5, 2.0, 3.25]
+    x = [f(t) for t in grid]
+    tangents = [v for t0, t1 in zip(grid, grid[1:]) for v in (df(t0), df(t1))]
+    s = compat.CubicHermite(x, tangents, grid)
+    t = sample_t(grid)
+    close(s.evaluate(t), np.array([f(tt) for tt in t]), 100)
+    close(s.evaluate(t, 1), np.array([df(tt) for tt in t]), 100)
+    # splines' layout: two tangents per segment, else ValueError.
+    with pytest.raises(ValueError, match="Exactly 2 tangents per segment are needed"):
+        compat.CubicHermite(x, tangents[:-1], grid)
+    with pytest.raises(ValueError, match="As many grid times as vertices are needed"):
+        compat.CubicHermite(x, tangents, grid[:-1])
+
+
+def test_cubic_hermite_default_grid_and_segments():
+    # Uniform grid 0, 1, ...; one segment from (0, 0) to (1, 0) with
+    # tangents (0, 1) and (0, -1): y(u) = u - 2u^2 + u^3 + ... the Hermite
+    # basis: y = (u^3 - 2u^2 + u) * 1 + (u^3 - u^2) * (-1) = u - u^2.
+    s = compat.CubicHermite([(0, 0), (1, 0)], [(0, 1), (0, -1)])
+    assert s.grid == [0, 1]
+    close(s.evaluate(0.5), [0.5, 0.25], 1)
+    # Monomial coefficients, highest first: x = -2u^3 + 3u^2, y = -u^2 + u.
+    close(s.segments[0], [[-2, 0], [3, -1], [0, 1], [0, 0]], 1)
+
+
+def test_compat_is_float64_and_rejects_bad_grids_clearly():
+    s = compat.CatmullRom(np.array([[0, 0], [1, 2], [3, 1]], dtype=np.float32))
+    assert s.evaluate([0.5]).dtype == np.float64
+    with pytest.raises(ValueError, match=r"grid must be strictly increasing: grid\[2\] = 1"):
+        compat.CatmullRom([(0, 0), (1, 2), (3, 1)], grid=[0, 1, 1])
+
+
+def test_crspline_closed_curve_through_two_points():
+    # crspline's own class accepts it too (the core does); the value is what
+    # splines returned for the same curve (probe small/2-vertices-closed).
+    import crspline
+    case = next(c for c in PROBES["cases"] if c["id"] == "probe/small/2-vertices-closed")
+    exp = case["expected"]["probe[s]:evaluate(t_inner, 0)"]
+    c = crspline.CatmullRom([(0, 0), (1, 1)], alpha=None, endconditions="closed")
+    assert c.segment_count == 2
+    got = c.evaluate(exp["t"])
+    np.testing.assert_allclose(got.ravel(), exp["data"], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(c.evaluate(1.5), [0.5, 0.5], rtol=0, atol=1e-15)
