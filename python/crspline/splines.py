@@ -39,7 +39,7 @@ import numpy as _np
 
 from . import _crspline
 
-__all__ = ["CubicHermite", "CatmullRom", "KochanekBartels"]
+__all__ = ["CubicHermite", "CatmullRom", "KochanekBartels", "UnitSpeedAdapter"]
 
 _GROUP = int(_crspline.max_dimension)  # coordinates per core curve
 
@@ -371,3 +371,78 @@ class KochanekBartels(CubicHermite):
             return KochanekBartels._calculate_tangents(points, times, (per[:, 0:1], per[:, 1:2], per[:, 2:3]))
 
         self._init_from_hook(a, scalar, grid, closed, start, end, hook, vectorized)
+
+
+# Gauss-Legendre nodes and weights on [0, 1] for the arc length of curves the
+# core cannot measure itself (more than 4 coordinates, or foreign curves).
+_GL_X, _GL_W = _np.polynomial.legendre.leggauss(10)
+_GL_X, _GL_W = (_GL_X + 1) / 2, _GL_W / 2
+_GL_PIECES = 64  # per segment: the speed of a cubic is smooth away from cusps
+
+
+class UnitSpeedAdapter:
+    """Arc-length (unit-speed) re-parameterization of a curve, as
+    ``splines.UnitSpeedAdapter(curve)``: ``.grid`` holds the arc length at the
+    curve's knots, ``evaluate(s)`` the point at arc length s.
+
+    For crspline curves of up to 4 coordinates the core measures the length
+    (to 1e-12 relative) and inverts it; otherwise (more coordinates, or any
+    object with ``grid`` and a vectorized ``evaluate(t, 1)``) a composite
+    10-point Gauss-Legendre rule on 64 pieces per segment and Newton steps
+    safeguarded by bisection."""
+
+    def __init__(self, curve):
+        self.curve = curve
+        curves = getattr(curve, "_curves", None)
+        self._table = None
+        if isinstance(curve, CubicHermite) and len(curves) == 1:
+            self._table = curves[0].arc_length_table(1e-12)
+            self.grid = [float(s) for s in self._table.knot_lengths]
+            return
+        g = _np.asarray(curve.grid, dtype=_np.float64)
+        # Cumulative length at 64 pieces per segment (t_pieces, s_pieces).
+        t = _np.concatenate([_np.linspace(g[i], g[i + 1], _GL_PIECES + 1)[:-1] for i in range(len(g) - 1)] + [g[-1:]])
+        self._t = t
+        h = _np.diff(t)
+        nodes = t[:-1, None] + h[:, None] * _GL_X[None, :]
+        # Keep each node inside its own segment (a knot belongs to the right).
+        speed = _np.linalg.norm(_np.asarray(curve.evaluate(nodes.ravel(), 1)).reshape(nodes.size, -1), axis=1)
+        pieces = (speed.reshape(nodes.shape) * _GL_W[None, :]).sum(axis=1) * h
+        self._s = _np.concatenate([[0.0], _np.cumsum(pieces)])
+        self.grid = [float(x) for x in self._s[::_GL_PIECES]]
+
+    def _length_in_piece(self, k, t):
+        t0 = self._t[k]
+        nodes = t0 + (t - t0) * _GL_X
+        speed = _np.linalg.norm(_np.asarray(self.curve.evaluate(nodes, 1)).reshape(len(nodes), -1), axis=1)
+        return self._s[k] + (t - t0) * float(speed @ _GL_W)
+
+    def _s2t(self, s):
+        if self._table is not None:
+            return float(self._table.t_at(_np.asarray([s], dtype=_np.float64))[0])
+        k = min(int(_np.searchsorted(self._s, s, side="right")) - 1, len(self._t) - 2)
+        lo, hi = self._t[k], self._t[k + 1]
+        t = lo + (hi - lo) * (s - self._s[k]) / max(self._s[k + 1] - self._s[k], 1e-300)
+        for _ in range(50):  # Newton, kept in [lo, hi] by bisection
+            f = self._length_in_piece(k, t) - s
+            if f > 0:
+                hi = t
+            else:
+                lo = t
+            speed = float(_np.linalg.norm(self.curve.evaluate(t, 1)))
+            step = t - f / speed if speed > 0 else (lo + hi) / 2
+            t_next = step if lo < step < hi else (lo + hi) / 2
+            if abs(t_next - t) <= 1e-15 * max(1.0, abs(t)):
+                return t_next
+            t = t_next
+        return t
+
+    def evaluate(self, s):
+        """The point at arc length s (a number, or any sequence or array)."""
+        if not _np.isscalar(s):
+            return _np.array([self.evaluate(x) for x in s])
+        if s < self.grid[0]:
+            raise ValueError(f"s too small: {s}")
+        if not (s < self.grid[-1] or s == self.grid[-1]):
+            raise ValueError(f"s too big: {s}")
+        return self.curve.evaluate(self._s2t(s))

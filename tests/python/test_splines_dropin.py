@@ -378,3 +378,41 @@ def test_crspline_closed_curve_through_two_points():
     got = c.evaluate(exp["t"])
     np.testing.assert_allclose(got.ravel(), exp["data"], rtol=0, atol=1e-12)
     np.testing.assert_allclose(c.evaluate(1.5), [0.5, 0.5], rtol=0, atol=1e-15)
+
+
+# ------------------------------------------------------- UnitSpeedAdapter
+@pytest.mark.parametrize("dim", [2, 6])
+def test_unit_speed_adapter_on_a_straight_line(dim):
+    # x(t) = P1 (3t^2 - 2t^3) with |P1| = 5: monotone along the line, so the
+    # arc length is 5 (3t^2 - 2t^3) and the point at arc length s is P1 s / 5.
+    # dim 2 goes through the core's arc length, dim 6 through the adapter's
+    # own quadrature. Tolerance: the arc-length accuracy 1e-12 relative to
+    # the length 5, and the inversion near the zero-speed start (s ~ t^2).
+    p1 = np.zeros(dim)
+    p1[:2] = 3, 4
+    c = compat.CubicHermite([np.zeros(dim), p1], [np.zeros(dim), np.zeros(dim)])
+    u = compat.UnitSpeedAdapter(c)
+    assert u.grid == pytest.approx([0, 5], abs=1e-12)
+    s = np.array([0, 0.01, 1, 2.5, 4.2, 5])
+    np.testing.assert_allclose(u.evaluate(s), s[:, None] * p1 / 5, rtol=0, atol=1e-10)
+    with pytest.raises(ValueError, match="s too big: 5.5"):
+        u.evaluate(5.5)
+
+
+def test_unit_speed_adapter_has_unit_speed_on_the_docs_curve():
+    # The splines docs' re-parameterization example: a closed centripetal
+    # curve. Speed 1 everywhere (central differences, error ~ h^2 |x'''| ),
+    # and the two independent arc-length computations (the core's, for 2-D,
+    # and the adapter's Gauss-Legendre rule, on the same curve lifted to 5-D)
+    # agree.
+    points4 = [(0, 0), (0, 0.5), (1.5, 1.5), (1.6, 1.5), (3, 0.2), (3, 0)]
+    s1 = compat.CatmullRom(points4, alpha=0.5, endconditions="closed")
+    s2 = compat.UnitSpeedAdapter(s1)
+    h = 1e-4
+    s = np.linspace(h, s2.grid[-1] - h, 97)
+    speed = np.linalg.norm((s2.evaluate(s + h) - s2.evaluate(s - h)) / (2 * h), axis=1)
+    np.testing.assert_allclose(speed, 1, atol=1e-5)
+    lifted = compat.CatmullRom([p + (0, 0, 0) for p in points4], alpha=0.5, endconditions="closed")
+    s5 = compat.UnitSpeedAdapter(lifted)
+    np.testing.assert_allclose(s5.grid, s2.grid, rtol=1e-11)
+    np.testing.assert_allclose(s5.evaluate(s)[:, :2], s2.evaluate(s), atol=1e-9)
