@@ -172,7 +172,7 @@ test('d3-shape: Bézier segments of curveCatmullRom, -Closed, -Open to 1e-12 of 
 test('errors: a C++ exception arrives as a JavaScript Error with the core message', () => {
   const cases = [
     [() => new M.Spline([[0, 0]], 2, {}), /a curve needs at least 2 points, got 1/],
-    [() => new M.Spline([[0, 0], [1, 1]], 2, { closed: true }), /a closed curve needs at least 3 points, got 2/],
+    [() => new M.Spline([[0, 0]], 2, { closed: true }), /a closed curve needs at least 2 points, got 1/],
     [() => new M.Spline([[0, 0], [1, 1]], 2, { alpha: 1.5 }), /alpha must be in \[0, 1\], got 1.5/],
     [() => new M.Spline([[0, 0], [1, NaN]], 2, {}), /point 1, coordinate 1 is not finite \(nan\)/],
     [() => new M.Spline([[0, 0], [1, 1]], 2, { tension: -1 }), /tension must be in \[0, 1\], got -1/],
