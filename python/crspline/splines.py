@@ -39,7 +39,7 @@ import numpy as _np
 
 from . import _crspline
 
-__all__ = ["CubicHermite", "CatmullRom", "KochanekBartels", "UnitSpeedAdapter"]
+__all__ = ["CubicHermite", "CatmullRom", "FiniteDifference", "KochanekBartels", "UnitSpeedAdapter"]
 
 _GROUP = int(_crspline.max_dimension)  # coordinates per core curve
 
@@ -323,6 +323,19 @@ class CatmullRom(CubicHermite):
             hook = lambda points, times, k: self._calculate_tangents(points, times)  # noqa: E731
         self._init_from_hook(a, scalar, grid, closed, start, end, hook,
                              lambda p, t: CatmullRom._calculate_tangents(self, p, t))
+
+class FiniteDifference(CatmullRom):
+    """Finite-difference spline, as ``splines.FiniteDifference``: the
+    ``CatmullRom`` signature, with the tangent at a vertex the mean of the
+    chord velocities on its two sides (the Catmull-Rom tangent only on a
+    uniform grid)."""
+
+    @staticmethod
+    def _calculate_tangent(points, times):
+        x_1, x0, x1 = points
+        t_1, t0, t1 = times
+        return ((x0 - x_1) / (t0 - t_1) + (x1 - x0) / (t1 - t0)) / 2
+
 
 class KochanekBartels(CubicHermite):
     """Kochanek-Bartels spline with the ``splines`` signature:

@@ -213,6 +213,7 @@ class X3D(compat.CatmullRom):
 
 @pytest.mark.parametrize("cls, formula", [
     (MeanVelocity, lambda p, t: (mean_velocity(p, t),) * 2),
+    (compat.FiniteDifference, lambda p, t: (mean_velocity(p, t),) * 2),
     (Wikipedia, lambda p, t: (wikipedia(p, t),) * 2),
     (X3D, x3d_pair),
 ])
