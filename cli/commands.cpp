@@ -28,7 +28,10 @@ namespace {
     "  \"kb\": {\"tension\": [...], \"continuity\": [...], \"bias\": [...]}\n"                      \
     "                                 Kochanek-Bartels, one value per point (null allowed at\n"    \
     "                                 the two ends of an open curve); a missing array = zeros\n"   \
-    "  \"strict\": false                reject coincident consecutive points\n"
+    "  \"strict\": false                reject coincident consecutive points\n"                     \
+    "  \"tangents\": [[dx/dt, ...], ...] given tangents, one per point (or {\"in\": [...],\n"      \
+    "                                 \"out\": [...]} when they differ): a cubic Hermite curve;\n"  \
+    "                                 not with \"tension\", \"kb\", \"strict\" or end conditions\n"
 
 #define CRSPLINE_CLI_CSV_AND_ERRORS                                                                 \
     "Points from CSV: one point per line, 1 to 4 numbers; blank lines and '#' lines skipped; a\n"   \

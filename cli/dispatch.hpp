@@ -76,6 +76,16 @@ catmull_rom<D, double> make_curve(const curve_spec& c) {
     pts.resize(c.point_count());
     for (std::size_t i = 0; i < pts.size(); ++i)
         for (std::size_t k = 0; k < D; ++k) pts[i][k] = c.coords[i * D + k];
+    if (!c.tangents_out.empty()) {
+        // Given tangents: the Hermite curve on the given grid or alpha's knots.
+        std::vector<vec<D, double>> out(pts.size()), in(pts.size());
+        const std::vector<double>& given_in = c.tangents_in.empty() ? c.tangents_out : c.tangents_in;
+        for (std::size_t i = 0; i < pts.size(); ++i)
+            for (std::size_t k = 0; k < D; ++k) out[i][k] = c.tangents_out[i * D + k], in[i][k] = given_in[i * D + k];
+        const std::span<const vec<D, double>> p(pts);
+        const std::vector<double> grid = c.grid ? *c.grid : knots(p, c.alpha.value_or(centripetal), c.closed);
+        return catmull_rom<D, double>::hermite(p, out, in, grid, c.closed);
+    }
     return catmull_rom<D, double>(std::span<const vec<D, double>>(pts), to_options<D>(c));
 }
 

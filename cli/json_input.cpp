@@ -376,6 +376,47 @@ std::vector<double> parse_kb_values(const json& v, const std::string& path, std:
 
 // --- the contract ------------------------------------------------------------------
 
+namespace {
+
+// One list of per-point tangents: n rows of `dim` finite numbers, flat.
+std::vector<double> tangent_rows(const json& v, const std::string& path, std::size_t n, std::size_t dim) {
+    const json& rows = array(v, path, "tangents [dx/dt, ...], one per point");
+    if (rows.size() != n)
+        fail(path, "expected " + std::to_string(n) + " tangents (one per point), got " + std::to_string(rows.size()));
+    std::vector<double> flat;
+    flat.reserve(n * dim);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::string at = index(path, i);
+        const json& r = array(rows[i], at, "coordinates");
+        if (r.size() != dim)
+            fail(at, "expected " + std::to_string(dim) + " coordinates like points[0], got " + std::to_string(r.size()));
+        for (std::size_t k = 0; k < dim; ++k) flat.push_back(finite_number(r[k], index(at, k)));
+    }
+    return flat;
+}
+
+// "tangents" of the curve description; the curve then has no computed
+// tangents, so what computes them (end conditions, tension, kb, strict) is
+// rejected rather than silently ignored.
+void parse_tangents(const json& root, curve_spec& c) {
+    for (const char* key : {"tension", "kb", "strict"})
+        if (root.contains(key)) fail("tangents", std::string("given tangents take no '") + key + "'");
+    if (root.contains("end") && !c.closed)
+        fail("tangents", "given tangents take no end conditions (only \"end\": \"closed\")");
+    const std::size_t n = c.point_count();
+    const json& t = root["tangents"];
+    if (t.is_object()) {
+        if (!t.contains("in") || !t.contains("out") || t.size() != 2)
+            fail("tangents", "expected {\"in\": [...], \"out\": [...]} or a list of tangents, got " + describe(t));
+        c.tangents_in = tangent_rows(t["in"], "tangents.in", n, c.dimension);
+        c.tangents_out = tangent_rows(t["out"], "tangents.out", n, c.dimension);
+    } else {
+        c.tangents_out = tangent_rows(t, "tangents", n, c.dimension);
+    }
+}
+
+}  // namespace
+
 curve_spec parse_curve(const document& doc, std::string_view command, std::initializer_list<std::string_view> extra) {
     const json& root = doc.root;
     if (!root.is_object()) throw input_error("expected a JSON object {\"points\": ...}, got " + describe(root));
@@ -479,6 +520,10 @@ curve_spec parse_curve(const document& doc, std::string_view command, std::initi
         if (!s.is_boolean()) fail("strict", "expected true or false, got " + describe(s));
         c.strict = s.get<bool>();
     }
+
+    // tangents: [[dx/dt, ...] per point], or {"in": [...], "out": [...]} when
+    // incoming and outgoing differ: a cubic Hermite curve with them.
+    if (root.contains("tangents")) parse_tangents(root, c);
     return c;
 }
 

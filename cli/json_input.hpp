@@ -82,6 +82,10 @@ struct curve_spec {
     double tension = 0;
     std::vector<double> kb_tension, kb_continuity, kb_bias;  ///< empty = zeros
     bool strict = false;
+    /// Given tangents dx/dt per point (flat, like coords): the curve is the
+    /// cubic Hermite curve through the points with them (catmull_rom::hermite).
+    /// Empty: tangents computed. tangents_in empty: incoming = outgoing.
+    std::vector<double> tangents_out, tangents_in;
 };
 
 /// `crspline eval`: the curve, the parameters (t, or arc lengths s) and the
@@ -117,7 +121,8 @@ struct bezier_spec {
 };
 
 /// The fields every subcommand reads to describe a curve.
-inline constexpr std::string_view curve_fields[] = {"points", "alpha", "grid", "end", "tension", "kb", "strict"};
+inline constexpr std::string_view curve_fields[] = {"points", "alpha", "grid", "end", "tension", "kb", "strict",
+                                                    "tangents"};
 
 /// Validates the curve part of a document. `extra_fields` are the other
 /// top-level keys the subcommand reads itself; any key in neither list is an
