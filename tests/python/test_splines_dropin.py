@@ -366,6 +366,10 @@ def test_compat_is_float64_and_rejects_bad_grids_clearly():
     assert s.evaluate([0.5]).dtype == np.float64
     with pytest.raises(ValueError, match=r"grid must be strictly increasing: grid\[2\] = 1"):
         compat.CatmullRom([(0, 0), (1, 2), (3, 1)], grid=[0, 1, 1])
+    with pytest.raises(ValueError, match=r"^vertex 1, coordinate 1 is not finite \(nan\)$"):
+        compat.CatmullRom([(0, 0), (1, np.nan), (3, 1)])
+    with pytest.raises(ValueError, match=r"n must be a derivative order >= 0, got -1"):
+        s.evaluate(0.5, -1)
 
 
 def test_crspline_closed_curve_through_two_points():
