@@ -291,10 +291,31 @@ struct curve_of {
     }
 };
 
+// Given tangents (options.tangents: dx/dt per point, nested or flat;
+// options.tangentsIn where the incoming ones differ): the cubic Hermite curve
+// through the points on the grid or alpha's knots (catmull_rom::hermite).
+// What would compute tangents (tension, kb, strict, end conditions) is
+// rejected rather than ignored.
+template <std::size_t D>
+curve_of<D> make_hermite_curve(const std::vector<double>& flat, const val& o, const cr::options<D>& opt,
+                               double alpha) {
+    for (const char* key : {"tension", "kb", "strict", "start", "end"})
+        if (!is_nullish(o[key])) throw cr::invalid_input(std::string("given tangents take no '") + key + "'");
+    if (opt.alpha && opt.grid) throw cr::invalid_input("give alpha or grid, not both");
+    const std::vector<cr::vec<D>> p = to_points<D>(flat, "points");
+    const std::vector<cr::vec<D>> out = to_points<D>(numbers(o["tangents"], "tangents"), "tangents");
+    const std::vector<cr::vec<D>> in =
+        is_nullish(o["tangentsIn"]) ? out : to_points<D>(numbers(o["tangentsIn"], "tangentsIn"), "tangentsIn");
+    const std::span<const cr::vec<D>> ps(p);
+    const std::vector<double> grid = opt.grid ? *opt.grid : cr::knots(ps, opt.alpha.value_or(cr::centripetal), opt.closed);
+    return curve_of<D>{cr::catmull_rom<D>::hermite(ps, out, in, grid, opt.closed), std::nullopt, alpha};
+}
+
 template <std::size_t D>
 curve_of<D> make_curve(const std::vector<double>& flat, const val& o) {
     const cr::options<D> opt = options_from<D>(o);
     const double alpha = opt.grid ? std::nan("") : opt.alpha.value_or(cr::centripetal);
+    if (!is_nullish(o) && !is_nullish(o["tangents"])) return make_hermite_curve<D>(flat, o, opt, alpha);
     return curve_of<D>{cr::catmull_rom<D>(to_points<D>(flat, "points"), opt), std::nullopt, alpha};
 }
 

@@ -311,3 +311,32 @@ test('io: JSON and CSV round trips are exact; SVG path has one cubic per segment
     assert.equal((svg.match(/<circle/g) ?? []).length, 3);
   });
 });
+
+test('given tangents: a cubic Hermite curve (closed forms)', () => {
+  // Points and exact derivatives of one cubic on an uneven grid: the curve is
+  // that cubic (1e-12 of the values' size: a few roundings on each side).
+  const f = (t) => [1 + 0.5 * t - t * t + 0.3 * t ** 3, -2 + 3 * t + 0.25 * t * t - 0.7 * t ** 3];
+  const df = (t) => [0.5 - 2 * t + 0.9 * t * t, 3 + 0.5 * t - 2.1 * t * t];
+  const grid = [0, 0.4, 1.5, 2, 3.25];
+  withSpline(grid.map(f), 2, { grid, tangents: grid.map(df) }, (s) => {
+    let checked = 0;
+    for (let k = 0; k <= 20; ++k) {
+      const t = 3.25 * k / 20;
+      assert.ok(maxAbs(Array.from(s.evaluate(t)), f(t)) <= 1e-12 * 10, `t ${t}`);
+      assert.ok(maxAbs(Array.from(s.evaluate(t, 1)), df(t)) <= 1e-12 * 10, `t ${t}`);
+      ++checked;
+    }
+    assert.equal(checked, 21);
+  });
+  // Incoming (1, 1) and outgoing (1, -1) at vertex 1: y(1/2) = -1/8 on
+  // segment 0 (m0 = (1, 0), m1 = (1, 1)); at the knot, the outgoing one.
+  const opts = { grid: [0, 1, 2], tangents: [[1, 0], [1, -1], [0, 0]], tangentsIn: [[0, 0], [1, 1], [1, 0]] };
+  withSpline([[0, 0], [1, 0], [2, 0]], 2, opts, (s) => {
+    assert.deepEqual(Array.from(s.evaluate(0.5)), [0.5, -0.125]);
+    assert.deepEqual(Array.from(s.evaluate(1, 1)), [1, -1]);
+  });
+  assert.throws(() => new M.Spline([[0, 0], [1, 0]], 2, { tangents: [[1, 0]] }),
+    /outgoing tangents: got 1, expected one per point \(2\)/);
+  assert.throws(() => new M.Spline([[0, 0], [1, 0]], 2, { tangents: [[1, 0], [1, 0]], tension: 0.5 }),
+    /given tangents take no 'tension'/);
+});
