@@ -166,6 +166,9 @@ public:
     const options_type& options() const noexcept { return options_; }
     /// The knots came from an explicit grid, not from alpha.
     bool explicit_grid() const noexcept { return !options_.alpha.has_value(); }
+    /// The tangents were given (hermite()), not computed from the neighbours:
+    /// no Catmull-Rom formula (the paper's bounds, the angle rule) applies.
+    bool given_tangents() const noexcept { return given_tangents_; }
 
     std::size_t segment_count() const noexcept { return inv_h_.size(); }
     T t_min() const noexcept { return grid_.front(); }
@@ -360,6 +363,7 @@ private:
     detail::storage<point> in_;       // incoming dx/dt at each vertex, only when continuity can make it differ
     bool closed_ = false;
     options_type options_;            // how it was built (alpha resolved, grid not copied): see options()
+    bool given_tangents_ = false;     // built by hermite(): options_ holds only the defaults
 
     std::size_t next(std::size_t i) const noexcept { return i + 1 == points_.size() ? 0 : i + 1; }
     const point& out_tangent(std::size_t i) const noexcept { return tangent_[i]; }
@@ -708,6 +712,8 @@ void catmull_rom<D, T>::build_hermite(std::span<const point> p, std::span<const 
                                       std::span<const point> incoming, std::span<const T> grid, bool closed) {
     const std::size_t n = p.size();
     closed_ = closed;
+    given_tangents_ = true;
+    options_.closed = closed;
     // 1. Validate at the boundary: enough points, finite values, a tangent
     //    per vertex, an increasing grid of the right length.
     if (n < 2)

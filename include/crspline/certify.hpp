@@ -402,7 +402,7 @@ certificate<D, T> certify_intersection_free(const catmull_rom<D, T>& c, const ce
     const auto& built = c.options();
     const std::size_t n = c.segment_count(), np = pts.size();
     const bool closed = c.closed();
-    const bool plain = built.tension == T(0) && built.kb.empty();
+    const bool plain = !c.given_tangents() && built.tension == T(0) && built.kb.empty();
     auto fail = [&](certify_rule r, std::string why) {
         cert.certified = false;
         cert.failed_rule = r;
@@ -424,6 +424,9 @@ certificate<D, T> certify_intersection_free(const catmull_rom<D, T>& c, const ce
         }
 
     // Rule 1: centripetal knots, as built; no segment cusps, loops or folds.
+    if (c.given_tangents())
+        return fail(certify_rule::not_centripetal,
+                    "the tangents were given (a Hermite curve), not the centripetal Catmull-Rom ones");
     if (!built.alpha)
         return fail(certify_rule::not_centripetal, "the knots were given as an explicit grid, not from alpha = 0.5");
     if (*built.alpha != centripetal)

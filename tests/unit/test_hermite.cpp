@@ -197,3 +197,25 @@ TEST(ClosedTwoPoints, OnePointIsStillAnError) {
 }
 
 }  // namespace
+
+TEST(Hermite, GivenTangentsAreNeverTakenForCatmullRom) {
+    // The Catmull-Rom tangents of this centripetal polygon, given back
+    // through hermite(), draw the same curve; but the analysis must not read
+    // the curve as Catmull-Rom (it cannot know where given tangents came
+    // from): rule 1 fails naming the given tangents, and no segment gets the
+    // paper's bounds, which hold only for tangents computed by Eq. 2.
+    const std::vector<P2> pts{{0, 0}, {1, 0}, {2, 1}, {3, 3}, {5, 3}};
+    const catmull_rom<2> cr(pts);
+    std::vector<P2> tan(pts.size());
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) tan[i] = cr.tangents(i)[0];
+    tan.back() = cr.tangents(pts.size() - 2)[1];
+    const auto h = catmull_rom<2>::hermite(pts, tan, cr.grid());
+    EXPECT_TRUE(h.given_tangents());
+    EXPECT_FALSE(cr.given_tangents());
+    const auto cert = certify_intersection_free(h);
+    EXPECT_FALSE(cert.certified);
+    EXPECT_EQ(cert.failed_rule, certify_rule::not_centripetal);
+    EXPECT_NE(cert.detail.find("tangents were given"), std::string::npos) << cert.detail;
+    EXPECT_TRUE(certify_intersection_free(cr).certified);
+    for (const auto& a : analyze(h)) EXPECT_FALSE(a.bounds.has_value());
+}
