@@ -15,6 +15,7 @@
 #include "analysis.hpp"
 #include "catmull_rom.hpp"
 #include "detail/analysis_common.hpp"
+#include "detail/box_tree.hpp"
 #include "intersections.hpp"
 #include "vec.hpp"
 
@@ -362,6 +363,41 @@ bool adjacent_pair_apart(const std::array<vec<D, T>, 4>& a, const std::array<vec
     return true;
 }
 
+// An axis-aligned box around everything boxes_overlap can count as part of
+// e, grown by twice (margin + slack): when two such boxes do not meet,
+// boxes_overlap finds the pair separated. Why: e lies within the chord
+// [ends] grown by half_width (a 2-D zero-length chord is a square of half
+// diagonal sqrt(2) half_width, hence 2 half_width there), so disjoint boxes
+// put the volumes more than 2 (margin + slack) apart per box; the
+// separating-axis test sees at least 1/sqrt(2) of that distance on an edge
+// normal of a rectangle (the distance is realized between a vertex and
+// either an edge or a vertex, whose normal cone is at most 90 degrees
+// wide), the capsule test sees all of it, and both compute their
+// quantities within a few ulps of the coordinates and widths, far below
+// slack = 64 eps (|ends| + half_width). Non-finite geometry gets the
+// infinite box, as boxes_overlap counts it as overlapping.
+template <std::size_t D, class T>
+box<D, T> overlap_candidate_box(const edge_box<D, T>& e, T margin) {
+    const vec<D, T> d = e.b - e.a;
+    const vec<D, T> p0 = e.a + e.lambda_min * d, p1 = e.a + e.lambda_max * d;  // as boxes_overlap's ends()
+    const T w = norm(p1 - p0) > 0 ? e.half_width : T(2) * e.half_width;
+    const T slack = T(64) * std::numeric_limits<T>::epsilon() * (max_abs(p0) + max_abs(p1) + e.half_width);
+    const T grow = w + T(2) * (margin + slack);
+    box<D, T> r;
+    for (std::size_t k = 0; k < D; ++k) {
+        r.lo[k] = std::min(p0[k], p1[k]) - grow;
+        r.hi[k] = std::max(p0[k], p1[k]) + grow;
+    }
+    if (!std::isfinite(grow) || !std::isfinite(max_abs(r.lo)) || !std::isfinite(max_abs(r.hi))) {
+        const T inf = std::numeric_limits<T>::infinity();
+        for (std::size_t k = 0; k < D; ++k) { r.lo[k] = -inf; r.hi[k] = inf; }
+    }
+    return r;
+}
+
+template <std::size_t D, class T, class Pairs>
+certificate<D, T> certify_among(const catmull_rom<D, T>& c, const certify_options& opt, const Pairs& candidate_pairs);
+
 }  // namespace detail
 
 /// Section 5's rules, made sound for every curve catmull_rom builds:
@@ -393,9 +429,23 @@ bool adjacent_pair_apart(const std::array<vec<D, T>, 4>& a, const std::array<vec
 /// to the curve's own points, so the answer does not change when the curve
 /// is moved. When certification fails, the first failing rule is reported
 /// with where it failed, and (options.search_on_failure) the search says
-/// whether the curve actually intersects itself.
+/// whether the curve actually intersects itself. Rule 3 checks only the
+/// pairs whose axis-aligned boxes meet, found through a bounding-volume
+/// hierarchy (O(n log n) for a curve that passes), and reports the failing
+/// pair (i, j) with the smallest i, then j.
 template <std::size_t D, class T>
 certificate<D, T> certify_intersection_free(const catmull_rom<D, T>& c, const certify_options& opt = {}) {
+    return detail::certify_among(c, opt, detail::tree_pairs{});
+}
+
+namespace detail {
+
+// The certificate, given how to find rule 3's candidate pairs (a seam for
+// the tests: the tree, or every pair i < j as a reference).
+// candidate_pairs(boxes, 0) returns pair_rows that include every pair
+// i < j whose boxes meet; each is checked in the order i, then j.
+template <std::size_t D, class T, class Pairs>
+certificate<D, T> certify_among(const catmull_rom<D, T>& c, const certify_options& opt, const Pairs& candidate_pairs) {
     certificate<D, T> cert;
     const auto pts = c.points();
     const auto grid = c.grid();
@@ -509,8 +559,12 @@ certificate<D, T> certify_intersection_free(const catmull_rom<D, T>& c, const ce
     }
     // Rounding of the box geometry: a few ulps of the coordinates.
     const T margin = T(64) * std::numeric_limits<T>::epsilon() * scale;
+    std::vector<box<D, T>> candidate_boxes(n);
+    for (std::size_t i = 0; i < n; ++i) candidate_boxes[i] = detail::overlap_candidate_box(boxes[i], margin);
+    const pair_rows candidates = candidate_pairs(candidate_boxes, T(0));
     for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = i + 2; j < n; ++j) {
+        for (const std::size_t j : candidates.row(i)) {
+            if (j < i + 2) continue;                       // adjacent
             if (closed && i == 0 && j == n - 1) continue;  // adjacent across the seam
             if (detail::boxes_overlap(boxes[i], boxes[j], margin)) {
                 cert.segments = std::array<std::size_t, 2>{i, j};
@@ -522,5 +576,7 @@ certificate<D, T> certify_intersection_free(const catmull_rom<D, T>& c, const ce
     cert.failed_rule = certify_rule::none;
     return cert;
 }
+
+}  // namespace detail
 
 }  // namespace crspline

@@ -20,6 +20,7 @@
 
 #include "analysis.hpp"
 #include "catmull_rom.hpp"
+#include "detail/box_tree.hpp"
 #include "segment.hpp"
 #include "vec.hpp"
 
@@ -214,14 +215,30 @@ std::vector<std::array<T, 3>> segment_pair_meetings(const cubic_segment<D, T>& A
     return found;
 }
 
+template <std::size_t D, class T, class Pairs>
+intersection_result<D, T> find_intersections_among(const catmull_rom<D, T>& c, T tolerance, const Pairs& candidate_pairs);
+
 }  // namespace detail
 
 /// All meetings of the curve with itself closer than `tolerance` (a
 /// distance; 0 means default_intersection_tolerance times the curve's
 /// scale): between non-adjacent segments, between adjacent segments away
-/// from their shared joint, and loops inside segments.
+/// from their shared joint, and loops inside segments. The pairs of
+/// segments whose control-point boxes meet come from a bounding-volume
+/// hierarchy (O(n log n + k) for k such pairs), each pair checked exactly.
 template <std::size_t D, class T>
 intersection_result<D, T> find_intersections(const catmull_rom<D, T>& c, T tolerance = T(0)) {
+    return detail::find_intersections_among(c, tolerance, detail::tree_pairs{});
+}
+
+namespace detail {
+
+// The search, given how to find the candidate pairs (a seam for the tests:
+// the tree, or every pair i < j as a reference). candidate_pairs(boxes, pad)
+// returns pair_rows that include every pair i < j whose boxes meet within
+// pad; each is then checked in the order i, then j.
+template <std::size_t D, class T, class Pairs>
+intersection_result<D, T> find_intersections_among(const catmull_rom<D, T>& c, T tolerance, const Pairs& candidate_pairs) {
     using point = vec<D, T>;
     intersection_result<D, T> out;
     const std::size_t n = c.segment_count();
@@ -244,14 +261,18 @@ intersection_result<D, T> find_intersections(const catmull_rom<D, T>& c, T toler
             out.intersections.push_back({{i, i}, {u, v}, c.segment(i).at(u), norm(c.segment(i).at(u) - c.segment(i).at(v))});
     }
 
-    std::vector<std::array<point, 2>> boxes(n);
-    for (std::size_t i = 0; i < n; ++i) boxes[i] = detail::box_of(bez[i]);
+    std::vector<detail::box<D, T>> boxes(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto bx = detail::box_of(bez[i]);
+        boxes[i] = {bx[0], bx[1]};
+    }
     // Candidate pairs by their boxes in absolute coordinates: pad by the
     // rounding of those coordinates too, so no pair is dropped for it (the
     // per-pair search below is relative and exact to the tolerance).
     const T pad = tol + T(8) * std::numeric_limits<T>::epsilon() * std::max(max_abs(lo), max_abs(hi));
+    const pair_rows candidates = candidate_pairs(boxes, pad);
     for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = i + 1; j < n; ++j) {
+        for (const std::size_t j : candidates.row(i)) {
             if (!detail::boxes_meet(boxes[i], boxes[j], pad)) continue;
             // Joint of adjacent segments: (end of i, start of j) or, closing
             // a closed curve, (start of i = 0, end of j = n - 1).
@@ -265,5 +286,7 @@ intersection_result<D, T> find_intersections(const catmull_rom<D, T>& c, T toler
         }
     return out;
 }
+
+}  // namespace detail
 
 }  // namespace crspline

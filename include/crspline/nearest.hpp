@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "catmull_rom.hpp"
+#include "detail/box_tree.hpp"
 #include "detail/format.hpp"
 #include "detail/polynomial.hpp"
 #include "error.hpp"
@@ -103,22 +104,6 @@ segment_nearest<T> nearest(const cubic_segment<D, T>& s, const vec<D, T>& q) {
 }
 
 namespace detail {
-
-/// Axis-aligned box.
-template <std::size_t D, class T>
-struct box {
-    vec<D, T> lo, hi;
-};
-
-template <std::size_t D, class T>
-box<D, T> merge(const box<D, T>& a, const box<D, T>& b) noexcept {
-    box<D, T> r = a;
-    for (std::size_t k = 0; k < D; ++k) {
-        r.lo[k] = std::min(r.lo[k], b.lo[k]);
-        r.hi[k] = std::max(r.hi[k], b.hi[k]);
-    }
-    return r;
-}
 
 /// Box of a segment's Bézier control points, widened by the rounding of the
 /// conversion and of evaluation so that it holds every computed point.
@@ -236,29 +221,16 @@ class nearest_index {
 public:
     using point = vec<D, T>;
     using result_type = nearest_result<D, T>;
-    static constexpr std::size_t leaf_size = 4;
+    static constexpr std::size_t leaf_size = detail::box_tree<D, T>::leaf_size;
 
     explicit nearest_index(const catmull_rom<D, T>& curve) : segments_(curve.segments()), grid_(curve.grid()) {
         const std::size_t n = segments_.size();
         if (n >= std::numeric_limits<std::uint32_t>::max())
             throw invalid_input("too many segments for nearest_index (" + std::to_string(n) + ")");
-        // 1. Every segment's box and centre.
-        std::vector<box_type> boxes(n);
-        centres_.resize(n);
-        order_.resize(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            boxes[i] = detail::segment_box(segments_[i]);
-            centres_[i] = (boxes[i].lo + boxes[i].hi) / T(2);
-            order_[i] = std::uint32_t(i);
-        }
-        // 2. The tree, built top down.
-        nodes_.reserve(2 * (n / leaf_size + 1));
-        build(boxes, 0, n);
-        centres_.clear();
-        centres_.shrink_to_fit();
-        // 3. Leaf boxes in leaf order, for a per-segment test.
-        boxes_.resize(n);
-        for (std::size_t k = 0; k < n; ++k) boxes_[k] = boxes[order_[k]];
+        // Every segment's box, in the tree (detail/box_tree.hpp).
+        std::vector<detail::box<D, T>> boxes(n);
+        for (std::size_t i = 0; i < n; ++i) boxes[i] = detail::segment_box(segments_[i]);
+        tree_ = detail::box_tree<D, T>(boxes);
     }
 
     /// Nearest point of the curve to q (identical to nearest(curve, q)).
@@ -279,57 +251,13 @@ public:
         return search_unchecked(q);
     }
 
-    std::size_t node_count() const noexcept { return nodes_.size(); }
+    std::size_t node_count() const noexcept { return tree_.nodes().size(); }
     std::size_t segment_count() const noexcept { return segments_.size(); }
 
 private:
-    using box_type = detail::box<D, T>;
-    // A leaf holds order_[first, first + count); an inner node (count == 0)
-    // has children at its own index + 1 and at `second`.
-    struct node {
-        box_type bounds;
-        std::uint32_t first = 0, count = 0, second = 0;
-    };
-
     typename catmull_rom<D, T>::segment_view segments_;
     std::span<const T> grid_;
-    std::vector<node> nodes_;
-    std::vector<std::uint32_t> order_;  // segment indices in leaf order
-    std::vector<box_type> boxes_;       // their boxes, in the same order
-    std::vector<point> centres_;        // during construction only
-
-    std::uint32_t build(const std::vector<box_type>& boxes, std::size_t begin, std::size_t end) {
-        const std::uint32_t self = std::uint32_t(nodes_.size());
-        nodes_.push_back({});
-        // 1. The union of the boxes, and the extent of their centres.
-        box_type b = boxes[order_[begin]];
-        box_type c{centres_[order_[begin]], centres_[order_[begin]]};
-        for (std::size_t k = begin + 1; k < end; ++k) {
-            b = detail::merge(b, boxes[order_[k]]);
-            c = detail::merge(c, box_type{centres_[order_[k]], centres_[order_[k]]});
-        }
-        nodes_[self].bounds = b;
-        if (end - begin <= leaf_size) {
-            nodes_[self].first = std::uint32_t(begin);
-            nodes_[self].count = std::uint32_t(end - begin);
-            return self;
-        }
-        // 2. Median split on the longest axis of the centres.
-        std::size_t axis = 0;
-        for (std::size_t k = 1; k < D; ++k)
-            if (c.hi[k] - c.lo[k] > c.hi[axis] - c.lo[axis]) axis = k;
-        const std::size_t mid = begin + (end - begin) / 2;
-        std::nth_element(order_.begin() + std::ptrdiff_t(begin), order_.begin() + std::ptrdiff_t(mid),
-                         order_.begin() + std::ptrdiff_t(end), [&](std::uint32_t x, std::uint32_t y) {
-                             return centres_[x][axis] != centres_[y][axis] ? centres_[x][axis] < centres_[y][axis]
-                                                                           : x < y;
-                         });
-        // 3. Children: the left one right after this node.
-        build(boxes, begin, mid);
-        const std::uint32_t right = build(boxes, mid, end);
-        nodes_[self].second = right;
-        return self;
-    }
+    detail::box_tree<D, T> tree_;
 
     nearest_search<D, T> search_unchecked(const point& q) const {
         nearest_search<D, T> s{detail::no_result<D, T>(), 0, 0};
@@ -338,25 +266,26 @@ private:
         // balanced, so its depth is below 2 + log2(N) <= 34.
         std::array<std::pair<std::uint32_t, T>, 72> stack;
         std::size_t top = 0;
-        stack[top++] = {0, detail::lower_bound_sq(nodes_[0].bounds, q)};
+        const auto& nodes = tree_.nodes();
+        stack[top++] = {0, detail::lower_bound_sq(nodes[0].bounds, q)};
         ++s.nodes_visited;
         while (top > 0) {
             const auto [id, bound] = stack[--top];
             if (bound > best.distance_sq) continue;
-            const node& nd = nodes_[id];
+            const auto& nd = nodes[id];
             if (nd.count > 0) {
                 // A leaf: test each segment's own box, solve the survivors.
                 for (std::size_t k = nd.first; k < nd.first + nd.count; ++k) {
-                    if (detail::lower_bound_sq(boxes_[k], q) > best.distance_sq) continue;
+                    if (detail::lower_bound_sq(tree_.item_box(k), q) > best.distance_sq) continue;
                     ++s.segments_solved;
-                    const auto r = detail::solve_segment(segments_, grid_, order_[k], q);
+                    const auto r = detail::solve_segment(segments_, grid_, tree_.item(k), q);
                     if (detail::better(r, best)) best = r;
                 }
                 continue;
             }
             // An inner node: push the farther child first, so the nearer one is searched first.
             const std::uint32_t a = id + 1, b = nd.second;
-            const T ba = detail::lower_bound_sq(nodes_[a].bounds, q), bb = detail::lower_bound_sq(nodes_[b].bounds, q);
+            const T ba = detail::lower_bound_sq(nodes[a].bounds, q), bb = detail::lower_bound_sq(nodes[b].bounds, q);
             s.nodes_visited += 2;
             const bool a_first = !(bb < ba);
             const std::pair<std::uint32_t, T> near{a_first ? a : b, a_first ? ba : bb};
