@@ -34,6 +34,41 @@ def fmt_ns(ns):
     return f"{ns:.3g} ns"
 
 
+def intersection_scaling(rows, ns, p):
+    """certify/N and find_intersections/N: time per call and the fitted
+    exponent (least squares of log time against log segments)."""
+    import math
+    cases = {}
+    for name in rows:
+        head, _, n = name.rpartition("/")
+        if head in ("certify", "find_intersections") and n.isdigit() and ns(name):
+            cases.setdefault(head, []).append((int(n), ns(name) * int(n) / 1e9))
+    if not cases:
+        return
+    p("")
+    p("Intersection-free spiral, CPU seconds per call, and the exponent b of a least-squares fit time ~ n^b:")
+    p("")
+    p("| segments | " + " | ".join(cases) + " |")
+    p("|---:|" + "---:|" * len(cases))
+    for n in sorted({n for v in cases.values() for n, _ in v}):
+        p(f"| {n} | " + " | ".join(next((f"{t:.3g} s" for m, t in v if m == n), "") for v in cases.values()) + " |")
+    fits = []
+    for head, v in cases.items():
+        if len(v) >= 2:
+            x = [math.log(n) for n, _ in v]
+            y = [math.log(t) for _, t in v]
+            mx, my = sum(x) / len(x), sum(y) / len(y)
+            b = sum((a - mx) * (c - my) for a, c in zip(x, y)) / sum((a - mx) ** 2 for a in x)
+            fits.append(f"{b:.2f}")
+        else:
+            fits.append("")
+    p("| exponent | " + " | ".join(fits) + " |")
+    for n, goal in ((100000, 2), (1000000, 30)):
+        t = next((t for m, t in cases.get("certify", []) if m == n), None)
+        if t is not None:
+            p(f"\ncertify {n} segments: {t:.3g} s, goal <= {goal} s: {'met' if t <= goal else f'MISSED by {t / goal:.2f}x'}")
+
+
 def main():
     ctx, rows = load_cpp(sys.argv[1])
     js = {}
@@ -60,7 +95,8 @@ def main():
     p("| case | per item | accuracy / counters |")
     p("|---|---:|---|")
     per = {"construct": "control point", "arc_length": "segment", "tessellate": "segment",
-           "nearest": "query", "nearest_scaling": "query", "t_at_arc_length": "query"}
+           "nearest": "query", "nearest_scaling": "query", "t_at_arc_length": "query",
+           "certify": "segment", "find_intersections": "segment"}
     for name, b in rows.items():
         t = ns(name)
         if t is None:
@@ -148,6 +184,7 @@ def main():
         for n, k in sorted(sc):
             t, s = ns(k), ctr(k, "solved_per_query")
             p(f"| {n} | {fmt_ns(t)} | {ctr(k, 'nodes_per_query'):.1f} | {s:.2f} | {fmt_ns(t / s)} |")
+    intersection_scaling(rows, ns, p)
     print("\n".join(out))
 
 
