@@ -236,7 +236,7 @@ TEST(PairSearch, FindIntersectionsEqualsAllPairs) {
 // The certificate through the tree equals the all-pairs certificate: same
 // decision, same failed rule and pair (the smallest), same search.
 template <std::size_t D>
-void check_certificates(std::uint64_t seed, std::size_t& curves, std::array<std::size_t, 5>& rules) {
+void check_certificates(std::uint64_t seed, std::size_t& curves, std::array<std::size_t, 6>& rules) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> U(0.0, 1.0);
     for (int rep = 0; rep < 80; ++rep) {
@@ -251,6 +251,7 @@ void check_certificates(std::uint64_t seed, std::size_t& curves, std::array<std:
         const auto fast = certify_intersection_free(c, opt);
         const auto ref = detail::certify_among(c, opt, all_pairs{});
         expect_same(fast, ref, "D " + std::to_string(D) + " rep " + std::to_string(rep));
+        ASSERT_LT(std::size_t(ref.failed_rule), rules.size());
         ++rules[std::size_t(ref.failed_rule)];
         ++curves;
     }
@@ -259,11 +260,11 @@ void check_certificates(std::uint64_t seed, std::size_t& curves, std::array<std:
 TEST(PairSearch, CertificateEqualsAllPairs) {
     CRSPLINE_SEEDED(seed, 4103);
     std::size_t curves = 0;
-    std::array<std::size_t, 5> rules{};
+    std::array<std::size_t, 6> rules{};  // by certify_rule
     check_certificates<2>(seed, curves, rules);
     check_certificates<3>(seed + 1, curves, rules);
     std::printf("pair search: %zu certificates: %zu certified, %zu failed rule 3 (boxes), %zu other rules\n", curves,
-                rules[0], rules[4], rules[1] + rules[2] + rules[3]);
+                rules[0], rules[4], rules[1] + rules[2] + rules[3] + rules[5]);
     EXPECT_EQ(curves, 160u);
     EXPECT_GE(rules[0], 20u);  // certified: every pair was checked and none overlapped
     EXPECT_GE(rules[4], 20u);  // failed at a pair: the same (smallest) pair reported
