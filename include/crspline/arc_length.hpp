@@ -1,7 +1,11 @@
 // crspline: arc length, its inverse, and sampling by arc length.
 //
-// Lengths come from adaptive Gauss-Legendre quadrature of the speed |C'(u)|.
-// Each segment is first split where |C'|^2 has a critical point, so that a
+// Lengths come from Gauss-Legendre quadrature of the speed |C'(u)|. The fast
+// path (detail/speed_quadrature.hpp) proves, before integrating, which rule
+// of 8 to 32 points meets the accuracy on a segment (or on its halves) from
+// a bound of the distance of the speed's complex singularities: one rule
+// evaluation per piece, no search, no allocation. Pieces it cannot prove
+// (the speed vanishes in or near them) take the slower path: each is first split where |C'|^2 has a critical point, so that a
 // zero of the speed (a cusp, a fold, tension 1, a coincident neighbour) sits
 // at the end of a piece, where sqrt(|C'|^2) is analytic: the quadrature then
 // converges geometrically instead of stalling on a kink. Pieces are halved
@@ -26,6 +30,7 @@
 #include "catmull_rom.hpp"
 #include "detail/format.hpp"
 #include "detail/polynomial.hpp"
+#include "detail/speed_quadrature.hpp"
 #include "error.hpp"
 #include "segment.hpp"
 
@@ -38,12 +43,7 @@ namespace detail {
 
 // Gauss-Legendre, 8 points on [-1, 1]: exact for polynomials of degree 15.
 template <class T>
-struct gauss_legendre_8 {
-    static constexpr T x[4] = {T(0.18343464249564980494), T(0.52553240991632898582), T(0.79666647741362673959),
-                               T(0.96028985649753623168)};
-    static constexpr T w[4] = {T(0.36268378337836198297), T(0.31370664587788728734), T(0.22238103445337447054),
-                               T(0.10122853629037625915)};
-};
+using gauss_legendre_8 = gauss_legendre<8, T>;
 
 /// |dC/du| of a segment.
 template <std::size_t D, class T>
@@ -208,6 +208,74 @@ std::vector<length_piece<T>> length_pieces(const cubic_segment<D, T>& s, T a, T 
     return out;
 }
 
+/// The relative accuracy actually aimed at: acc, but not below a few ulps.
+template <class T>
+double effective_accuracy(T acc) noexcept {
+    return std::max(double(acc), 8.0 * double(std::numeric_limits<T>::epsilon()));
+}
+
+/// Halvings of a piece before the fast path gives it to the slower one.
+inline constexpr int max_depth = 10;
+
+/// The fast path over [a, b] of segment s, whose speed's branch points are
+/// z: the smallest rule proved for [a, b], else its halves, recursively;
+/// slow(a, b) for what it cannot prove.
+template <std::size_t D, class T, class F, class Slow>
+void fast_length_pieces(const cubic_segment<D, T>& s, const speed_model& sm, const std::complex<double> (&z)[2], T a,
+                        T b, double eff, F& emit, Slow& slow, int depth) {
+    // Length estimate for the tolerance: half the speed at the middle times
+    // the width; the bound is checked against the computed length below.
+    const T m = a + (b - a) / 2;
+    const double estimate = double(b - a) * std::sqrt(std::max(horner(sm.q, double(m)), 0.0)) / 2;
+    const rule_choice rc = estimate > 0 ? choose_rule(sm, z, double(a), double(b), eff, estimate) : rule_choice{};
+    if (rc.n) {
+        const T len = gauss_length_rule(s, a, b, rc.n);
+        if (rc.bound <= eff * double(len)) {
+            emit(a, b, len, rc);
+            return;
+        }
+    }
+    if (depth < max_depth && m > a && m < b) {
+        fast_length_pieces(s, sm, z, a, m, eff, emit, slow, depth + 1);
+        fast_length_pieces(s, sm, z, m, b, eff, emit, slow, depth + 1);
+        return;
+    }
+    slow(a, b);
+}
+
+/// Calls emit(u0, u1, length, rule_choice) for consecutive pieces covering
+/// [a, b] of segment s, each integrated to relative accuracy acc by the
+/// rule of rule_choice.n points (the 3-point rule is as accurate on any
+/// sub-interval up to rule_choice.short_fraction() of the piece). The fast path
+/// (detail/speed_quadrature.hpp) picks the rule from the speed's branch
+/// points; where the speed vanishes (a real branch point) or a piece stays
+/// unproved after max_depth halvings, length_pieces() takes over.
+template <std::size_t D, class T, class F>
+void for_each_length_piece(const cubic_segment<D, T>& s, T a, T b, T acc, F&& emit) {
+    if (!(b > a)) return;
+    const double eff = effective_accuracy(acc);
+    auto slow = [&](T u0, T u1) {
+        // The slower path's pieces are cut for the 8-point rule (rho = 0:
+        // see rule_choice::short_fraction).
+        for (const auto& p : length_pieces(s, u0, u1, T(eff))) emit(p.u0, p.u1, p.length, rule_choice{8, 0, 0, 0});
+    };
+    const speed_model sm(s);
+    std::complex<double> z[2];
+    if (!speed_branch_points(sm, z)) {
+        slow(a, b);
+        return;
+    }
+    fast_length_pieces(s, sm, z, a, b, eff, emit, slow, 0);
+}
+
+/// Length of segment s over [a, b] to relative accuracy acc.
+template <std::size_t D, class T>
+T segment_length(const cubic_segment<D, T>& s, T a, T b, T acc) {
+    T sum = 0;
+    for_each_length_piece(s, a, b, acc, [&](T, T, T len, const rule_choice&) { sum += len; });
+    return sum;
+}
+
 template <class T>
 void check_accuracy(T accuracy) {
     if (!(accuracy > 0 && accuracy < 1))
@@ -223,9 +291,7 @@ T arc_length(const cubic_segment<D, T>& s, T u0, T u1, T accuracy = T(default_ac
     if (!(u0 >= 0 && u1 <= 1 && u0 <= u1))
         throw invalid_input("segment range [" + detail::num(double(u0)) + ", " + detail::num(double(u1)) +
                             "] is not inside [0, 1]");
-    T sum = 0;
-    for (const auto& p : detail::length_pieces(s, u0, u1, accuracy)) sum += p.length;
-    return sum;
+    return detail::segment_length(s, u0, u1, accuracy);
 }
 template <std::size_t D, class T>
 T arc_length(const cubic_segment<D, T>& s, T accuracy = T(default_accuracy)) {
@@ -247,8 +313,7 @@ public:
         segments_.reserve(curve.segment_count());
         for (const auto& s : curve.segments()) segments_.push_back(s);
         detail::check_accuracy(accuracy);
-        const double eff = std::max(double(accuracy), 8.0 * double(std::numeric_limits<T>::epsilon()));
-        small_step_ = T(std::pow(100.0 / eff, -5.0 / 48.0) / 2.2);
+        const double eff = detail::effective_accuracy(accuracy);
         const std::size_t nseg = segments_.size();
         first_piece_.assign(nseg + 1, 0);
         segment_start_.assign(nseg + 1, T(0));
@@ -256,11 +321,13 @@ public:
         for (std::size_t i = 0; i < nseg; ++i) {
             first_piece_[i] = pieces_.size();
             segment_start_[i] = total_;
-            for (const auto& p : detail::length_pieces(segments_[i], T(0), T(1), accuracy)) {
-                pieces_.push_back({p.u0, p.u1, total_, i});
-                total_ += p.length;
-                segment_length_[i] += p.length;
-            }
+            const auto& seg = segments_[i];
+            detail::for_each_length_piece(seg, T(0), T(1), accuracy,
+                                          [&](T u0, T u1, T len, const detail::rule_choice& rc) {
+                                              pieces_.push_back({u0, u1, total_, i, rc.n, T(rc.short_fraction(eff))});
+                                              total_ += len;
+                                              segment_length_[i] += len;
+                                          });
         }
         first_piece_[nseg] = pieces_.size();
         segment_start_[nseg] = total_;
@@ -288,7 +355,7 @@ public:
         std::size_t k = first_piece_[i], end = first_piece_[i + 1];
         if (k == end) return segment_start_[i];
         while (k + 1 < end && pieces_[k + 1].u0 <= u) ++k;
-        return pieces_[k].s0 + detail::gauss_length(seg, pieces_[k].u0, u);
+        return pieces_[k].s0 + detail::gauss_length_rule(seg, pieces_[k].u0, u, pieces_[k].rule);
     }
 
     /// Parameter t at arc length s in [0, total()] (checked). The result
@@ -337,9 +404,11 @@ public:
 
 private:
     struct piece {
-        T u0, u1;         // local range in the segment
-        T s0;             // arc length from the curve's start to u0
-        std::size_t seg;  // segment index
+        T u0, u1;           // local range in the segment
+        T s0;               // arc length from the curve's start to u0
+        std::size_t seg;    // segment index
+        int rule;           // Gauss-Legendre points that meet the accuracy on it
+        T short_fraction;   // increments up to this fraction of it use the 3-point rule
     };
     std::vector<cubic_segment<D, T>> segments_;
     std::vector<piece> pieces_;
@@ -349,7 +418,6 @@ private:
     std::vector<T> segment_length_;           // length of each segment
     T total_ = 0;
     T accuracy_;
-    T small_step_ = 0;  // increments up to this fraction of a piece use the 3-point rule
 
     std::size_t locate_segment(T t) const noexcept {
         // Last segment whose t0 <= t (segments are few relative to queries
@@ -384,11 +452,11 @@ private:
     // k, from an anchor (u_a, s_a) in it with s_a <= s (the previous answer,
     // or the piece's start), and move the anchor to the answer.
     //
-    // Why integrating only the increment keeps the accuracy: the 8-point
-    // Gauss rule's error on [a, b] is bounded by rho^-16 times the integral
-    // scale, rho the Bernstein-ellipse parameter of the speed's nearest
-    // singularity for [a, b]. The table cut every piece so that rho is large
-    // enough over the whole piece; over a sub-interval the ellipse with the
+    // Why integrating only the increment keeps the accuracy: the piece's
+    // n-point Gauss rule's error on [a, b] is bounded by rho^-2n times the
+    // integral scale, rho the Bernstein-ellipse parameter of the speed's
+    // nearest singularity for [a, b]. The table cut every piece so that rho
+    // is large enough over the whole piece; over a sub-interval the ellipse with the
     // same foci ratio shrinks around a shorter segment, so every singularity
     // is relatively farther and rho only grows: each increment is at least as
     // accurate, relative to its length, as the piece itself. The anchor's
@@ -396,12 +464,14 @@ private:
     // the piece's length, the same bound as for one integral from the piece's
     // start, and the anchor is reset at each new piece from its exact s0.
     //
-    // Short increments use the 3-point rule (degree 5). With rho >= rho_min
+    // Short increments use the 3-point rule (degree 5). For fast-path pieces
+    // the fraction comes from the piece's own proof (rule_choice::
+    // short_fraction); for the slower path's pieces, with rho >= rho_min
     // for the piece (rho_min^-16 = acc / 100), every singularity is at least
     // (rho - 1/rho)/2 half-widths of the piece away from it, so for a
     // sub-interval of relative width w its parameter is rho_w >=
     // (rho - 1/rho) / (2 w), and the 3-point error ~ rho_w^-6 stays below
-    // acc / 100 when w <= small_step_ = (100 / acc)^(-5/48) / 2.2 (1/64 at
+    // acc / 100 when w <= (100 / acc)^(-5/48) / 2.2 (1/64 at
     // acc = 1e-12: rho_w >= 236, rho_w^-6 = 6e-15).
     // In a batch of 10^6 sorted queries the increment is about 10^-3 of a
     // segment: Newton started from the anchor with the speed there lands
@@ -423,12 +493,12 @@ private:
             const T step = target / v0, dv = dot(d1, d2) / v0;
             u = std::clamp(u_a + step - step * step * dv / (T(2) * v0), u_a, hi);
         }
-        const T short_step = small_step_ * (p.u1 - p.u0);
+        const T short_step = p.short_fraction * (p.u1 - p.u0);
         const T f = newton_in_bracket(
             seg,
             [&](T x) {
                 return (x > u_a ? (x - u_a <= short_step ? detail::gauss_length_3(seg, u_a, x)
-                                                         : detail::gauss_length(seg, u_a, x))
+                                                         : detail::gauss_length_rule(seg, u_a, x, p.rule))
                                 : T(0)) - target;
             },
             lo, hi, u, tol);
@@ -470,7 +540,8 @@ private:
         const T tol = std::max(accuracy_, T(4) * std::numeric_limits<T>::epsilon()) * total_ / T(4);
         T lo = p.u0, hi = p.u1;
         T u = len > 0 ? p.u0 + (p.u1 - p.u0) * std::clamp(target / len, T(0), T(1)) : p.u0;
-        newton_in_bracket(seg, [&](T x) { return detail::gauss_length(seg, p.u0, x) - target; }, lo, hi, u, tol);
+        newton_in_bracket(
+            seg, [&](T x) { return detail::gauss_length_rule(seg, p.u0, x, p.rule) - target; }, lo, hi, u, tol);
         return std::min(seg.t0 + u * seg.h, segments_.back().t0 + segments_.back().h);
     }
 };
@@ -480,8 +551,7 @@ template <std::size_t D, class T>
 T arc_length(const catmull_rom<D, T>& curve, T accuracy = T(default_accuracy)) {
     detail::check_accuracy(accuracy);
     T sum = 0;
-    for (const auto& s : curve.segments())
-        for (const auto& p : detail::length_pieces(s, T(0), T(1), accuracy)) sum += p.length;
+    for (const auto& s : curve.segments()) sum += detail::segment_length(s, T(0), T(1), accuracy);
     return sum;
 }
 
@@ -501,7 +571,7 @@ T arc_length(const catmull_rom<D, T>& curve, T ta, T tb, T accuracy = T(default_
         const auto& s = curve.segment(i);
         const T a = i == i0 ? std::clamp(s.local(ta), T(0), T(1)) : T(0);
         const T b = i == i1 ? std::clamp(s.local(tb), T(0), T(1)) : T(1);
-        for (const auto& p : detail::length_pieces(s, a, b, accuracy)) sum += p.length;
+        sum += detail::segment_length(s, a, b, accuracy);
     }
     return sum;
 }

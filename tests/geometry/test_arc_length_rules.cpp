@@ -1,0 +1,125 @@
+// The arc-length fast path: its Gauss-Legendre rules, the speed's branch
+// points it finds, and its lengths on long random walks (the benchmark's
+// kind of curve) against an independent long-double quadrature.
+#include "test_support.hpp"
+
+#include <crspline/arc_length.hpp>
+
+#include <complex>
+
+namespace {
+using namespace crspline;
+using P3 = vec<3>;
+
+template <int N>
+void check_rule_exact() {
+    // Exact for x^k, k <= 2N - 1, on [0, 1].
+    using G = detail::gauss_legendre<N, double>;
+    for (int k = 0; k < 2 * N; ++k) {
+        double sum = 0;
+        for (int i = 0; i < N / 2; ++i)
+            sum += G::w[i] * (std::pow(0.5 - 0.5 * G::x[i], k) + std::pow(0.5 + 0.5 * G::x[i], k));
+        // The weighted sum of N/2 positive terms of size <= 1: a few ulps.
+        EXPECT_NEAR(0.5 * sum, 1.0 / (k + 1), 1e-15) << N << " points, degree " << k;
+    }
+}
+
+TEST(ArcLengthRules, GaussLegendreRulesAreExactToDegree2NMinus1) {
+    check_rule_exact<8>();
+    check_rule_exact<16>();
+    check_rule_exact<24>();
+    check_rule_exact<32>();
+}
+
+std::vector<P3> walk(std::mt19937_64& rng, std::size_t n) {
+    // Unit directions, log-normal steps (chords differ by factors up to ~50).
+    std::normal_distribution<double> g(0.0, 1.0);
+    std::vector<P3> p(n);
+    P3 x{};
+    for (auto& q : p) {
+        q = x;
+        P3 d{{g(rng), g(rng), g(rng)}};
+        x += (std::exp(g(rng)) / norm(d)) * d;
+    }
+    return p;
+}
+
+TEST(ArcLengthRules, BranchPointsAreTheSpeedsComplexZeros) {
+    // Each point found is a zero of q = |C'|^2 continued to complex u, and
+    // the nearest of the four to [0, 1] (in the Bernstein-ellipse sense) is
+    // the one the independent Durand-Kerner iteration of the slower path
+    // finds.
+    CRSPLINE_SEEDED(s, 1601);
+    std::mt19937_64 rng(s);
+    const catmull_rom<3> c(walk(rng, 2001));
+    std::size_t checked = 0;
+    for (const auto& seg : c.segments()) {
+        const detail::speed_model sm(seg);
+        std::complex<double> z[2];
+        if (!detail::speed_branch_points(sm, z)) continue;
+        for (const auto& x : z) {
+            std::complex<double> qz = 0, scale = 0;
+            for (std::size_t k = 5; k-- > 0;) qz = qz * x + sm.q[k], scale = scale * std::abs(x) + std::abs(sm.q[k]);
+            // Newton stops at a relative step of 1e-8, so the root is good to
+            // about 1e-16 relative; q there is a few ulps of its terms' size.
+            EXPECT_LE(std::abs(qz), 1e-10 * std::abs(scale)) << "root " << x;
+        }
+        double rho_fast = std::min(detail::ellipse_parameter(z[0], 0, 1), detail::ellipse_parameter(z[1], 0, 1));
+        double rho_dk = 1e300;
+        for (const auto& x : detail::speed_singularities(seg)) rho_dk = std::min(rho_dk, detail::ellipse_rho(x, 0, 1));
+        EXPECT_NEAR(rho_fast, rho_dk, 1e-6 * rho_dk);
+        ++checked;
+    }
+    // Random walks have no zero speed: nearly every segment takes the fast
+    // path (Newton may miss on a rare one, which then takes the slower path).
+    EXPECT_GE(checked, c.segment_count() - c.segment_count() / 100);
+}
+
+// Length of a segment over [0, 1]: 16-point Gauss-Legendre in long double
+// on 512 equal panels (no adaptivity, nothing shared with the fast path but
+// the nodes, which the test above checks).
+long double reference_length(const cubic_segment<3>& s) {
+    using G = detail::gauss_legendre<16, long double>;
+    const int panels = 512;
+    long double sum = 0;
+    for (int p = 0; p < panels; ++p) {
+        const long double m = (p + 0.5L) / panels, r = 0.5L / panels;
+        for (int i = 0; i < 8; ++i)
+            for (long double u : {m - r * G::x[i], m + r * G::x[i]}) {
+                long double q = 0;
+                for (std::size_t k = 0; k < 3; ++k) {
+                    const long double v = s.c1[k] + u * (2.0L * s.c2[k] + 3.0L * u * s.c3[k]);
+                    q += v * v;
+                }
+                sum += G::w[i] * r * std::sqrt(q);
+            }
+    }
+    return sum;
+}
+
+TEST(ArcLengthRules, RandomWalkSegmentsMeetEveryAccuracy) {
+    // Sharp turns put the speed's branch points close to the segment: the
+    // rule choice and its halvings are exercised on every segment.
+    CRSPLINE_SEEDED(s, 1602);
+    std::mt19937_64 rng(s);
+    const catmull_rom<3> c(walk(rng, 1001));
+    std::size_t checked = 0;
+    long double total_ref = 0;
+    for (const auto& seg : c.segments()) {
+        const long double ref = reference_length(seg);
+        total_ref += ref;
+        for (double acc : {1e-4, 1e-8, 1e-12}) {
+            // The reference is good to ~1e-18 relative; double rounding of the
+            // sum adds a few ulps.
+            EXPECT_LE(double(std::abs(arc_length(seg, acc) - ref)), acc * double(ref) + 4e-16 * double(ref))
+                << "accuracy " << acc;
+            ++checked;
+        }
+    }
+    EXPECT_EQ(checked, 3 * c.segment_count());
+    EXPECT_LE(double(std::abs(arc_length(c, 1e-12) - total_ref)), 1e-12 * double(total_ref));
+    const arc_length_table<3> table(c, 1e-12);
+    EXPECT_LE(double(std::abs(table.total() - total_ref)), 1e-12 * double(total_ref));
+}
+
+}  // namespace
