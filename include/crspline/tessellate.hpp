@@ -120,9 +120,11 @@ T tessellation_tolerance(const catmull_rom<D, T>& c, double relative = default_t
 /// - Vertices lie on the curve: points[k] == c.evaluate(t[k]) exactly.
 /// - Every knot is a vertex, once; the first vertex is the curve's start,
 ///   the last its end (a closed curve ends at its first point exactly).
-/// - Each segment is cut greedily: from a vertex, the longest piece that
-///   flatness_bound proves within tolerance (bisection on t), so a segment
-///   gets at most uniform_piece_count pieces and usually fewer.
+/// - Each segment is cut greedily: from a vertex, a piece that bound (1) of
+///   flatness_bound proves in closed form, grown while flatness_bound still
+///   proves it and refined by four halvings (within 1/16 of the longest
+///   provable piece), so a segment gets about uniform_piece_count pieces at
+///   most and usually fewer.
 /// - A constant segment (a repeated point) adds no vertex; a straight
 ///   segment at constant speed is one piece; a curve that is a single point
 ///   gives its two ends (t_min and t_max, equal when all knots coincide).
@@ -149,14 +151,42 @@ polyline<D, T> tessellate(const catmull_rom<D, T>& c, std::type_identity_t<T> to
         // Local u of a vertex parameter, as evaluate() computes it.
         auto u_of = [&](T t) { return t == t_end ? T(1) : s.local(t); };
         T a = grid[i];
+        const std::size_t n_uniform = uniform_piece_count(s, tolerance);
         while (flatness_bound(s, u_of(a), T(1)) > tolerance) {
-            // Longest piece from a: lo is proved within tolerance, hi is not.
-            T lo = a, hi = t_end;
-            for (;;) {
+            const T u0 = u_of(a);
+            // A piece bound (1) of flatness_bound proves, in closed form:
+            // |C''| is convex in u, so on [u0, u0 + w] with w <= w0 its
+            // maximum is at most max(|C''(u0)|, |C''(u0 + w0)|), and
+            // w = sqrt(8 tol / that maximum) meets w^2 / 8 max|C''| <= tol.
+            const T k0 = norm(s.du(u0, 2));
+            const T w0 = k0 > 0 ? std::sqrt(T(8) * tolerance / k0) : T(1) - u0;
+            const T k1 = std::max(k0, norm(s.du(std::min(T(1), u0 + w0), 2)));
+            const T w1 = k1 > 0 ? std::sqrt(T(8) * tolerance / k1) : T(1) - u0;
+            // lo: proved within tolerance; hi: not yet, or not.
+            T lo = std::min(t_end, a + w1 * s.h), hi = t_end;
+            if (!(lo > a) || flatness_bound(s, u0, u_of(lo)) > tolerance) lo = a;
+            // Grow while the full bound (the smaller of both) still proves
+            // the piece, then a few halvings of the last step: the piece is
+            // then within 1/16 of the longest the bound allows.
+            for (int grow = 0; grow < 4 && lo > a; ++grow) {
+                const T next = std::min(t_end, a + T(2) * (lo - a));
+                if (!(next > lo)) break;
+                if (flatness_bound(s, u0, u_of(next)) <= tolerance) {
+                    lo = next;
+                } else {
+                    hi = next;
+                    break;
+                }
+            }
+            for (int halve = 0; halve < (lo > a ? 4 : 64); ++halve) {
                 const T mid = lo + (hi - lo) / 2;
                 if (!(mid > lo && mid < hi) || hi - lo <= (lo - a) * T(1e-6)) break;
-                (flatness_bound(s, u_of(a), u_of(mid)) <= tolerance ? lo : hi) = mid;
+                (flatness_bound(s, u0, u_of(mid)) <= tolerance ? lo : hi) = mid;
             }
+            // Never shorter than the uniform pieces (1/n of the segment, n =
+            // uniform_piece_count, proved by bound (1) with |C''| at its
+            // larger end), so a segment never gets more than n pieces.
+            lo = std::max(lo, std::min(t_end, a + s.h / T(n_uniform)));
             // Below rounding no piece qualifies: step to the next parameter.
             if (lo == a) lo = hi;
             if (lo == t_end) break;
