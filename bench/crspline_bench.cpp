@@ -509,6 +509,110 @@ void t_at_arc_length(benchmark::State& state) {
     state.counters["rel_err"] = err / table.total();
 }
 
+// Issue 16: arc length on a 20,000-point walk against one plain 16-point
+// Gauss-Legendre rule per segment on the same segments, both errors
+// against a long-double reference (16 points on 256 panels per segment).
+const curve3& walk20k() { static const curve3 c(walk(20'000)); return c; }
+
+long double walk20k_reference() {
+    static const long double ref = [] {
+        using G = crspline::detail::gauss_legendre<16, long double>;
+        long double sum = 0;
+        for (const auto& s : walk20k().segments())
+            for (int p = 0; p < 256; ++p) {
+                const long double m = (p + 0.5L) / 256, r = 0.5L / 256;
+                for (int i = 0; i < 8; ++i)
+                    for (long double u : {m - r * G::x[i], m + r * G::x[i]}) {
+                        long double q = 0;
+                        for (int d = 0; d < 3; ++d) {
+                            const long double v = s.c1[d] + u * (2.0L * s.c2[d] + 3.0L * u * s.c3[d]);
+                            q += v * v;
+                        }
+                        sum += G::w[i] * r * std::sqrt(q);
+                    }
+            }
+        return sum;
+    }();
+    return ref;
+}
+
+void arc_length_walk(benchmark::State& state) {
+    const auto& c = walk20k();
+    double L = 0;
+    for (auto _ : state) {
+        L = crspline::arc_length(c, 1e-12);
+        benchmark::DoNotOptimize(L);
+    }
+    state.SetItemsProcessed(std::int64_t(state.iterations() * c.segment_count()));  // per segment
+    const long double ref = walk20k_reference();
+    state.counters["rel_err"] = double(std::abs((long double)L - ref) / ref);
+}
+
+void arc_length_walk_gl16(benchmark::State& state) {
+    const auto& c = walk20k();
+    double L = 0;
+    for (auto _ : state) {
+        L = 0;
+        for (const auto& s : c.segments()) L += crspline::detail::gauss_length_n<16>(s, 0.0, 1.0);
+        benchmark::DoNotOptimize(L);
+    }
+    state.SetItemsProcessed(std::int64_t(state.iterations() * c.segment_count()));
+    const long double ref = walk20k_reference();
+    state.counters["rel_err"] = double(std::abs((long double)L - ref) / ref);
+}
+
+// Tessellation of the same walk at tol 1e-3 and 1e-5 (steps are ~1): per
+// output vertex, with the vertex count over the asymptotic optimum
+// integral sqrt(kappa / (8 tol)) ds (computed here by a 16-point rule on 64
+// panels per segment); the baseline is a sorted batch evaluation of as
+// many points.
+double tessellation_optimum(const curve3& c, double tol) {
+    using G = crspline::detail::gauss_legendre<16, double>;
+    double sum = 0;
+    for (const auto& s : c.segments())
+        for (int p = 0; p < 64; ++p) {
+            const double m = (p + 0.5) / 64, r = 0.5 / 64;
+            for (int i = 0; i < 8; ++i)
+                for (double u : {m - r * G::x[i], m + r * G::x[i]}) {
+                    const v3 d1 = s.du(u, 1), d2 = s.du(u, 2);
+                    const double v2 = crspline::dot(d1, d1);
+                    const double cross2 = std::max(0.0, v2 * crspline::dot(d2, d2) - std::pow(crspline::dot(d1, d2), 2));
+                    // sqrt(kappa) |C'| du with kappa = |C' x C''| / |C'|^3
+                    if (v2 > 0) sum += G::w[i] * r * std::sqrt(std::sqrt(cross2) / (v2 * std::sqrt(v2))) * std::sqrt(v2);
+                }
+        }
+    return sum / std::sqrt(8 * tol);
+}
+
+void tessellate_walk(benchmark::State& state) {
+    const auto& c = walk20k();
+    const double tol = state.range(0) == 3 ? 1e-3 : 1e-5;
+    crspline::polyline<3, double> pl;
+    for (auto _ : state) {
+        pl = crspline::tessellate(c, tol);
+        benchmark::DoNotOptimize(pl.points.data());
+    }
+    state.SetItemsProcessed(std::int64_t(state.iterations() * pl.points.size()));  // per vertex
+    state.counters["vertices"] = double(pl.points.size());
+    state.counters["over_optimum"] = double(pl.points.size() - 1) / tessellation_optimum(c, tol);
+}
+
+void tessellate_walk_eval(benchmark::State& state) {
+    const auto& c = walk20k();
+    const double tol = state.range(0) == 3 ? 1e-3 : 1e-5;
+    static std::size_t n3 = 0, n5 = 0;
+    std::size_t& n = tol == 1e-3 ? n3 : n5;
+    if (n == 0) n = crspline::tessellate(c, tol).points.size();
+    const auto t = linspace(c.t_min(), c.t_max(), n);
+    std::vector<v3> out(n);
+    for (auto _ : state) {
+        c.evaluate(std::span<const double>(t), std::span<v3>(out), 0);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(std::int64_t(state.iterations() * n));
+}
+
 // Tessellation at an absolute tolerance of 1e-6 (the walk's steps are ~1).
 // Accuracy: the largest distance from 15 curve points inside every piece to
 // its chord, over the tolerance (must be <= 1).
@@ -633,6 +737,10 @@ BENCHMARK(construct_boost)->Name("construct/boost")->Arg(1000)->Arg(1'000'000)->
 BENCHMARK(uniform_segment_crspline)->Name("uniform_segment/crspline")->Unit(benchmark::kMillisecond);
 BENCHMARK(uniform_segment_glm)->Name("uniform_segment/glm")->Unit(benchmark::kMillisecond);
 BENCHMARK(arc_length)->Name("arc_length")->Unit(benchmark::kMicrosecond);
+BENCHMARK(arc_length_walk)->Name("arc_length_walk20k/crspline")->Unit(benchmark::kMillisecond);
+BENCHMARK(arc_length_walk_gl16)->Name("arc_length_walk20k/gl16")->Unit(benchmark::kMillisecond);
+BENCHMARK(tessellate_walk)->Name("tessellate_walk20k/crspline")->Arg(3)->Arg(5)->Unit(benchmark::kMillisecond);
+BENCHMARK(tessellate_walk_eval)->Name("tessellate_walk20k/eval")->Arg(3)->Arg(5)->Unit(benchmark::kMillisecond);
 BENCHMARK(t_at_arc_length)->Name("t_at_arc_length")->Unit(benchmark::kMillisecond);
 BENCHMARK(tessellate)->Name("tessellate")->Unit(benchmark::kMillisecond);
 BENCHMARK(nearest)->Name("nearest")->Arg(1'000'000)->Unit(benchmark::kMillisecond);
