@@ -309,7 +309,7 @@ public:
     using point = vec<D, T>;
 
     explicit arc_length_table(const catmull_rom<D, T>& curve, T accuracy = T(default_accuracy))
-        : accuracy_(accuracy) {
+        : accuracy_(accuracy), t_max_(curve.t_max()) {
         segments_.reserve(curve.segment_count());
         for (const auto& s : curve.segments()) segments_.push_back(s);
         detail::check_accuracy(accuracy);
@@ -362,6 +362,8 @@ public:
     /// satisfies |s_at(t) - s| <= accuracy * total() up to rounding.
     T t_at(T s) const {
         check_s(s, std::nullopt);
+        // The end is known exactly: no Newton landing within the tolerance.
+        if (s == total_ && !pieces_.empty()) return t_end();
         return t_in_piece(locate_piece(s), s, std::nullopt);
     }
 
@@ -391,6 +393,11 @@ public:
                 t[k] = segments_.front().t0;
                 continue;
             }
+            if (s[k] == total_) {  // the end, exactly (as t_at(s) gives it)
+                t[k] = t_end();
+                anchored = false;
+                continue;
+            }
             if (!anchored) u_a = pieces_[at].u0, s_a = pieces_[at].s0;
             t[k] = t_from_anchor(at, s[k], u_a, s_a);
             anchored = true;
@@ -418,6 +425,9 @@ private:
     std::vector<T> segment_length_;           // length of each segment
     T total_ = 0;
     T accuracy_;
+    T t_max_;  // the curve's t_max, exactly
+
+    T t_end() const noexcept { return t_max_; }
 
     std::size_t locate_segment(T t) const noexcept {
         // Last segment whose t0 <= t (segments are few relative to queries
