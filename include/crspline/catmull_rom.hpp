@@ -766,48 +766,27 @@ template <std::size_t D, class T>
 void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt) {
     const std::size_t n = p.size();
     closed_ = opt.closed;
-    // 1. Validate the input once, here at the boundary.
-    if (n < 2)  // a closed curve through 2 points is a loop of two segments
-        throw invalid_input(std::string(closed_ ? "a closed curve" : "a curve") + " needs at least 2 points, got " +
-                            std::to_string(n));
-    check_finite(p);
-    if (opt.alpha && opt.grid) throw invalid_input("give alpha or grid, not both");
-    if (!(opt.tension >= 0 && opt.tension <= 1))
-        throw invalid_input("tension must be in [0, 1], got " + detail::num(double(opt.tension)));
-    if (closed_ && (opt.start.type != end_condition<D, T>::kind::natural ||
-                    opt.end.type != end_condition<D, T>::kind::natural))
-        throw invalid_input("a closed curve takes no end conditions");
-    for (const auto* e : {&opt.start, &opt.end})
-        if (e->type == end_condition<D, T>::kind::tangent)
-            for (std::size_t k = 0; k < D; ++k)
-                if (!std::isfinite(e->velocity[k]))
-                    throw invalid_input(std::string(e == &opt.start ? "start" : "end") + " tangent coordinate " +
-                                        std::to_string(k) + " is not finite (" +
-                                        detail::num(double(e->velocity[k])) + ")");
-    const std::size_t first_kb = closed_ ? 0 : 1, last_kb = closed_ ? n : n - 1;  // vertices that use TCB
-    const std::pair<const std::vector<T>*, const char*> tcb[3] = {
-        {&opt.kb.tension, "tension"}, {&opt.kb.continuity, "continuity"}, {&opt.kb.bias, "bias"}};
-    for (const auto& [vals, name] : tcb) {
-        if (vals->empty()) continue;
-        if (vals->size() != n)
-            throw invalid_input(std::string("kb ") + name + " has " + std::to_string(vals->size()) +
-                                " values, expected one per point (" + std::to_string(n) + ")");
-        for (std::size_t i = first_kb; i < last_kb; ++i)
-            if (!std::isfinite((*vals)[i]))
-                throw invalid_input(std::string("kb ") + name + "[" + std::to_string(i) + "] is not finite (" +
-                                    detail::num(double((*vals)[i])) + ")");
-    }
+    // 1. Validate the input once, here at the boundary, by the same code
+    //    as crspline::validate(curve_spec) (detail/validate.hpp).
+    const auto end_of = [](const end_condition<D, T>& e) {
+        using k = typename end_condition<D, T>::kind;
+        const detail::end_kind type = e.type == k::tangent   ? detail::end_kind::tangent
+                                      : e.type == k::reflect ? detail::end_kind::reflect
+                                                             : detail::end_kind::natural;
+        return detail::end_view<T>{type, std::span<const T>(e.velocity.data(), D)};
+    };
+    detail::validate_description<T>(
+        n, D, [&](std::size_t i, std::size_t k) { return p[i][k]; }, opt.alpha, opt.grid, closed_,
+        end_of(opt.start), end_of(opt.end), double(opt.tension), opt.kb.tension, opt.kb.continuity, opt.kb.bias);
 
     // 2. Parameterization: knots from alpha, or the given grid, written in
     //    place (one pass over the points, no temporaries).
     points_.assign(p.begin(), p.end());
     const std::size_t nseg = closed_ ? n : n - 1;
     if (opt.grid) {
-        check_grid(std::span<const T>(*opt.grid), nseg + 1, closed_);
         grid_.assign(opt.grid->begin(), opt.grid->end());
     } else {
         const double alpha = opt.alpha.value_or(centripetal);
-        check_alpha(alpha);
         if (opt.strict && alpha > 0) {
             const auto bad = coincident_chords(p, closed_);
             if (!bad.empty()) {
@@ -820,7 +799,7 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
                     msg += ';';
                 }
                 msg.pop_back();
-                throw invalid_input(msg);
+                detail::spec_fail("points", bad.front(), std::nullopt, "", msg);
             }
         }
         grid_.resize(nseg + 1);
@@ -865,6 +844,7 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
     };
     auto tcb_at = [&](const std::vector<T>& a, std::size_t i) { return a.empty() ? T(0) : a[i]; };
     const bool plain = opt.kb.empty();
+    const std::size_t first_kb = closed_ ? 0 : 1, last_kb = closed_ ? n : n - 1;  // vertices that use TCB
     if (last_kb > first_kb) {
         std::size_t before = first_kb == 0 ? nseg - 1 : first_kb - 1;
         point v0 = chord_velocity(before);

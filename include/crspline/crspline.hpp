@@ -15,6 +15,7 @@
 #include "parameterization.hpp"
 #include "point_traits.hpp"
 #include "segment.hpp"
+#include "spec.hpp"
 #include "tessellate.hpp"
 #include "vec.hpp"
 #include "version.hpp"

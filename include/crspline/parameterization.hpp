@@ -20,6 +20,7 @@
 #endif
 
 #include "detail/format.hpp"
+#include "detail/validate.hpp"
 #include "error.hpp"
 #include "vec.hpp"
 
@@ -29,20 +30,14 @@ inline constexpr double uniform = 0.0;      ///< alpha = 0: every knot interval 
 inline constexpr double centripetal = 0.5;  ///< alpha = 1/2: the default; no cusps or loops in a segment
 inline constexpr double chordal = 1.0;      ///< alpha = 1: intervals equal to chord lengths
 
-/// Throws invalid_input unless alpha is a number in [0, 1]. Never clamps.
-inline void check_alpha(double alpha) {
-    if (!(alpha >= 0.0 && alpha <= 1.0))
-        throw invalid_input("alpha must be in [0, 1], got " + detail::num(alpha));
-}
+/// Throws invalid_input (a spec_error) unless alpha is a number in [0, 1]. Never clamps.
+inline void check_alpha(double alpha) { detail::check_alpha_value(alpha); }
 
-/// Throws invalid_input naming the first point and coordinate that is NaN or infinite.
+/// Throws invalid_input (a spec_error) naming the first point and coordinate
+/// that is NaN or infinite.
 template <std::size_t D, class T>
 void check_finite(std::span<const vec<D, T>> points) {
-    for (std::size_t i = 0; i < points.size(); ++i)
-        for (std::size_t k = 0; k < D; ++k)
-            if (!std::isfinite(points[i][k]))
-                throw invalid_input("point " + std::to_string(i) + ", coordinate " + std::to_string(k) +
-                                    " is not finite (" + detail::num(double(points[i][k])) + ")");
+    detail::check_coordinates(points.size(), D, [&](std::size_t i, std::size_t k) { return points[i][k]; });
 }
 
 /// True when the chord from a to b is zero up to rounding: its length is at
@@ -168,23 +163,11 @@ std::vector<T> knots(std::span<const vec<D, T>> p, double alpha, bool closed = f
     return t;
 }
 
-/// Throws invalid_input unless the grid has `expected` finite, strictly
-/// increasing values.
+/// Throws invalid_input (a spec_error) unless the grid has `expected`
+/// finite, strictly increasing values.
 template <class T>
 void check_grid(std::span<const T> grid, std::size_t expected, bool closed) {
-    if (grid.size() != expected)
-        throw invalid_input("grid has " + std::to_string(grid.size()) + " values, expected " +
-                            std::to_string(expected) +
-                            (closed ? " (one per point plus one: a closed curve repeats the first knot)"
-                                    : " (one per point)"));
-    for (std::size_t i = 0; i < grid.size(); ++i) {
-        if (!std::isfinite(grid[i]))
-            throw invalid_input("grid[" + std::to_string(i) + "] is not finite (" + detail::num(double(grid[i])) + ")");
-        if (i > 0 && !(grid[i] > grid[i - 1]))
-            throw invalid_input("grid must be strictly increasing: grid[" + std::to_string(i) + "] = " +
-                                detail::num(double(grid[i])) + " is not greater than grid[" +
-                                std::to_string(i - 1) + "] = " + detail::num(double(grid[i - 1])));
-    }
+    detail::check_grid_values(grid, expected, closed);
 }
 
 }  // namespace crspline
