@@ -17,7 +17,7 @@ output_json run_analyze(const document& input) {
     return with_dimension(spec.dimension, [&](auto dim) {
         constexpr std::size_t D = decltype(dim)::value;
         const catmull_rom<D, double> curve = make_curve<D>(spec);
-        auto coords = [](const vec<D, double>& p) { return std::vector<double>(p.v.begin(), p.v.end()); };
+        auto coords = [&](const vec<D, double>& p) { return cli::coords(p, spec.dimension); };
 
         // 1. Each segment on its own (u local to the segment).
         output_json segments = output_json::array();

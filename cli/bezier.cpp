@@ -17,7 +17,7 @@ output_json run_bezier(const document& input) {
         output_json segments = output_json::array();
         for (const auto& b : curve.bezier()) {
             output_json seg = output_json::array();
-            for (const auto& p : b) seg.push_back(std::vector<double>(p.v.begin(), p.v.end()));
+            for (const auto& p : b) seg.push_back(coords(p, spec.curve.dimension));
             segments.push_back(std::move(seg));
         }
         out["segments"] = std::move(segments);

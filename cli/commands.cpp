@@ -16,7 +16,7 @@ namespace {
     "Input: one JSON object, read from the file 'input', or from stdin when it is '-' or absent;\n"  \
     "or CSV/TSV points (one point per line, see 'Points from CSV'). The options below override\n"  \
     "the JSON fields; with CSV input they are the only way to set them.\n"                        \
-    "  \"points\": [[x, y, ...], ...]   required; 1 to 4 coordinates, the same for every point\n"  \
+    "  \"points\": [[x, y, ...], ...]   required; 1 to 16 coordinates, the same for every point\n" \
     "  \"alpha\": 0.5                   knot exponent in [0, 1] (0 uniform, 0.5 centripetal,\n"    \
     "                                 1 chordal); default 0.5\n"                                   \
     "  \"grid\": [t0, t1, ...]          explicit knots instead of alpha (one per point, one more\n" \
@@ -34,7 +34,7 @@ namespace {
     "                                 not with \"tension\", \"kb\", \"strict\" or end conditions\n"
 
 #define CRSPLINE_CLI_CSV_AND_ERRORS                                                                 \
-    "Points from CSV: one point per line, 1 to 4 numbers; blank lines and '#' lines skipped; a\n"   \
+    "Points from CSV: one point per line, 1 to 16 numbers; blank lines and '#' lines skipped; a\n"   \
     "first line without numbers is a header; delimiter , ; tab or blanks (detected, or\n"          \
     "--delimiter); --columns x,y (header names) or --columns 2,3 (numbered from 1) chooses\n"     \
     "columns. The format comes from --input-format, else the extension (.json, .csv, .tsv),\n"   \

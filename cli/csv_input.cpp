@@ -3,6 +3,8 @@
 // allocation per line): ten million points load in a few seconds.
 #include "csv_input.hpp"
 
+#include <crspline/dispatch.hpp>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -131,13 +133,15 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
             const bool header = std::none_of(fields.begin(), fields.end(),
                                              [](const field& f) { return parse_number(f.text).has_value(); });
             if (opt.columns.empty()) {
-                if (nfields > 4)
-                    throw input_error(where(in, line_no, fields[4].begin + 1) + "expected 1 to 4 columns, got " +
+                if (nfields > max_runtime_dimension)
+                    throw input_error(where(in, line_no, fields[max_runtime_dimension].begin + 1) +
+                                      "expected 1 to " + std::to_string(max_runtime_dimension) + " columns, got " +
                                       std::to_string(nfields) + " (choose some with --columns)");
                 for (std::size_t k = 0; k < nfields; ++k) chosen.push_back(k);
             } else {
-                if (opt.columns.size() > 4)
-                    throw input_error("--columns: expected 1 to 4 columns, got " + std::to_string(opt.columns.size()));
+                if (opt.columns.size() > max_runtime_dimension)
+                    throw input_error("--columns: expected 1 to " + std::to_string(max_runtime_dimension) +
+                                      " columns, got " + std::to_string(opt.columns.size()));
                 for (const std::string& c : opt.columns) {
                     const bool numeric = !c.empty() && std::all_of(c.begin(), c.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
                     if (numeric) {

@@ -4,7 +4,7 @@
 // CSV rules: one point per line; blank lines and lines starting with '#' are
 // skipped; the first line is a header when none of its fields is a number;
 // the delimiter is ',' ';' tab or blanks, detected from the first line unless
-// given; fields may be quoted ("1.5"); 1 to 4 columns, or the columns chosen
+// given; fields may be quoted ("1.5"); 1 to 16 columns, or the columns chosen
 // by name (needs the header) or by 1-based index. Every line has the same
 // number of fields as the first one. Errors name the file, line and column:
 //   data.csv: line 7, column 9: expected a finite number, got "abc"
@@ -25,7 +25,7 @@ struct csv_options {
     std::vector<std::string> columns;  ///< names or 1-based indices; empty: every column
 };
 
-/// The points of a CSV text (validated: finite, 1 to 4 coordinates each).
+/// The points of a CSV text (validated: finite, 1 to 16 coordinates each).
 point_set parse_csv(const input_text& in, const csv_options& opt);
 
 /// "," ";" "|" "tab" "\t" "space" (blanks) -> the delimiter; throws

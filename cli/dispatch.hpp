@@ -2,10 +2,13 @@
 //
 // The library fixes the dimension at compile time (catmull_rom<D, T>); the
 // input fixes it at run time. with_dimension() calls a generic lambda with
-// std::integral_constant<std::size_t, D> for D = 1..4, and make_curve<D>()
-// builds the curve from the run-time description.
+// std::integral_constant<std::size_t, D> for the storage dimension (the
+// input's for 1..4, the zero-padded wide curve of 16 for 5..16; see
+// crspline/dispatch.hpp), and make_curve<D>() builds the curve from the
+// run-time description.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -15,6 +18,7 @@
 
 #include <crspline/crspline.hpp>
 #include <crspline/dispatch.hpp>
+#include <crspline/spec.hpp>
 
 #include "json_input.hpp"
 
@@ -22,71 +26,68 @@ namespace crspline::cli {
 
 inline constexpr std::size_t max_dimension = max_runtime_dimension;
 
-/// f(std::integral_constant<std::size_t, D>{}) for the given dimension 1..4
+/// f(std::integral_constant<std::size_t, D>{}) for the given dimension 1..16
 /// (crspline::with_dimension with the CLI's error).
 template <class F>
 decltype(auto) with_dimension(std::size_t dimension, F&& f) {
     return crspline::with_dimension(dimension, std::forward<F>(f), [](std::size_t d) {
-        throw input_error("points: expected 1 to 4 coordinates per point, got " + std::to_string(d));
+        throw input_error("points: expected 1 to " + std::to_string(max_dimension) + " coordinates per point, got " + std::to_string(d));
     });
 }
 
-/// The coordinates of a run-time point as a vec<D> (the size was validated).
-template <std::size_t D>
-vec<D, double> to_point(const std::vector<double>& c) {
-    vec<D, double> p;
-    for (std::size_t k = 0; k < D; ++k) p[k] = c[k];
-    return p;
+/// The core's specification of a validated description.
+inline crspline::curve_spec to_core_spec(const curve_spec& c) {
+    const auto end_of = [](const end_spec& e) {
+        crspline::end_spec r;
+        r.type = e.type == end_spec::kind::tangent   ? crspline::end_spec::kind::tangent
+                 : e.type == end_spec::kind::reflect ? crspline::end_spec::kind::reflect
+                                                     : crspline::end_spec::kind::natural;
+        r.velocity = e.velocity;
+        return r;
+    };
+    crspline::curve_spec s;
+    s.dimension = c.dimension;
+    s.points = c.coords;
+    s.alpha = c.alpha;
+    s.grid = c.grid;
+    s.closed = c.closed;
+    if (!c.closed) s.start = end_of(c.start), s.end = end_of(c.end);
+    s.tension = c.tension;
+    s.kb = {c.kb_tension, c.kb_continuity, c.kb_bias};
+    s.strict = c.strict;
+    return s;
 }
 
-template <std::size_t D>
-end_condition<D, double> to_end_condition(const end_spec& e) {
-    switch (e.type) {
-        case end_spec::kind::reflect: return end_condition<D, double>::reflect();
-        case end_spec::kind::tangent: return end_condition<D, double>::tangent(to_point<D>(e.velocity));
-        case end_spec::kind::natural: break;
-    }
-    return end_condition<D, double>::natural();
-}
-
-/// The library's options for a validated description.
-template <std::size_t D>
-options<D, double> to_options(const curve_spec& c) {
-    options<D, double> opt;
-    opt.alpha = c.alpha;
-    opt.grid = c.grid;
-    opt.closed = c.closed;
-    if (!c.closed) {
-        opt.start = to_end_condition<D>(c.start);
-        opt.end = to_end_condition<D>(c.end);
-    }
-    opt.tension = c.tension;
-    opt.kb.tension = c.kb_tension;
-    opt.kb.continuity = c.kb_continuity;
-    opt.kb.bias = c.kb_bias;
-    opt.strict = c.strict;
-    return opt;
-}
-
-/// Builds the curve; the library throws invalid_input for what the
-/// description cannot rule out by itself (coincident points in strict mode).
+/// Builds the curve of storage dimension D (the description's own, or the
+/// zero-padded wide one, see crspline/dispatch.hpp); the library throws
+/// invalid_input for what the description cannot rule out by itself
+/// (coincident points in strict mode).
 template <std::size_t D>
 catmull_rom<D, double> make_curve(const curve_spec& c) {
-    std::vector<vec<D, double>> pts;
-    pts.resize(c.point_count());
-    for (std::size_t i = 0; i < pts.size(); ++i)
-        for (std::size_t k = 0; k < D; ++k) pts[i][k] = c.coords[i * D + k];
     if (!c.tangents_out.empty()) {
-        // Given tangents: the Hermite curve on the given grid or alpha's knots.
-        std::vector<vec<D, double>> out(pts.size()), in(pts.size());
+        // Given tangents: the Hermite curve on the given grid or alpha's
+        // knots (coordinates past the description's dimension stay zero).
+        const std::size_t dim = c.dimension, n = c.point_count();
+        std::vector<vec<D, double>> pts(n), out(n), in(n);
         const std::vector<double>& given_in = c.tangents_in.empty() ? c.tangents_out : c.tangents_in;
-        for (std::size_t i = 0; i < pts.size(); ++i)
-            for (std::size_t k = 0; k < D; ++k) out[i][k] = c.tangents_out[i * D + k], in[i][k] = given_in[i * D + k];
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t k = 0; k < dim && k < D; ++k) {
+                pts[i][k] = c.coords[i * dim + k];
+                out[i][k] = c.tangents_out[i * dim + k];
+                in[i][k] = given_in[i * dim + k];
+            }
         const std::span<const vec<D, double>> p(pts);
         const std::vector<double> grid = c.grid ? *c.grid : knots(p, c.alpha.value_or(centripetal), c.closed);
         return catmull_rom<D, double>::hermite(p, out, in, grid, c.closed);
     }
-    return catmull_rom<D, double>(std::span<const vec<D, double>>(pts), to_options<D>(c));
+    return crspline::make_curve<D, double>(to_core_spec(c));
+}
+
+/// The first `dimension` coordinates of a point: the input's own, without the
+/// padding of a wide curve.
+template <std::size_t D>
+std::vector<double> coords(const vec<D, double>& p, std::size_t dimension) {
+    return std::vector<double>(p.v.begin(), p.v.begin() + std::ptrdiff_t(std::min(dimension, D)));
 }
 
 }  // namespace crspline::cli

@@ -14,9 +14,9 @@ namespace crspline::cli {
 namespace {
 
 template <std::size_t D>
-output_json points_json(const std::vector<vec<D, double>>& pts) {
+output_json points_json(const std::vector<vec<D, double>>& pts, std::size_t dimension) {
     output_json a = output_json::array();
-    for (const auto& p : pts) a.push_back(std::vector<double>(p.v.begin(), p.v.end()));
+    for (const auto& p : pts) a.push_back(coords(p, dimension));
     return a;
 }
 
@@ -52,7 +52,7 @@ output_json run_eval(const document& input) {
         out["grid"] = std::vector<double>(curve.grid().begin(), curve.grid().end());
         output_json values = output_json::object();
         for (const int order : spec.derivatives)
-            values[std::to_string(order)] = points_json<D>(curve.evaluate(std::span<const double>(t), order));
+            values[std::to_string(order)] = points_json<D>(curve.evaluate(std::span<const double>(t), order), spec.curve.dimension);
         if (spec.s) out["t_of_s"] = t_of_s;
         out["values"] = std::move(values);
         return out;

@@ -2,6 +2,8 @@
 // validation of the JSON contract. See json_input.hpp.
 #include "json_input.hpp"
 
+#include <crspline/dispatch.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cerrno>
@@ -147,7 +149,7 @@ private:
 
     // A number on the fast path; false when it is not (the caller adds it).
     bool number(double v) {
-        if (fast_ == fast::on && fast_depth_ == 2 && fast_count_ < 4) {
+        if (fast_ == fast::on && fast_depth_ == 2 && fast_count_ < max_runtime_dimension) {
             flat->coords.push_back(v);
             ++fast_count_;
             return true;
@@ -438,8 +440,9 @@ curve_spec parse_curve(const document& doc, std::string_view command, std::initi
     for (std::size_t i = 0; i < pts.size(); ++i) {
         const std::string at = index("points", i);
         const json& p = array(pts[i], at, "coordinates");
-        if (i == 0 && (p.empty() || p.size() > 4))
-            fail(at, "expected 1 to 4 coordinates, got " + std::to_string(p.size()));
+        if (i == 0 && (p.empty() || p.size() > max_runtime_dimension))
+            fail(at, "expected 1 to " + std::to_string(max_runtime_dimension) + " coordinates, got " +
+                         std::to_string(p.size()));
         if (i > 0 && p.size() != c.dimension)
             fail(at, "expected " + std::to_string(c.dimension) + " coordinates like points[0], got " +
                          std::to_string(p.size()));

@@ -35,7 +35,7 @@ struct input_text {
 input_text read_input(const std::string& path);
 
 /// Points stored flat: point i is coords[i * dimension .. (i + 1) * dimension).
-/// Every coordinate is finite and every point has the same dimension 1..4.
+/// Every coordinate is finite and every point has the same dimension 1..16.
 struct point_set {
     std::size_t dimension = 0;
     std::vector<double> coords;
@@ -57,7 +57,7 @@ struct document {
 nlohmann::json parse_json(const input_text& in);
 
 /// Like parse_json, but a well-formed "points" array at the top level (arrays
-/// of 1 to 4 numbers, all the same length) is read into document::points
+/// of 1 to 16 numbers, all the same length) is read into document::points
 /// without building a JSON tree for it: ten million points load in seconds.
 /// Anything else in "points" falls back to the tree, so that validation
 /// reports it exactly as parse_json's tree would.
@@ -72,7 +72,7 @@ struct end_spec {
 
 /// Everything needed to build a curve, in run-time form.
 struct curve_spec {
-    std::size_t dimension = 0;        ///< 1..4
+    std::size_t dimension = 0;        ///< 1..16
     std::vector<double> coords;       ///< the points, flat (point_set layout)
     std::size_t point_count() const noexcept { return dimension == 0 ? 0 : coords.size() / dimension; }
     std::optional<double> alpha;      ///< none with a grid; default 0.5 otherwise

@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
     using namespace crspline::cli;
 
     CLI::App app{std::string("crspline ") + crspline::version +
-                 ": cubic Catmull-Rom curves through points in 1 to 4 dimensions. "
+                 ": cubic Catmull-Rom curves through points in 1 to 16 dimensions. "
                  "Reads JSON or CSV points, writes JSON, CSV, SVG or PNG.",
                  "crspline"};
     app.set_version_flag("--version", std::string("crspline ") + crspline::version, "Print the version and exit");

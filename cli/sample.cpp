@@ -47,7 +47,7 @@ output_json run_sample(const document& input) {
         }
         out["t"] = t;
         output_json pts = output_json::array();
-        for (const auto& p : points) pts.push_back(std::vector<double>(p.v.begin(), p.v.end()));
+        for (const auto& p : points) pts.push_back(coords(p, spec.curve.dimension));
         out["points"] = std::move(pts);
         return out;
     });

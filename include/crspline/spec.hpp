@@ -75,16 +75,16 @@ inline void validate(const curve_spec& s) {
         s.grid, s.closed, end_of(s.start), end_of(s.end), s.tension, s.kb.tension, s.kb.continuity, s.kb.bias);
 }
 
-/// The library's options for a specification of dimension D (validate()
-/// first: the velocities are read as D coordinates).
+/// The library's options for a curve of dimension D from a validated
+/// specification of dimension D or less (end tangents padded with zeros).
 template <std::size_t D, class T = double>
 options<D, T> to_options(const curve_spec& s) {
     const auto end_of = [](const end_spec& e) {
         switch (e.type) {
             case end_spec::kind::reflect: return end_condition<D, T>::reflect();
             case end_spec::kind::tangent: {
-                vec<D, T> v;
-                for (std::size_t k = 0; k < D; ++k) v[k] = T(e.velocity[k]);
+                vec<D, T> v{};
+                for (std::size_t k = 0; k < D && k < e.velocity.size(); ++k) v[k] = T(e.velocity[k]);
                 return end_condition<D, T>::tangent(v);
             }
             case end_spec::kind::natural: break;
@@ -105,16 +105,21 @@ options<D, T> to_options(const curve_spec& s) {
 }
 
 /// Builds the curve a specification describes; throws spec_error for a bad
-/// one (also when D is not its dimension).
+/// one. D may exceed the specification's dimension: the points (and end
+/// tangents) are then padded with zero coordinates, which leaves the first
+/// coordinates exactly as a curve of the specification's own dimension has
+/// them (see dispatch.hpp); D below it is an error.
 template <std::size_t D, class T = double>
 catmull_rom<D, T> make_curve(const curve_spec& s) {
     validate(s);
-    if (s.dimension != D)
-        detail::spec_fail("dimension", std::nullopt, std::nullopt, std::to_string(s.dimension),
-                          "dimension is " + std::to_string(s.dimension) + ", expected " + std::to_string(D));
+    const std::size_t d = s.dimension;
+    if (d > D)
+        detail::spec_fail("dimension", std::nullopt, std::nullopt, std::to_string(d),
+                          "dimension is " + std::to_string(d) + ", more than the " + std::to_string(D) +
+                              " of the curve type");
     std::vector<vec<D, T>> pts(s.point_count());
     for (std::size_t i = 0; i < pts.size(); ++i)
-        for (std::size_t k = 0; k < D; ++k) pts[i][k] = T(s.points[i * D + k]);
+        for (std::size_t k = 0; k < d; ++k) pts[i][k] = T(s.points[i * d + k]);
     return catmull_rom<D, T>(std::span<const vec<D, T>>(pts), to_options<D, T>(s));
 }
 

@@ -288,3 +288,41 @@ TEST(Reference, ThreeJsAndD3) {
 }
 
 }  // namespace
+
+namespace {
+
+// seven_d.json: the numbers every front end must give for a 7-D curve are
+// catmull_rom<7, double>'s, exactly (the file's decimal forms read back to
+// the same doubles).
+TEST(Reference, SevenDimensions) {
+    const json data = load("seven_d.json");
+    const json& in = data.at("input");
+    const auto pts = to_points<7>(in.at("points"));
+    options<7> opt;
+    opt.alpha = in.at("alpha").get<double>();
+    opt.tension = in.at("tension").get<double>();
+    ASSERT_EQ(in.at("end").at("start"), "reflect");
+    opt.start = end_condition<7>::reflect();
+    opt.end = end_condition<7>::tangent(to_point<7>(in.at("end").at("end")));
+    for (const auto& b : in.at("kb").at("bias")) opt.kb.bias.push_back(b.is_null() ? 0.0 : b.get<double>());
+    const catmull_rom<7> c(std::span<const vec<7>>(pts), opt);
+    const auto grid = data.at("grid").get<std::vector<double>>();
+    ASSERT_EQ(grid.size(), c.grid().size());
+    for (std::size_t i = 0; i < grid.size(); ++i) EXPECT_EQ(grid[i], c.grid()[i]) << "knot " << i;
+    const auto t = in.at("t").get<std::vector<double>>();
+    ASSERT_EQ(t.size(), 21u);
+    for (int order = 0; order <= 2; ++order) {
+        const json& v = data.at("values").at(std::to_string(order));
+        ASSERT_EQ(v.size(), t.size());
+        // The batch call, as the front ends make it (its sorted walk may
+        // differ from the one-point call in the last bit of a derivative).
+        const auto batch = c.evaluate(std::span<const double>(t), order);
+        for (std::size_t j = 0; j < t.size(); ++j) {
+            const auto& p = batch[j];
+            for (std::size_t k = 0; k < 7; ++k)
+                EXPECT_EQ(v[j].at(k).get<double>(), p[k]) << "order " << order << " t[" << j << "] coordinate " << k;
+        }
+    }
+}
+
+}  // namespace

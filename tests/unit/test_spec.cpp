@@ -3,6 +3,8 @@
 // curve as the compile-time API.
 #include "test_support.hpp"
 
+#include <crspline/arc_length.hpp>
+#include <crspline/dispatch.hpp>
 #include <crspline/spec.hpp>
 
 #include <cmath>
@@ -148,7 +150,38 @@ TEST(Spec, SevenDimensionsBuildTheCompileTimeCurve) {
     const catmull_rom<7> b(std::span<const vec<7>>(pts), opt);
     for (double t = a.t_min(); t <= a.t_max(); t += 0.01)
         for (int order = 0; order <= 3; ++order) EXPECT_EQ(a.evaluate(t, order), b.evaluate(t, order));
-    EXPECT_THROW((void)make_curve<3>(s), spec_error);
+    EXPECT_THROW((void)make_curve<3>(s), spec_error);  // never cut to fewer coordinates
+}
+
+// Dimensions 5..16 run as one wide curve of 16 coordinates, zero-padded
+// (dispatch.hpp): its first 7 coordinates are catmull_rom<7>'s, bit for bit,
+// for positions, derivatives, knots, Bezier points and arc length.
+TEST(Spec, PaddedWideCurveGivesTheSameNumbers) {
+    static_assert(storage_dimension(7) == wide_dimension && storage_dimension(3) == 3);
+    curve_spec s;
+    s.dimension = 7;
+    for (int i = 0; i < 9; ++i)
+        for (int k = 0; k < 7; ++k) s.points.push_back(std::cos(0.9 * i - 0.4 * k) * (1 + k % 3) + 0.1 * i);
+    s.end = {end_spec::kind::tangent, {1, -2, 0.5, 0, 3, 1, -1}};
+    s.kb.bias = {0, 0.25, -0.5, 0, 0, 0.1, 0, 0.3, 0};
+    const auto narrow = make_curve<7>(s);
+    const auto wide = make_curve<wide_dimension>(s);
+    ASSERT_EQ(narrow.segment_count(), wide.segment_count());
+    for (std::size_t i = 0; i < narrow.grid().size(); ++i) EXPECT_EQ(narrow.grid()[i], wide.grid()[i]);
+    for (double t = narrow.t_min(); t <= narrow.t_max(); t += 0.003)
+        for (int order = 0; order <= 3; ++order) {
+            const auto a = narrow.evaluate(t, order);
+            const auto b = wide.evaluate(t, order);
+            for (std::size_t k = 0; k < 7; ++k) ASSERT_EQ(a[k], b[k]) << "t " << t << " order " << order;
+            for (std::size_t k = 7; k < wide_dimension; ++k) ASSERT_EQ(b[k], 0.0);
+        }
+    for (std::size_t i = 0; i < narrow.segment_count(); ++i)
+        for (std::size_t j = 0; j < 4; ++j)
+            for (std::size_t k = 0; k < 7; ++k) EXPECT_EQ(narrow.bezier(i)[j][k], wide.bezier(i)[j][k]);
+    EXPECT_EQ(arc_length_table<7>(narrow, 1e-12).total(), arc_length_table<wide_dimension>(wide, 1e-12).total());
+    // Narrower than the specification: refused, never cut.
+    EXPECT_EQ(catch_spec_error([&] { (void)make_curve<4>(s); }).what,
+              "dimension is 7, more than the 4 of the curve type");
 }
 
 }  // namespace
