@@ -27,17 +27,27 @@ namespace crspline::python {
 
 namespace py = pybind11;
 
-/// Dimensions compiled into the module.
-inline constexpr std::size_t max_dimension = max_runtime_dimension;
+/// Dimensions compiled into the module: the exact ones of
+/// crspline::with_dimension (the wide, zero-padded path for 5..16 that the
+/// command line uses is not wired into the module yet).
+inline constexpr std::size_t max_dimension = max_exact_dimension;
 
-/// f(std::integral_constant<std::size_t, D>{}) for D = 1..max_dimension
-/// (crspline::with_dimension with the module's error).
+/// f(std::integral_constant<std::size_t, D>{}) for D = 1..max_dimension,
+/// else the module's error.
 template <class F>
 decltype(auto) with_dimension(std::size_t dimension, F&& f) {
-    return crspline::with_dimension(dimension, std::forward<F>(f), [](std::size_t d) {
+    const auto unsupported = [](std::size_t d) {
         throw invalid_input("points must have 1 to " + std::to_string(max_dimension) +
                             " coordinates each, got " + std::to_string(d));
-    });
+    };
+    switch (dimension) {
+        case 1: return std::forward<F>(f)(std::integral_constant<std::size_t, 1>{});
+        case 2: return std::forward<F>(f)(std::integral_constant<std::size_t, 2>{});
+        case 3: return std::forward<F>(f)(std::integral_constant<std::size_t, 3>{});
+        case 4: return std::forward<F>(f)(std::integral_constant<std::size_t, 4>{});
+        default: unsupported(dimension);
+    }
+    throw invalid_input("unreachable");  // unsupported() throws
 }
 
 /// f(T{}) for the scalar of a NumPy array that is float32 or float64.
