@@ -22,6 +22,7 @@
 #include <crspline/intersections.hpp>
 
 #include <cmath>
+#include <limits>
 #include <cstddef>
 #include <exception>
 #include <optional>
@@ -156,13 +157,15 @@ cr::options<D> options_from(const val& o) {
     opt.end = end_from<D>(o["end"], "end");
     const val kb = o["kb"];
     if (!is_nullish(kb)) {
-        // null entries (the ends of an open curve) read as 0.
+        // null entries read as NaN: the core ignores the value at the two
+        // ends of an open curve and rejects it anywhere else ("kb tension[2]
+        // is not finite (nan)"), as the command line rejects null there.
         auto tcb = [&](const char* key) {
             std::vector<double> out;
             const val a = kb[key];
             if (is_nullish(a)) return out;
             const std::size_t n = a["length"].as<std::size_t>();
-            for (std::size_t i = 0; i < n; ++i) out.push_back(is_nullish(a[i]) ? 0.0 : a[i].as<double>());
+            for (std::size_t i = 0; i < n; ++i) out.push_back(is_nullish(a[i]) ? std::numeric_limits<double>::quiet_NaN() : a[i].as<double>());
             return out;
         };
         opt.kb.tension = tcb("tension");

@@ -186,11 +186,18 @@ test('errors: a C++ exception arrives as a JavaScript Error with the core messag
     [() => withSpline([[0, 0], [1, 1]], 2, {}, (s) => s.bezier(3)), /segment index 3 is outside/],
     [() => withSpline([[0, 0], [1, 1]], 2, {}, (s) => s.tAtArcLength(-1)), /./],
     [() => withSpline([[0, 0, 0], [1, 1, 1]], 3, {}, (s) => s.curvatureComb(4)), /needs a plane curve/],
+    // null Kochanek-Bartels values: only at the ends of an open curve, as in the CLI.
+    [() => new M.Spline([[0, 0], [1, 1], [2, 0]], 2, { kb: { bias: [0, null, 0] } }), /kb bias\[1\] is not finite \(nan\)/],
   ];
   for (const [f, message] of cases) assert.throws(f, (e) => e instanceof Error && message.test(e.message), String(message));
   // The module is still usable after the errors.
   withSpline([[0, 0], [1, 1]], 2, {}, (s) => assert.deepEqual(Array.from(s.evaluate(0)), [0, 0]));
-  assert.equal(cases.length, 15);
+  // null at the two ends of an open curve is ignored: the curve with 0 there.
+  const ends = [[0, 0], [1, 1], [2, 0], [3, 1]];
+  withSpline(ends, 2, { kb: { bias: [null, 0.5, 0.25, null] } }, (a) =>
+    withSpline(ends, 2, { kb: { bias: [0, 0.5, 0.25, 0] } }, (b) =>
+      assert.deepEqual(Array.from(a.evaluate(1.7)), Array.from(b.evaluate(1.7)))));
+  assert.equal(cases.length, 16);
 });
 
 test('analysis: the uniform cusp, centripetal certificate, a crossing found exactly', () => {
