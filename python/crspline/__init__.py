@@ -19,7 +19,7 @@ Conventions (those of the C++ library and of the ``splines`` package):
   (0 uniform, 0.5 centripetal, 1 chordal). A closed curve does not repeat its
   first point and has one more knot than points.
 * float32 points give a float32 curve (float32 results); anything else real
-  gives float64. Dimensions 1 to ``max_dimension`` (4).
+  gives float64. Dimensions 1 to ``max_dimension`` (16).
 * Errors: bad values raise ``ValueError`` (``InvalidInput`` or, for a
   parameter outside the domain, ``OutOfDomain``, both subclasses of
   ``ValueError``) with the core's message; arguments of the wrong kind raise
@@ -59,6 +59,7 @@ chordal = 1.0
 default_accuracy = float(_crspline.default_accuracy)
 #: Largest dimension compiled into the module.
 max_dimension = int(_crspline.max_dimension)
+_MAX_EXACT_DIMENSION = 4  # 1..4 are curves of exactly that dimension; 5..max_dimension one wide, padded one
 
 
 class _DefaultAlpha(float):
@@ -173,7 +174,7 @@ class CatmullRom:
     Parameters
     ----------
     points : array_like, shape (N, dim) or (N,)
-        The points, dim 1 to 4 (a flat sequence is N points in 1-D). float32
+        The points, dim 1 to 16 (a flat sequence is N points in 1-D). float32
         input makes a float32 curve; other real input float64.
     alpha : float or None, default 0.5
         Knot exponent in [0, 1]: 0 uniform, 0.5 centripetal, 1 chordal.
@@ -203,7 +204,7 @@ class CatmullRom:
         Arguments of the wrong kind (strings or complex numbers as points, ...).
     """
 
-    __slots__ = ("_c", "_grid", "_points", "_tables")
+    __slots__ = ("_c", "_dim", "_grid", "_points", "_tables")
 
     def __init__(self, points, *, alpha=_DEFAULT_ALPHA, grid=None, endconditions="natural", tension=0.0,
                  strict=False):
@@ -217,13 +218,37 @@ class CatmullRom:
         self._build(pts, alpha, grid, endconditions, _real(tension, "tension"), ([], [], []), bool(strict))
 
     def _build(self, pts, alpha, grid, endconditions, tension, kb, strict):
-        closed, start, end = _parse_endconditions(endconditions, pts.shape[1])
+        dim = pts.shape[1]
+        closed, start, end = _parse_endconditions(endconditions, dim)
         grid = None if grid is None else _as_vector(grid, "grid")
+        if _MAX_EXACT_DIMENSION < dim <= max_dimension:
+            # 5 to 16 coordinates: one wide curve of 16, zero-padded; each
+            # coordinate is computed on its own and the zeros add exact zeros
+            # to norms, so the first dim coordinates of every result are the
+            # ones a curve of dimension dim has (results are cut back to them).
+            wide = _np.zeros((len(pts), max_dimension), dtype=pts.dtype)
+            wide[:, :dim] = pts
+            pts = wide
+            pad = [0.0] * (max_dimension - dim)
+            start = (start[0], None if start[1] is None else start[1] + pad)
+            end = (end[0], None if end[1] is None else end[1] + pad)
+        self._dim = dim
         self._c = _crspline._make_curve(pts, alpha, grid, start[0], start[1], end[0], end[1], closed, tension,
                                         kb[0], kb[1], kb[2], strict)
         self._grid = _readonly(self._c.grid)
-        self._points = _readonly(self._c.points)
+        self._points = _readonly(self._cut(self._c.points))
         self._tables = {}
+
+    def _cut(self, a):
+        """Results of a wide (zero-padded) curve cut back to the curve's own coordinates."""
+        if self._dim == self._c.dim:
+            return a
+        return _np.ascontiguousarray(a[..., :self._dim])
+
+    def _low_dimension_only(self, what):
+        """The wide curve must not answer questions whose answer depends on its padded dimension."""
+        if self._dim != self._c.dim:
+            raise InvalidInput(what.format(self._dim))
 
     # ------------------------------------------------------------ attributes
     @property
@@ -239,7 +264,7 @@ class CatmullRom:
     @property
     def dim(self):
         """The dimension of the points."""
-        return self._c.dim
+        return self._dim
 
     @property
     def closed(self):
@@ -278,27 +303,27 @@ class CatmullRom:
         C++ with the GIL released. Raises ``OutOfDomain`` (a ``ValueError``)
         naming the first t outside ``domain`` (its index in ``t.ravel()``).
         """
-        return self._c.evaluate(self._t(t), _operator.index(n))
+        return self._cut(self._c.evaluate(self._t(t), _operator.index(n)))
 
     __call__ = evaluate
 
     def evaluate_unchecked(self, t, n=0):
         """Like ``evaluate``, but t outside the domain extrapolates the first
         or last segment's cubic instead of raising (NaN gives NaN)."""
-        return self._c.evaluate_unchecked(self._t(t), _operator.index(n))
+        return self._cut(self._c.evaluate_unchecked(self._t(t), _operator.index(n)))
 
     def to_bezier(self):
         """Bézier control points of every segment, shape (segment_count, 4, dim).
 
         ``B0`` and ``B3`` are the segment's points exactly; ``B1``, ``B2`` come
         from the Hermite tangents (``B1 = B0 + h/3 x'(t_i)``)."""
-        return self._c.bezier()
+        return self._cut(self._c.bezier())
 
     def tangents(self):
         """dx/dt at the start and end of every segment, shape (segment_count, 2, dim).
 
         Equal at interior knots unless Kochanek-Bartels continuity breaks them."""
-        return self._c.tangents()
+        return self._cut(self._c.tangents())
 
     def segment_index(self, t):
         """Index of the segment that owns each t (clamped to the first and last);
@@ -353,7 +378,7 @@ class CatmullRom:
             raise ValueError(f"need at least 2 samples, got {n}")
         if by == "arc_length":
             t, s, p = self._c.sample_arc_length(n, _real(accuracy, "accuracy"))
-            return {"t": t, "s": s, "points": p}
+            return {"t": t, "s": s, "points": self._cut(p)}
         if by == "t":
             lo, hi = self._grid[0], self._grid[-1]
             t = _np.linspace(lo, hi, n).astype(self.dtype)
@@ -376,7 +401,7 @@ class CatmullRom:
         ``points[k] == evaluate(t[k])`` exactly."""
         f = self._need("tessellate", "tessellate.hpp")
         points, t = f(None if tolerance is None else _real(tolerance, "tolerance"))
-        return {"points": points, "t": t}
+        return {"points": self._cut(points), "t": t}
 
     def bounding_box(self, *, tight=True):
         """Axis-aligned box of the curve as an array [[lo...], [hi...]], shape (2, dim).
@@ -384,7 +409,7 @@ class CatmullRom:
         ``tight=True``: every face touches the curve (interior extrema found
         exactly). ``tight=False``: the box of the Bézier control points, which
         contains the curve."""
-        return self._need("bounding_box", "bounds.hpp")(bool(tight))
+        return self._cut(self._need("bounding_box", "bounds.hpp")(bool(tight)))
 
     def nearest(self, points):
         """Nearest point of the curve to each query point.
@@ -400,8 +425,14 @@ class CatmullRom:
             q = q.reshape(1)
         if q.ndim == 0 or q.shape[-1] != self.dim:
             raise ValueError(f"query points must have shape (..., {self.dim}), got {q.shape}")
-        t, d2, seg, p = f(_np.ascontiguousarray(q.reshape(-1, self.dim), dtype=self.dtype))
         shape = q.shape[:-1]
+        q = _np.ascontiguousarray(q.reshape(-1, self.dim), dtype=self.dtype)
+        if self._dim != self._c.dim:
+            wide = _np.zeros((len(q), self._c.dim), dtype=self.dtype)
+            wide[:, :self._dim] = q
+            q = wide
+        t, d2, seg, p = f(q)
+        p = self._cut(p)
         return {"t": _scalar_or_array(t.reshape(shape)), "distance_sq": _scalar_or_array(d2.reshape(shape)),
                 "segment": _scalar_or_array(seg.reshape(shape)), "point": p.reshape(shape + (self.dim,))}
 
@@ -414,10 +445,12 @@ class CatmullRom:
 
     def signed_curvature(self, t):
         """Signed curvature of a plane curve (2-D only): positive turning left."""
+        self._low_dimension_only("signed curvature needs a 2-D curve, this one is {}-D")
         return _scalar_or_array(self._need("signed_curvature", "frames.hpp")(self._t(t)))
 
     def torsion(self, t):
         """Torsion det(x', x'', x''') / |x' ^ x''|^2 of a space curve (3-D only)."""
+        self._low_dimension_only("torsion needs a 3-D curve, this one is {}-D")
         return _scalar_or_array(self._need("torsion", "frames.hpp")(self._t(t)))
 
     def frames(self, t, *, kind="rotation_minimizing", initial_normal=None):
@@ -430,6 +463,9 @@ class CatmullRom:
         'binormal'}``, each of shape (len(t), dim); the binormal is zero in
         2-D."""
         f = self._need("frames", "frames.hpp")
+        if kind == "frenet":
+            self._low_dimension_only("Frenet frames need a 3-D curve, this one is {}-D")
+        self._low_dimension_only("rotation-minimizing frames need a 2-D or 3-D curve, this one is {}-D")
         tt = self._t(t)
         if tt.ndim != 1:
             raise ValueError(f"t must be a 1-D array for frames, got shape {tt.shape}")
@@ -462,6 +498,8 @@ class CatmullRom:
           meeting found by the whole-curve search.
         """
         segments = self._need("analyze", "analysis.hpp")()
+        for s in segments:
+            s["bezier"] = self._cut(s["bezier"])
         cusp_t = _np.concatenate([s["cusp_t"] for s in segments]) if segments else _np.empty(0, self.dtype)
         found = self.intersections() if intersections else None
         return {
@@ -483,7 +521,9 @@ class CatmullRom:
         segments, 'complete': bool, 'any': bool}``. ``complete`` is False if
         a pair of segments exhausted the search's work budget."""
         f = self._need("intersections", "intersections.hpp")
-        return f(None if tolerance is None else _real(tolerance, "tolerance"))
+        found = f(None if tolerance is None else _real(tolerance, "tolerance"))
+        found["point"] = self._cut(found["point"])
+        return found
 
     def certify_intersection_free(self, *, safe_angle=None, search_on_failure=True, tolerance=None):
         """Section 5's certificate that the curve does not intersect itself.
@@ -497,7 +537,10 @@ class CatmullRom:
         (as ``intersections()``) say whether it really does."""
         f = self._need("certify_intersection_free", "certify.hpp")
         angle = _crspline.safe_adjacent_angle if safe_angle is None else _real(safe_angle, "safe_angle")
-        return f(angle, bool(search_on_failure), None if tolerance is None else _real(tolerance, "tolerance"))
+        cert = f(angle, bool(search_on_failure), None if tolerance is None else _real(tolerance, "tolerance"))
+        if cert.get("search") is not None:
+            cert["search"]["point"] = self._cut(cert["search"]["point"])
+        return cert
 
 
 class KochanekBartels(CatmullRom):

@@ -9,17 +9,15 @@ namespace crspline::python {
 
 namespace {
 
-template <class Tag>
-struct all_tables;
-template <std::size_t... D>
-struct all_tables<std::index_sequence<D...>> {
-    using type = std::variant<arc_length_table<D + 1, double>..., arc_length_table<D + 1, float>...>;
-};
+/// One table type per curve type of curve_variant.
+template <class T>
+using tables_of = std::variant<arc_length_table<1, T>, arc_length_table<2, T>, arc_length_table<3, T>,
+                               arc_length_table<4, T>, arc_length_table<wide_dimension, T>>;
 
 /// The cumulative arc-length table of one curve (it copies the segments, so
 /// it does not refer to the curve).
 struct table {
-    all_tables<std::make_index_sequence<max_dimension>>::type v;
+    concat<tables_of<double>, tables_of<float>>::type v;
     template <class F>
     decltype(auto) visit(F&& f) const { return std::visit(std::forward<F>(f), v); }
 };

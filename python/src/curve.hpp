@@ -27,27 +27,32 @@ namespace crspline::python {
 
 namespace py = pybind11;
 
-/// Dimensions compiled into the module: the exact ones of
-/// crspline::with_dimension (the wide, zero-padded path for 5..16 that the
-/// command line uses is not wired into the module yet).
-inline constexpr std::size_t max_dimension = max_exact_dimension;
+/// The dimensions the module accepts: 1 to 4 as curves of exactly that
+/// dimension, 5 to 16 as the one wide curve of crspline::with_dimension
+/// (16 coordinates, zero-padded; see crspline/dispatch.hpp). The padding and
+/// the cutting of results back to the input's dimension are done by the
+/// Python layer (crspline/__init__.py), which hands this module only 1 to 4
+/// or 16 columns.
+inline constexpr std::size_t max_dimension = max_runtime_dimension;
 
-/// f(std::integral_constant<std::size_t, D>{}) for D = 1..max_dimension,
-/// else the module's error.
+/// f(std::integral_constant<std::size_t, D>{}) for D = 1..4 and 16, else the
+/// module's error.
 template <class F>
 decltype(auto) with_dimension(std::size_t dimension, F&& f) {
-    const auto unsupported = [](std::size_t d) {
-        throw invalid_input("points must have 1 to " + std::to_string(max_dimension) +
-                            " coordinates each, got " + std::to_string(d));
-    };
     switch (dimension) {
         case 1: return std::forward<F>(f)(std::integral_constant<std::size_t, 1>{});
         case 2: return std::forward<F>(f)(std::integral_constant<std::size_t, 2>{});
         case 3: return std::forward<F>(f)(std::integral_constant<std::size_t, 3>{});
         case 4: return std::forward<F>(f)(std::integral_constant<std::size_t, 4>{});
-        default: unsupported(dimension);
+        case wide_dimension: return std::forward<F>(f)(std::integral_constant<std::size_t, wide_dimension>{});
+        default: break;
     }
-    throw invalid_input("unreachable");  // unsupported() throws
+    if (dimension > max_exact_dimension && dimension < wide_dimension)
+        throw invalid_input("points with " + std::to_string(dimension) +
+                            " coordinates must be padded to " + std::to_string(wide_dimension) +
+                            " (crspline.CatmullRom does this)");
+    throw invalid_input("points must have 1 to " + std::to_string(max_dimension) + " coordinates each, got " +
+                        std::to_string(dimension));
 }
 
 /// f(T{}) for the scalar of a NumPy array that is float32 or float64.
@@ -59,15 +64,18 @@ decltype(auto) with_scalar(const py::array& a, F&& f) {
                          std::string(py::str(a.dtype())));
 }
 
-template <class Tag>
-struct all_curves;
-template <std::size_t... D>
-struct all_curves<std::index_sequence<D...>> {
-    using type = std::variant<catmull_rom<D + 1, double>..., catmull_rom<D + 1, float>...>;
+template <class T>
+using curves_of = std::variant<catmull_rom<1, T>, catmull_rom<2, T>, catmull_rom<3, T>, catmull_rom<4, T>,
+                               catmull_rom<wide_dimension, T>>;
+template <class A, class B>
+struct concat;
+template <class... A, class... B>
+struct concat<std::variant<A...>, std::variant<B...>> {
+    using type = std::variant<A..., B...>;
 };
 
 /// Every curve type the module knows.
-using curve_variant = all_curves<std::make_index_sequence<max_dimension>>::type;
+using curve_variant = concat<curves_of<double>, curves_of<float>>::type;
 
 /// A curve of run-time dimension and scalar: what Python's _Curve holds.
 struct curve {

@@ -263,7 +263,7 @@ def test_strict_rejects_coincident_points():
 def test_version_and_constants():
     assert crspline.__version__ == "0.1.0"
     assert (crspline.uniform, crspline.centripetal, crspline.chordal) == (0.0, 0.5, 1.0)
-    assert crspline.max_dimension == 4 and crspline.default_accuracy == 1e-12
+    assert crspline.max_dimension == 16 and crspline.default_accuracy == 1e-12
     assert issubclass(crspline.InvalidInput, ValueError) and issubclass(crspline.OutOfDomain, ValueError)
     for name in crspline.__all__:
         obj = getattr(crspline, name)

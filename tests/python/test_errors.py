@@ -25,7 +25,7 @@ P = [[0, 0], [1, 2], [3, 2], [4, 0]]
     ((P,), {"tension": 2}, crspline.InvalidInput, "tension must be in [0, 1], got 2"),
     ((P,), {"endconditions": ([np.nan, 0], "natural")}, crspline.InvalidInput,
      "start tangent coordinate 0 is not finite (nan)"),
-    ((np.zeros((3, 5)),), {}, crspline.InvalidInput, "points must have 1 to 4 coordinates each, got 5"),
+    ((np.zeros((3, 17)),), {}, crspline.InvalidInput, "points must have 1 to 16 coordinates each, got 17"),
     ((np.zeros((2, 2, 2)),), {}, ValueError, "points must be an N x dim array"),
     ((np.zeros((3, 0)),), {}, ValueError, "at least 1 coordinate"),
     ((P,), {"endconditions": "periodic"}, ValueError, "endconditions must be 'natural', 'closed', 'reflect'"),
