@@ -30,6 +30,11 @@ function checkPoints(points, where) {
   points.forEach((p, i) => {
     const xy = Array.isArray(p) ? p : p && typeof p === 'object' ? [p.x, p.y] : null;
     if (!xy || xy.length < 2) throw new Error(`${where}: point ${i} is not [x, y]`);
+    // Never cut silently: a curve in 3 or more dimensions is refused.
+    if (xy.length > 2) {
+      throw new Error(`${where}: point ${i} has ${xy.length} coordinates; the editor draws 2-D curves ` +
+                      `(use 'crspline plot --columns' to view two of them)`);
+    }
     for (let k = 0; k < 2; ++k) {
       const v = Number(xy[k]);
       if (!Number.isFinite(v)) throw new Error(`${where}: point ${i}, coordinate ${k} is not a finite number (${xy[k]})`);
@@ -58,7 +63,53 @@ function checkOptions(o, where) {
   return out;
 }
 
-/// Parse an export back: JSON ({points, options} or a bare [[x, y], ...])
+// The curve file's end conditions ("end" as the command line reads it:
+// "natural" | "reflect" | "closed" | {"start": E, "end": E}) as editor
+// options; a tangent is supported only when it is zero (d3's end).
+function endFromFile(e, where) {
+  const one = (x, path) => {
+    if (x === 'natural' || x === 'reflect') return x;
+    if (Array.isArray(x) && x.length === 2 && x.every((v) => v === 0)) return 'zero';
+    throw new Error(`${where}: ${path}: the editor supports "natural", "reflect" or a zero tangent [0, 0], got ${JSON.stringify(x)}`);
+  };
+  if (e === 'closed') return { closed: true };
+  if (typeof e === 'string') return { closed: false, start: one(e, 'end'), end: one(e, 'end') };
+  if (e && typeof e === 'object' && !Array.isArray(e)) {
+    for (const key of Object.keys(e)) {
+      if (key !== 'start' && key !== 'end') throw new Error(`${where}: end: unknown field '${key}' (expected "start" and "end")`);
+    }
+    return { closed: false, start: one(e.start ?? 'natural', 'end.start'), end: one(e.end ?? 'natural', 'end.end') };
+  }
+  throw new Error(`${where}: end: expected "natural", "reflect", "closed" or {"start": ..., "end": ...}, got ${JSON.stringify(e)}`);
+}
+
+// The fields of a curve file the editor reads: the command line's
+// (docs/spec.md) that a 2-D editor curve can hold, plus the editor's older
+// export form ("format", "dimension", "options"). Any other field is an
+// error naming it, never dropped.
+const fileFields = ['points', 'alpha', 'tension', 'end', 'format', 'dimension', 'options'];
+
+function optionsFromFile(data, where) {
+  for (const key of Object.keys(data)) {
+    if (!fileFields.includes(key)) throw new Error(`${where}: field '${key}' is not supported by the editor`);
+  }
+  if (data.format !== undefined && data.format !== 'crspline-points') {
+    throw new Error(`${where}: format must be "crspline-points", got ${JSON.stringify(data.format)}`);
+  }
+  if (data.dimension !== undefined && data.dimension !== 2) throw new Error(`${where}: the editor is 2-D, got dimension ${data.dimension}`);
+  const top = ['alpha', 'tension', 'end'].filter((k) => data[k] !== undefined);
+  if (top.length && data.options !== undefined) {
+    throw new Error(`${where}: give "options" or the top-level ${top.map((k) => `"${k}"`).join(', ')}, not both`);
+  }
+  if (data.options !== undefined) return checkOptions(data.options, where);
+  const o = {};
+  for (const key of ['alpha', 'tension']) if (data[key] !== undefined) o[key] = data[key];
+  if (data.end !== undefined) Object.assign(o, endFromFile(data.end, where));
+  return checkOptions(o, where);
+}
+
+/// Parse an export back: JSON (the curve file of docs/spec.md: {points,
+/// alpha, tension, end}; the older {points, options}; or a bare [[x, y], ...])
 /// or CSV (x,y per line; a header line and # comments are skipped).
 /// Returns { points: Float64Array (flat x, y), options }. Throws Error with
 /// the line or index at fault.
@@ -74,8 +125,8 @@ export function parsePoints(text, name = '') {
     }
     if (Array.isArray(data)) return { points: checkPoints(data, 'JSON'), options: { ...defaultOptions } };
     if (data && typeof data === 'object') {
-      if (data.dimension !== undefined && data.dimension !== 2) throw new Error(`JSON: the editor is 2-D, got dimension ${data.dimension}`);
-      return { points: checkPoints(data.points, 'JSON'), options: checkOptions(data.options, 'JSON') };
+      const options = optionsFromFile(data, 'JSON');
+      return { points: checkPoints(data.points, 'JSON'), options };
     }
     throw new Error('JSON: expected {"points": [[x, y], ...]} or [[x, y], ...]');
   }
@@ -88,7 +139,10 @@ export function parsePoints(text, name = '') {
     if (cells.length < 2) throw new Error(`CSV line ${i + 1}: expected x,y, got "${l}"`);
     const x = Number(cells[0]), y = Number(cells[1]);
     if (!Number.isFinite(x) || !Number.isFinite(y) || cells[0] === '' || cells[1] === '') {
-      if (xs.length === 0 && /[a-z]/i.test(l)) return;  // a header
+      // A header: the first line, with no cell that reads as a number,
+      // NaN or an infinity ("NaN,1" is a bad point, not a header).
+      const numberLike = (c) => c !== '' && (Number.isFinite(Number(c)) || /^[+-]?(nan|inf(inity)?)$/i.test(c));
+      if (xs.length === 0 && /[a-z]/i.test(l) && !cells.some(numberLike)) return;
       throw new Error(`CSV line ${i + 1}: "${l}" is not two finite numbers`);
     }
     xs.push(x, y);
@@ -100,9 +154,14 @@ export function parsePoints(text, name = '') {
 const num = (x) => (Object.is(x, -0) ? '-0' : String(x));
 const pairs = (flat) => Array.from({ length: flat.length / 2 }, (_, i) => [flat[2 * i], flat[2 * i + 1]]);
 
+/// The curve file (docs/spec.md): the points and the command line's fields,
+/// so that every crspline subcommand reads an export unchanged.
 export function pointsToJson(flat, options) {
+  const o = checkOptions(options, 'options');
   const body = pairs(flat).map((p) => `    [${num(p[0])}, ${num(p[1])}]`).join(',\n');
-  return `{\n  "format": "crspline-points",\n  "dimension": 2,\n  "options": ${JSON.stringify(checkOptions(options, 'options'))},\n  "points": [\n${body}\n  ]\n}\n`;
+  const e = (x) => (x === 'zero' ? [0, 0] : x);
+  const end = o.closed ? 'closed' : o.start === o.end && o.start !== 'zero' ? o.start : { start: e(o.start), end: e(o.end) };
+  return `{\n  "alpha": ${num(o.alpha)},\n  "tension": ${num(o.tension)},\n  "end": ${JSON.stringify(end)},\n  "points": [\n${body}\n  ]\n}\n`;
 }
 
 export function pointsToCsv(flat) {

@@ -300,7 +300,10 @@ test('io: JSON and CSV round trips are exact; SVG path has one cubic per segment
   const opts = { alpha: 0.25, tension: 0.1, closed: true, start: 'reflect', end: 'zero' };
   const j = parsePoints(pointsToJson(pts, opts), 'a.json');
   assert.deepEqual(Array.from(j.points), Array.from(pts));
-  assert.deepEqual(j.options, opts);
+  // A closed curve has no end conditions in the curve file ("end": "closed").
+  assert.deepEqual(j.options, { ...opts, start: 'natural', end: 'natural' });
+  const open = { ...opts, closed: false };
+  assert.deepEqual(parsePoints(pointsToJson(pts, open), 'a.json').options, open);
   const c = parsePoints(pointsToCsv(pts), 'a.csv');
   assert.deepEqual(Array.from(c.points), Array.from(pts));
   assert.deepEqual(Array.from(parsePoints('[[1, 2], [3, 4]]').points), [1, 2, 3, 4]);
@@ -309,6 +312,13 @@ test('io: JSON and CSV round trips are exact; SVG path has one cubic per segment
   assert.throws(() => parsePoints('{"points": [[1, 2], [3]]}'), /point 1 is not \[x, y\]/);
   assert.throws(() => parsePoints('{"points": [[1, 2]], "options": {"alpha": 2}}'), /alpha must be in \[0, 1\]/);
   assert.throws(() => parsePoints('{"points": '), /JSON/);
+  // The command line's top-level fields are honoured, unknown ones refused,
+  // 3-D points refused rather than cut (tests/cli/test_curve_file.py runs the
+  // export through every subcommand).
+  assert.equal(parsePoints('{"points": [[1, 2], [3, 4]], "alpha": 0}').options.alpha, 0);
+  assert.throws(() => parsePoints('{"points": [[1, 2], [3, 4]], "strict": true}'), /field 'strict' is not supported/);
+  assert.throws(() => parsePoints('{"points": [[1, 2, 0], [3, 4, 0]]}'), /point 0 has 3 coordinates/);
+  assert.deepEqual(parsePoints('{"points": [[0, 0], [1, 1]], "options": {"closed": true}}').options.closed, true);
   withSpline(pts.subarray(0, 6), 2, splineOptions({ ...opts, closed: false }), (s) => {
     const bez = s.bezierAll();
     const d = bezierPathData(bez);
