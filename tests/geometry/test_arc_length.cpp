@@ -32,7 +32,6 @@ TEST(ArcLength, StraightLinesAtEveryAccuracy) {
     CRSPLINE_SEEDED(s, 301);
     std::mt19937_64 rng(s);
     std::uniform_real_distribution<double> U(0.1, 3.0);
-    std::size_t checked = 0;
     for (double alpha : {0.5, 1.0})
         for (int rep = 0; rep < 10; ++rep) {
             std::vector<P3> p{P3{}};
@@ -43,15 +42,12 @@ TEST(ArcLength, StraightLinesAtEveryAccuracy) {
             const double exact = norm(p.back() - p.front());
             for (double acc : accuracies) {
                 EXPECT_LE(std::abs(arc_length(c, acc) - exact), acc * exact) << "accuracy " << acc;
-                ++checked;
             }
         }
-    EXPECT_EQ(checked, 2u * 10 * 6);
 }
 
 TEST(ArcLength, ParabolaHasItsClosedFormLength) {
     // C(u) = (u, a u^2): length = [u w / 2 + asinh(2 a u) / (4 a)]_0^1, w = sqrt(1 + 4 a^2 u^2).
-    std::size_t checked = 0;
     for (double a : {0.1, 1.0, 10.0, 1000.0}) {
         const auto seg = cubic_segment<2>::hermite(P2{{0, 0}}, P2{{1, a}}, P2{{1, 0}}, P2{{1, 2 * a}}, 0.0, 1.0);
         ASSERT_EQ(seg.c3, P2{});
@@ -59,10 +55,8 @@ TEST(ArcLength, ParabolaHasItsClosedFormLength) {
         const double exact = w / 2 + std::asinh(2 * a) / (4 * a);
         for (double acc : accuracies) {
             EXPECT_LE(std::abs(arc_length(seg, acc) - exact), acc * exact) << "a " << a << " accuracy " << acc;
-            ++checked;
         }
     }
-    EXPECT_EQ(checked, 4u * 6);
 }
 
 TEST(ArcLength, TensionOneIsThePolylineLength) {
@@ -70,7 +64,6 @@ TEST(ArcLength, TensionOneIsThePolylineLength) {
     // end of each segment, and the length is exactly the sum of the chords.
     CRSPLINE_SEEDED(s, 302);
     std::mt19937_64 rng(s);
-    std::size_t checked = 0;
     for (int rep = 0; rep < 20; ++rep) {
         auto p = random_polygon<2>(rng, 8, 2.0);
         catmull_rom<2> c(p, {.tension = 1.0});
@@ -78,10 +71,8 @@ TEST(ArcLength, TensionOneIsThePolylineLength) {
         for (std::size_t i = 0; i + 1 < p.size(); ++i) chords += norm(p[i + 1] - p[i]);
         for (double acc : accuracies) {
             EXPECT_LE(std::abs(arc_length(c, acc) - chords), acc * chords) << "accuracy " << acc;
-            ++checked;
         }
     }
-    EXPECT_EQ(checked, 20u * 6);
 }
 
 TEST(ArcLength, OracleLengthsTo1e12) {
@@ -123,7 +114,6 @@ TEST(ArcLength, OracleLengthsTo1e12) {
 TEST(ArcLength, InverseRoundTripsAtEveryAccuracy) {
     CRSPLINE_SEEDED(s, 303);
     std::mt19937_64 rng(s);
-    std::size_t checked = 0;
     for (double alpha : {0.0, 0.5, 1.0})
         for (double acc : accuracies) {
             auto p = random_polygon<3>(rng, 12, 3.0);
@@ -144,7 +134,6 @@ TEST(ArcLength, InverseRoundTripsAtEveryAccuracy) {
                 EXPECT_LE(std::abs(table.s_at(t) - si), 2 * acc * L) << "s " << si;
                 // and against an independent high-accuracy length of [t_min, t].
                 EXPECT_LE(std::abs(arc_length(c, c.t_min(), t, 1e-14) - si), 2 * acc * L) << "s " << si;
-                ++checked;
             }
             // Sorted batch == one by one.
             std::sort(sv.begin(), sv.end());
@@ -154,13 +143,11 @@ TEST(ArcLength, InverseRoundTripsAtEveryAccuracy) {
             for (std::size_t k = 0; k < sv.size(); ++k)
                 EXPECT_LE(std::abs(table.s_at(tb[k]) - table.s_at(table.t_at(sv[k]))), 4 * acc * L) << "s " << sv[k];
         }
-    EXPECT_EQ(checked, 3u * 6 * 200);
 }
 
 TEST(ArcLength, EvenSamplesAreEvenlySpacedToTheAccuracy) {
     CRSPLINE_SEEDED(s, 304);
     std::mt19937_64 rng(s);
-    std::size_t checked = 0;
     for (double acc : {1e-6, 1e-12}) {
         auto p = random_polygon<2>(rng, 10, 3.0);
         catmull_rom<2> c(p);
@@ -172,10 +159,8 @@ TEST(ArcLength, EvenSamplesAreEvenlySpacedToTheAccuracy) {
         for (std::size_t k = 1; k < 101; ++k) {
             const double piece = arc_length(c, smp.t[k - 1], smp.t[k], 1e-14);
             EXPECT_LE(std::abs(piece - step), 4 * acc * L) << "sample " << k;
-            ++checked;
         }
     }
-    EXPECT_EQ(checked, 200u);
 }
 
 TEST(ArcLength, ZeroSpeedInsideSegments) {
@@ -281,7 +266,6 @@ TEST(ArcLength, SplinesConstantSpeedAdapterCases) {
 TEST(ArcLength, FloatReachesItsOwnPrecision) {
     CRSPLINE_SEEDED(s, 305);
     std::mt19937_64 rng(s);
-    int checked = 0;
     for (int rep = 0; rep < 20; ++rep) {
         auto pd = random_polygon<2>(rng, 6, 2.0);
         std::vector<vec<2, float>> pf;
@@ -293,9 +277,7 @@ TEST(ArcLength, FloatReachesItsOwnPrecision) {
         const float lf = arc_length(catmull_rom<2, float>(pf), 1e-6f);
         // float knots and coefficients carry ~1e-7 relative error each.
         EXPECT_NEAR(double(lf), ld, 2e-5 * ld);
-        ++checked;
     }
-    EXPECT_EQ(checked, 20);
 }
 
 TEST(ArcLength, AccuracyHoldsAgainstBruteForceQuadrature) {
@@ -305,7 +287,6 @@ TEST(ArcLength, AccuracyHoldsAgainstBruteForceQuadrature) {
     // a piece end once let the rule and its halves agree on a wrong value.
     CRSPLINE_SEEDED(s, 306);
     std::mt19937_64 rng(s);
-    std::size_t checked = 0;
     for (double alpha : {0.0, 0.5, 1.0})
         for (int rep = 0; rep < 16; ++rep) {
             auto p = random_polygon<3>(rng, 9, 3.0);
@@ -318,11 +299,9 @@ TEST(ArcLength, AccuracyHoldsAgainstBruteForceQuadrature) {
                     // The reference itself is good to ~1e-15 relative here.
                     EXPECT_LE(std::abs(arc_length(seg, acc) - ref), acc * ref + 1e-14 * ref)
                         << "alpha " << alpha << " segment " << i << " accuracy " << acc;
-                    ++checked;
                 }
             }
         }
-    EXPECT_EQ(checked, 3u * 16 * 8 * 3);
 }
 
 TEST(ArcLength, SegmentLengthsKeepTheirOwnPrecision) {

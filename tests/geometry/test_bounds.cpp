@@ -236,7 +236,6 @@ TEST(Bounds, OneDimensionalCurveFoldsBack) {
 TEST(Bounds, ConstantSegmentsAndConstantCurve) {
     // Repeated points give constant segments (h = 0, no motion): they add
     // nothing to the box. A curve of one repeated point is a single point.
-    std::size_t checked = 0;
     for (double alpha : {0.25, 0.5, 1.0}) {
         const std::vector<vec<2>> p = {{{0.0, 0.0}}, {{0.0, 0.0}}, {{1.0, 2.0}}, {{1.0, 2.0}}, {{3.0, -1.0}}};
         const catmull_rom<2> c(p, {.alpha = alpha});
@@ -245,7 +244,6 @@ TEST(Bounds, ConstantSegmentsAndConstantCurve) {
         face_counts n;
         check_curve(c, n);
         EXPECT_EQ(n.faces, 4u);
-        ++checked;
     }
     const vec<2> q{{-1.5, 4.0}};
     for (bool closed : {false, true}) {
@@ -254,9 +252,7 @@ TEST(Bounds, ConstantSegmentsAndConstantCurve) {
         EXPECT_EQ(bounding_box(c), box<2>::of(q));
         EXPECT_EQ(bounding_box(c).diagonal(), 0.0);
         EXPECT_EQ(control_box(c), box<2>::of(q));
-        ++checked;
     }
-    EXPECT_EQ(checked, 5u);
 }
 
 TEST(Bounds, BoxHelpers) {

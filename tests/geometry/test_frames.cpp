@@ -61,7 +61,6 @@ double circle_curvature_error(std::size_t n, double alpha) {
 }
 
 TEST(Curvature, CircleConvergesToOneOverRadius) {
-    std::size_t checked = 0;
     for (double alpha : alphas) {
         // Equal chords make every alpha the same curve. The cubic through
         // 64 points is an O(h^2) approximation of the circle's curvature:
@@ -73,24 +72,19 @@ TEST(Curvature, CircleConvergesToOneOverRadius) {
         EXPECT_LT(e256, 1e-3);
         EXPECT_NEAR(e64 / e128, 4.0, 0.1);
         EXPECT_NEAR(e128 / e256, 4.0, 0.1);
-        ++checked;
     }
-    EXPECT_EQ(checked, 5u);
 }
 
 TEST(Curvature, FloatCircle) {
     std::vector<vec<2, float>> p;
     for (const auto& x : circle(256, 2.5, P2{{3, -1}})) p.push_back(vec<2, float>{{float(x[0]), float(x[1])}});
     catmull_rom<2, float> c(p, {.closed = true});
-    std::size_t checked = 0;
     for (float t : samples(c, 501)) {
         // O(h^2) error of 4.5e-4 plus float rounding in x'' (coefficients of
         // size 1e-2 from differences of size-5 coordinates: ~1e-4 relative).
         EXPECT_NEAR(curvature(c, t) * 2.5f, 1.0f, 2e-3f);
         EXPECT_NEAR(signed_curvature(c, t) * 2.5f, 1.0f, 2e-3f);
-        ++checked;
     }
-    EXPECT_EQ(checked, 501u);
 }
 
 TEST(Curvature, SignedCurvatureFlipsInTheMirror) {
@@ -116,7 +110,6 @@ TEST(Curvature, SignedCurvatureFlipsInTheMirror) {
                 ++checked;
             }
         }
-    EXPECT_EQ(checked, 5u * 10 * 50);
     EXPECT_GT(left, checked / 5);  // both signs really occur
     EXPECT_LT(left, checked * 4 / 5);
     // A counterclockwise circle turns left; its mirror image turns right.
@@ -165,7 +158,6 @@ TEST(Curvature, InvariantUnderRigidMotionsAndScalesInversely) {
     CRSPLINE_SEEDED(s, 602);
     std::mt19937_64 rng(s);
     std::normal_distribution<double> g(0.0, 1.0);
-    std::size_t checked = 0;
     for (double alpha : alphas)
         for (int rep = 0; rep < 8; ++rep) {
             auto p = random_polygon<3>(rng, 6, 1.0);
@@ -197,16 +189,13 @@ TEST(Curvature, InvariantUnderRigidMotionsAndScalesInversely) {
                 EXPECT_NEAR(curvature(cm, tm), kappa, tol);
                 EXPECT_NEAR(curvature(cs, ts) * sc, kappa, tol);
                 EXPECT_NEAR(std::abs(torsion(cm, tm)), std::abs(torsion(c, t)), 1e-6 * (1 + std::abs(torsion(c, t))));
-                ++checked;
             }
         }
-    EXPECT_EQ(checked, 5u * 8 * 40);
 }
 
 TEST(Torsion, PlanarCurvesHaveNoneAndHelicesHaveTheirHandedness) {
     CRSPLINE_SEEDED(s, 603);
     std::mt19937_64 rng(s);
-    std::size_t checked = 0;
     for (double alpha : alphas) {
         // In the plane z = 0 every z component is exactly 0: det is exactly 0.
         auto p2 = random_polygon<2>(rng, 7, 1.0);
@@ -215,7 +204,6 @@ TEST(Torsion, PlanarCurvesHaveNoneAndHelicesHaveTheirHandedness) {
         catmull_rom<3> c(flat, {.alpha = alpha});
         for (double t : samples(c, 60)) {
             EXPECT_EQ(torsion(c, t), 0.0);
-            ++checked;
         }
         // A right-handed helix (radius 2, rise 0.5 per radian) has torsion
         // 0.5 / 4.25 > 0. The interpolant keeps the sign but not the value:
@@ -232,11 +220,9 @@ TEST(Torsion, PlanarCurvesHaveNoneAndHelicesHaveTheirHandedness) {
             positive += tau > 0.01;
             // The mirror image (z -> -z) negates every step exactly.
             EXPECT_EQ(torsion(left, t), -tau);
-            ++checked;
         }
         EXPECT_GE(positive, 50u);  // all but the two planar end segments
     }
-    EXPECT_EQ(checked, 5u * 2 * 60);
 }
 
 template <std::size_t D, class T>
@@ -308,7 +294,6 @@ double twist(const frame<3, double>& a, const frame<3, double>& b) {
 }
 
 TEST(Frames, RotationMinimizingFramesDoNotTwistButFrenetFramesDo) {
-    std::size_t checked = 0;
     for (double alpha : alphas) {
         catmull_rom<3> c(helix(33, 2.0, 0.5, 2.0), {.alpha = alpha});
         const auto t = samples(c, 2000);
@@ -318,7 +303,6 @@ TEST(Frames, RotationMinimizingFramesDoNotTwistButFrenetFramesDo) {
         for (std::size_t k = 0; k + 1 < t.size(); ++k) {
             rmf_twist += std::abs(twist(rmf[k], rmf[k + 1]));
             frenet_twist += std::abs(twist(fr[k], fr[k + 1]));
-            ++checked;
         }
         // Frenet frames turn with the torsion: about tau * length =
         // 0.5/4.25 * 2 turns * 2 pi * sqrt(4.25) ~ 3 radians in all. The
@@ -326,7 +310,6 @@ TEST(Frames, RotationMinimizingFramesDoNotTwistButFrenetFramesDo) {
         EXPECT_GT(frenet_twist, 2.0);
         EXPECT_LT(rmf_twist, 1e-4 * frenet_twist);
     }
-    EXPECT_EQ(checked, 5u * 1999);
 }
 
 TEST(Frames, DenseFramesAreContinuous) {
@@ -374,7 +357,6 @@ TEST(Frames, ClosedCurvesCloseUp) {
             twisted += std::abs(twist(g.back(), a)) > 1e-3;
             ++checked;
         }
-    EXPECT_EQ(checked, 5u * 6);
     EXPECT_GE(twisted, checked / 2);  // the holonomy is generic, not zero
 }
 

@@ -136,7 +136,6 @@ TEST(Nearest, FloatCurvesMatchBruteForceToFloatPrecision) {
     CRSPLINE_SEEDED(s, 503);
     std::mt19937_64 rng(s);
     std::uniform_real_distribution<double> U(-1.0, 1.0);
-    std::size_t checked = 0;
     for (double alpha : alphas)
         for (int rep = 0; rep < 8; ++rep) {
             auto p = random_polygon<3, float>(rng, 6, 1.0);
@@ -150,17 +149,14 @@ TEST(Nearest, FloatCurvesMatchBruteForceToFloatPrecision) {
                 // the scale (the coefficients carry rounding of that size).
                 EXPECT_NEAR(double(std::sqrt(r.distance_sq)), double(brute_distance(c, q)), 256 * 1.2e-7 * scale);
                 expect_consistent(c, q, r, scale);
-                ++checked;
             }
         }
-    EXPECT_EQ(checked, 5u * 8 * 10);
 }
 
 TEST(Nearest, QueriesOnTheCurveFindTheirOwnParameter) {
     CRSPLINE_SEEDED(s, 504);
     std::mt19937_64 rng(s);
     std::uniform_real_distribution<double> U(0.0, 1.0);
-    std::size_t checked = 0;
     for (double alpha : alphas)
         for (bool closed : {false, true})
             for (int rep = 0; rep < 10; ++rep) {
@@ -181,16 +177,13 @@ TEST(Nearest, QueriesOnTheCurveFindTheirOwnParameter) {
                     // probability zero.
                     const double speed = norm(c.evaluate(t, 1));
                     EXPECT_LE(std::abs(r.t - t) * speed, 1e-9 * scale) << "t " << t << " found " << r.t;
-                    ++checked;
                 }
             }
-    EXPECT_EQ(checked, 5u * 2 * 10 * 20);
 }
 
 TEST(Nearest, IndexGlobalAndBatchAgreeExactly) {
     CRSPLINE_SEEDED(s, 505);
     std::mt19937_64 rng(s);
-    std::size_t checked = 0;
     for (double alpha : alphas)
         for (bool closed : {false, true})
             for (int rep = 0; rep < 4; ++rep) {
@@ -212,10 +205,8 @@ TEST(Nearest, IndexGlobalAndBatchAgreeExactly) {
                         EXPECT_EQ(other.segment, g.segment);
                         EXPECT_EQ(other.point, g.point);
                     }
-                    ++checked;
                 }
             }
-    EXPECT_EQ(checked, 5u * 2 * 4 * 60);
 }
 
 TEST(Nearest, SmallBatchesAgreeToo) {
@@ -236,7 +227,6 @@ TEST(Nearest, StraightLine) {
     // Equally spaced collinear points: every alpha gives uniform knots and
     // x(t) linear, so the nearest point is the foot of the perpendicular
     // (or an end) and the distance is known in closed form.
-    std::size_t checked = 0;
     const vec<2> dir{{0.6, 0.8}}, perp{{-0.8, 0.6}}, base{{2.0, -1.0}};
     std::vector<vec<2>> p;
     for (int i = 0; i <= 5; ++i) p.push_back(base + double(i) * dir);
@@ -252,14 +242,11 @@ TEST(Nearest, StraightLine) {
                 // Coordinates of size ~7 and a handful of roundings: 64 eps.
                 EXPECT_NEAR(std::sqrt(r.distance_sq), want, 64 * 2.2e-16 * 8);
                 EXPECT_LE(norm(r.point - (base + a * dir)), 1e-7);  // distance is flat near the foot: sqrt(eps)
-                ++checked;
             }
     }
-    EXPECT_EQ(checked, 5u * 71 * 5);
 }
 
 TEST(Nearest, ConstantCurveTiesGoToTheSmallestParameter) {
-    std::size_t checked = 0;
     for (double alpha : alphas)
         for (bool closed : {false, true}) {
             const vec<3> x{{1.5, -2.0, 4.0}};
@@ -275,10 +262,8 @@ TEST(Nearest, ConstantCurveTiesGoToTheSmallestParameter) {
                 EXPECT_EQ(r.distance_sq, dot(q - x, q - x));
                 EXPECT_EQ(index.nearest(q).t, r.t);
                 EXPECT_EQ(index.nearest(q).segment, r.segment);
-                ++checked;
             }
         }
-    EXPECT_EQ(checked, 5u * 2 * 3);
 }
 
 TEST(Nearest, TenThousandSegmentsThroughTheIndex) {
@@ -291,7 +276,8 @@ TEST(Nearest, TenThousandSegmentsThroughTheIndex) {
         ASSERT_EQ(index.segment_count(), c.segment_count());
         const double scale = scale_of(p);
         const auto q = queries_around(rng, c, scale, 30);
-        std::size_t solved = 0, checked = 0;
+        ASSERT_FALSE(q.empty());
+        std::size_t solved = 0;
         for (const auto& x : q) {
             const auto found = index.search(x);
             solved += found.segments_solved;
@@ -304,13 +290,11 @@ TEST(Nearest, TenThousandSegmentsThroughTheIndex) {
             EXPECT_EQ(found.result.t, best.t);
             EXPECT_EQ(found.result.distance_sq, best.distance_sq);
             EXPECT_EQ(found.result.segment, best.segment);
-            ++checked;
         }
-        EXPECT_EQ(checked, 90u);
         // Counts, not timing: the index solves a few dozen segments per
         // query, not 10^4 (a random walk packs many segments near most
         // queries, hence the generous bound).
-        EXPECT_LT(solved / checked, 200u) << "segments solved per query";
+        EXPECT_LT(solved / q.size(), 200u) << "segments solved per query";
     }
 }
 

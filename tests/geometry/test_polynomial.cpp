@@ -68,7 +68,7 @@ TEST(Polynomial, ClustersAndBoundaryRootsTerminateWithSmallResiduals) {
     CRSPLINE_SEEDED(s, 702);
     std::mt19937_64 rng(s);
     std::uniform_real_distribution<double> U(-0.3, 1.3);
-    std::size_t checked = 0, reported = 0;
+    std::size_t reported = 0;
     for (int rep = 0; rep < 20000; ++rep) {
         std::array<double, 5> r;
         for (auto& x : r) {
@@ -93,9 +93,7 @@ TEST(Polynomial, ClustersAndBoundaryRootsTerminateWithSmallResiduals) {
             EXPECT_LE(std::abs(horner(p, got[k])), 1e-6 * size) << "rep " << rep;
         }
         reported += got.size();
-        ++checked;
     }
-    EXPECT_EQ(checked, 20000u);
     EXPECT_GT(reported, 1000u);
 }
 

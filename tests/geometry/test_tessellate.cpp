@@ -239,7 +239,6 @@ TEST(Tessellate, FlatnessBoundHoldsOnRandomPieces) {
 }
 
 TEST(Tessellate, StraightLineIsOnePiecePerSegment) {
-    std::size_t checked = 0;
     for (double alpha : alphas)
         for (double rel : {1e-2, 1e-6, 1e-10}) {
             std::vector<vec<2>> p;
@@ -251,9 +250,7 @@ TEST(Tessellate, StraightLineIsOnePiecePerSegment) {
                 EXPECT_EQ(pl.points[k], p[k]);
                 EXPECT_EQ(pl.t[k], c.grid()[k]);
             }
-            ++checked;
         }
-    EXPECT_EQ(checked, 5u * 3);
 }
 
 TEST(Tessellate, ClosedCurvesCloseAndConstantSegmentsAddNoVertex) {
@@ -270,14 +267,12 @@ TEST(Tessellate, ClosedCurvesCloseAndConstantSegmentsAddNoVertex) {
     // Repeated points (alpha > 0): constant segments, no duplicate vertex,
     // including a repeated last point.
     const std::vector<vec<2>> dup = {{{0.0, 0.0}}, {{0.0, 0.0}}, {{1.0, 2.0}}, {{1.0, 2.0}}, {{3.0, -1.0}}, {{3.0, -1.0}}};
-    std::size_t checked = 0;
     for (double alpha : {0.25, 0.5, 1.0}) {
         const catmull_rom<2> c(dup, {.alpha = alpha});
         tally n;
         check_tessellation(c, 1e-3, n);
         const polyline<2> pl = tessellate(c, 1e-3);
         for (std::size_t k = 1; k < pl.points.size(); ++k) EXPECT_NE(pl.points[k - 1], pl.points[k]) << k;
-        ++checked;
     }
     // A single repeated point: its two ends.
     for (bool closed : {false, true}) {
@@ -287,9 +282,7 @@ TEST(Tessellate, ClosedCurvesCloseAndConstantSegmentsAddNoVertex) {
         EXPECT_EQ(pl.points[0], pl.points[1]);
         EXPECT_EQ(pl.t.front(), c.t_min());
         EXPECT_EQ(pl.t.back(), c.t_max());
-        ++checked;
     }
-    EXPECT_EQ(checked, 5u);
 }
 
 TEST(Tessellate, DefaultToleranceIsRelativeToTheBox) {

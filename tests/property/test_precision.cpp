@@ -15,7 +15,6 @@ TEST(Precision, OffsetsOf1e8KeepFullPrecision) {
     // plus a few roundings of the curve's own size.
     CRSPLINE_SEEDED(s, 201);
     std::mt19937_64 rng(s);
-    std::size_t checked = 0;
     for (double alpha : {0.0, 0.5, 1.0})
         for (int rep = 0; rep < 30; ++rep) {
             auto p = random_polygon<2>(rng, 6, 2.0);
@@ -30,10 +29,8 @@ TEST(Precision, OffsetsOf1e8KeepFullPrecision) {
                 const double t = std::min(c.t_max() * j / 40.0, c.t_max());  // the product can round past t_max
                 const P2 a = c.evaluate(t) + off, b = d.evaluate(t);
                 EXPECT_LE(norm(a - b), 2 * eps * 1e8 + 64 * eps * scale_of(p)) << "t " << t;
-                ++checked;
             }
         }
-    EXPECT_EQ(checked, 3u * 30 * 41);
 }
 
 TEST(Precision, CoincidentPointsAreTheLimitOfNearbyInputs) {
@@ -43,7 +40,6 @@ TEST(Precision, CoincidentPointsAreTheLimitOfNearbyInputs) {
     // |v2| = d^(1 - alpha): it vanishes like d^alpha + d^(1 - alpha).
     CRSPLINE_SEEDED(s, 202);
     std::mt19937_64 rng(s);
-    std::size_t checked = 0;
     for (double alpha : {0.25, 0.5, 0.75})
         for (int rep = 0; rep < 10; ++rep) {
             auto p = random_polygon<2>(rng, 5, 1.0);
@@ -66,10 +62,8 @@ TEST(Precision, CoincidentPointsAreTheLimitOfNearbyInputs) {
                 EXPECT_LE(gap, 10 * (std::pow(d, alpha) + std::pow(d, 1 - alpha)) * scale_of(p)) << "d " << d;
                 EXPECT_LE(gap, previous_gap * 1.01 + 1e-14) << "d " << d;
                 previous_gap = gap;
-                ++checked;
             }
         }
-    EXPECT_EQ(checked, 3u * 10 * 7);
 }
 
 TEST(Precision, CoincidenceIsJudgedRelativeToTheLocalScale) {

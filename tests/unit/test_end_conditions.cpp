@@ -15,7 +15,6 @@ constexpr double eps = std::numeric_limits<double>::epsilon();
 TEST(EndConditions, NaturalEndsHaveZeroSecondDerivative) {
     CRSPLINE_SEEDED(s, 11);
     std::mt19937_64 rng(s);
-    int checked = 0;
     for (double alpha : {0.0, 0.25, 0.5, 1.0}) {
         for (int rep = 0; rep < 25; ++rep) {
             auto p = random_polygon<3>(rng, 3 + rep % 6);
@@ -28,10 +27,8 @@ TEST(EndConditions, NaturalEndsHaveZeroSecondDerivative) {
             const double s1 = max_abs(last.c1) + max_abs(last.c2) + max_abs(last.c3);
             EXPECT_LE(max_abs(first.du(0, 2)), 16 * eps * s0);
             EXPECT_LE(max_abs(last.du(1, 2)), 16 * eps * s1);
-            ++checked;
         }
     }
-    EXPECT_EQ(checked, 100);
 }
 
 TEST(EndConditions, ReflectIsThePhantomPointOfThreeJs) {
@@ -39,7 +36,6 @@ TEST(EndConditions, ReflectIsThePhantomPointOfThreeJs) {
     // knot interval from alpha (|P(-1) - P0| = |P1 - P0|).
     CRSPLINE_SEEDED(s, 12);
     std::mt19937_64 rng(s);
-    int checked = 0;
     for (double alpha : {0.0, 0.5, 0.75, 1.0}) {
         for (int rep = 0; rep < 20; ++rep) {
             auto p = random_polygon<2>(rng, 4 + rep % 4);
@@ -59,11 +55,9 @@ TEST(EndConditions, ReflectIsThePhantomPointOfThreeJs) {
                 const double tol = 64 * eps * scale_of(p);
                 EXPECT_LE(norm(c.evaluate(t0) - ref0), tol);
                 EXPECT_LE(norm(c.evaluate(t1) - ref1), tol);
-                ++checked;
             }
         }
     }
-    EXPECT_EQ(checked, 240);
 }
 
 TEST(EndConditions, ExplicitTangentIsTakenAsGivenEvenWithTension) {
@@ -80,7 +74,6 @@ TEST(EndConditions, ExplicitTangentIsTakenAsGivenEvenWithTension) {
 TEST(EndConditions, ClosedCurveIsPeriodicAndC1AtTheSeam) {
     CRSPLINE_SEEDED(s, 13);
     std::mt19937_64 rng(s);
-    int checked = 0;
     for (double alpha : {0.0, 0.5, 1.0}) {
         for (int rep = 0; rep < 30; ++rep) {
             auto p = random_polygon<2>(rng, 3 + rep % 7);
@@ -97,10 +90,8 @@ TEST(EndConditions, ClosedCurveIsPeriodicAndC1AtTheSeam) {
             const double h0 = c.grid()[n] - c.grid()[n - 1], h1 = c.grid()[1] - c.grid()[0];
             const P2 expect = (h1 * h1 * (p[0] - p[n - 1]) + h0 * h0 * (p[1] - p[0])) / (h0 * h1 * (h0 + h1));
             EXPECT_LE(norm(d0 - expect), 64 * eps * norm(expect));
-            ++checked;
         }
     }
-    EXPECT_EQ(checked, 90);
 }
 
 TEST(EndConditions, TwoPointsGiveAStraightLineWhateverTheEnds) {
@@ -164,7 +155,6 @@ bool same_bits(const catmull_rom<D>& a, const catmull_rom<D>& b) {
 TEST(KochanekBartels, ZerosAreBitForBitThePlainCurve) {
     CRSPLINE_SEEDED(s, 15);
     std::mt19937_64 rng(s);
-    int checked = 0;
     for (double alpha : {0.0, 0.5, 1.0})
         for (bool closed : {false, true})
             for (double tau : {0.0, 0.4}) {
@@ -174,9 +164,7 @@ TEST(KochanekBartels, ZerosAreBitForBitThePlainCurve) {
                 catmull_rom<3> kb(p, {.alpha = alpha, .closed = closed, .tension = tau,
                                       .kb = {.tension = z, .continuity = z, .bias = z}});
                 EXPECT_TRUE(same_bits(plain, kb)) << "alpha " << alpha << " closed " << closed;
-                ++checked;
             }
-    EXPECT_EQ(checked, 12);
 }
 
 TEST(KochanekBartels, ContinuityBreaksTheTangentAndKnotsBelongToTheRight) {

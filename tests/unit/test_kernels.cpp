@@ -151,7 +151,6 @@ TEST(Kernels, NearlySortedInputFallsBackAndStillAgrees) {
     // single-point path, with the AVX2 kernels and without.
     CRSPLINE_SEEDED(s, 73);
     std::mt19937_64 rng(s);
-    std::size_t checked = 0;
     for (const auto& c : curves(rng)) {
         const std::size_t n = 20000;
         std::vector<double> t(n);
@@ -165,10 +164,8 @@ TEST(Kernels, NearlySortedInputFallsBackAndStillAgrees) {
             const P3 x = c.evaluate(t[k]);
             ASSERT_TRUE(same_bits(fast[k], x)) << "k " << k << " (swapped at " << k0 << ")";
             ASSERT_TRUE(same_bits(portable[k], x)) << "k " << k << " (swapped at " << k0 << ")";
-            ++checked;
         }
     }
-    EXPECT_EQ(checked, 6u * 20000u);
 }
 
 TEST(Kernels, AvxBatchReportsTheFirstBadIndex) {

@@ -66,13 +66,12 @@ TEST(Storage, LargeCurveKeepsItsDataThroughCopiesAndMoves) {
     assigned = copy;
     catmull_rom<3> moved(std::move(copy));
     std::uniform_real_distribution<double> u(c.t_min(), c.t_max());
-    std::size_t differ = 0, checked = 0;
-    for (int k = 0; k < 2000; ++k, ++checked) {
+    std::size_t differ = 0;
+    for (int k = 0; k < 2000; ++k) {
         const double x = u(rng);
         const P3 a = c(x), b = assigned(x), m = moved(x);
         differ += std::memcmp(&a, &b, sizeof a) != 0 || std::memcmp(&a, &m, sizeof a) != 0;
     }
-    EXPECT_EQ(checked, 2000u);
     EXPECT_EQ(differ, 0u);
 }
 

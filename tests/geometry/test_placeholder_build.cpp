@@ -1,2 +1,0 @@
-// Keeps the geometry test executable buildable while its suites are written.
-#include <gtest/gtest.h>
