@@ -1,6 +1,7 @@
 """`crspline plot` and `crspline demo`: SVG (cairo's SVG surface) and PNG
 files that parse, with the overlays asked for; the demo's table."""
 import json
+import math
 import os
 import re
 import struct
@@ -47,6 +48,113 @@ def test_plot_formats_and_size(tmp_path):
     assert png_size(png.read_bytes()) == (400, 300)
     p = subprocess_bytes(["plot", "--format", "png"], doc)
     assert png_size(p) == (900, 640)
+
+
+# The overlays, each drawn where it belongs. SOURCES.md: the uniform curve
+# through (-5,1),(0,0),(1,0),(6,1) has an exact cusp at the middle of its one
+# segment; with Hermite tangents m1 = (P2-P0)/2 = (3,-1/2), m2 = (P3-P1)/2 =
+# (3,1/2) the cusp is at (1/2, -1/8), and the Bezier handles' inner points
+# are P1 + m1/3 = (1,-1/6) and P2 - m2/3 = (0,-1/6).
+CUSP = [[-5, 1], [0, 0], [1, 0], [6, 1]]
+CURVE_STROKE = "stroke:rgb(84%,15%,16%)"  # the uniform curve's colour
+
+
+def svg_paths(text):
+    return re.findall(r'<path style="([^"]*)" d="([^"]*)"', text)
+
+
+def subpaths(d):
+    """The coordinate pairs of each M-started subpath of an SVG path."""
+    out = []
+    for part in re.split(r"(?=M )", d.strip()):
+        nums = [float(x) for x in re.findall(r"-?[\d.]+(?:e-?\d+)?", part)]
+        if nums:
+            out.append(list(zip(nums[0::2], nums[1::2])))
+    return out
+
+
+def overlay_paths(option):
+    plain = svg_paths(ok(["plot", "--uniform"], json.dumps({"points": CUSP})))
+    full = svg_paths(ok(["plot", "--uniform", option], json.dumps({"points": CUSP})))
+    added = list(full)
+    for p in plain:
+        if p in added:
+            added.remove(p)
+    return full, added  # the figure's own map: an overlay can widen the view
+
+
+def pixel_map(plain):
+    """x -> pixel from the dashed control polygon, whose vertices are CUSP."""
+    # (the legend's dashed swatch is a single stroke)
+    poly = [d for style, d in plain if "stroke-dasharray" in style and d.count("L") == len(CUSP) - 1]
+    assert len(poly) == 1, poly
+    v = subpaths(poly[0])[0]
+    assert len(v) == len(CUSP)
+    sx = (v[3][0] - v[0][0]) / (CUSP[3][0] - CUSP[0][0])
+    sy = (v[3][1] - v[1][1]) / (CUSP[3][1] - CUSP[1][1])
+    for (px, py), (x, y) in zip(v, CUSP):  # one affine map for all four vertices
+        assert abs(px - (v[1][0] + sx * x)) < 0.01 and abs(py - (v[1][1] + sy * y)) < 0.01
+    return lambda x, y: (v[1][0] + sx * x, v[1][1] + sy * y)
+
+
+def curve_pixels(to_px):
+    t = [3 * k / 2000 for k in range(2001)]
+    pts = json.loads(ok(["eval"], json.dumps({"points": CUSP, "alpha": 0, "t": t})))["values"]["0"]
+    return [to_px(*p) for p in pts]
+
+
+def near_curve(q, curve, tol=1.0):
+    return min(math.dist(q, c) for c in curve) <= tol
+
+
+def test_plot_overlays_are_drawn_where_they_belong():
+    # Cusps: one cross of 12 px at the cusp.
+    full, added = overlay_paths("--cusps")
+    to_px = pixel_map(full)
+    crosses = [d for style, d in added if "stroke:rgb(5%,5%,5%)" in style and "stroke-linejoin:round" in style]
+    assert len(crosses) == 1, added
+    ends = [q for sp in subpaths(crosses[0]) for q in sp]
+    assert len(ends) == 4
+    centre = (sum(q[0] for q in ends) / 4, sum(q[1] for q in ends) / 4)
+    # cairo's SVG coordinates are fixed point in 1/256 px: 0.02 px is a few of them.
+    assert math.dist(centre, to_px(0.5, -0.125)) <= 0.02, (centre, to_px(0.5, -0.125))
+    # Comb: teeth from points on the curve, and the line through their tips.
+    full, added = overlay_paths("--comb")
+    curve = curve_pixels(pixel_map(full))
+    comb = [d for style, d in added if "stroke-width:0.7" in style and CURVE_STROKE in style]
+    assert len(comb) == 2, added
+    teeth = subpaths(comb[0])
+    assert len(teeth) >= 20
+    for tooth in teeth:
+        assert len(tooth) == 2 and near_curve(tooth[0], curve), tooth
+    # Arc-length ticks: short strokes centred on the curve.
+    full, added = overlay_paths("--ticks")
+    curve = curve_pixels(pixel_map(full))
+    ticks = [d for style, d in added if "stroke-width:1.2" in style and CURVE_STROKE in style]
+    assert len(ticks) == 1, added
+    strokes = subpaths(ticks[0])
+    assert len(strokes) >= 5
+    for a, b in strokes:
+        assert near_curve(((a[0] + b[0]) / 2, (a[1] + b[1]) / 2), curve) and 9 <= math.dist(a, b) <= 11, (a, b)
+    # Handles: squares at the Bezier handles' inner points, among them those
+    # of the middle segment.
+    full, added = overlay_paths("--handles")
+    to_px = pixel_map(full)
+    squares = [d for style, d in added if "fill-opacity:0.8" in style and "stroke:none" in style]
+    assert len(squares) == 1, added
+    centres = [(sum(q[0] for q in sp[:4]) / 4, sum(q[1] for q in sp[:4]) / 4) for sp in subpaths(squares[0])]
+    for x, y in [(1, -1 / 6), (0, -1 / 6)]:
+        assert min(math.dist(c, to_px(x, y)) for c in centres) <= 0.02, (x, y, centres)
+    # Volumes: filled shapes of the curve's colour that together hold every
+    # point of the curve (each point inside some shape's box).
+    full, added = overlay_paths("--volumes")
+    curve = curve_pixels(pixel_map(full))
+    vols = [d for style, d in added if "fill-opacity:0.08" in style and CURVE_STROKE in style]
+    assert len(vols) == 1, added
+    boxes = [(min(q[0] for q in sp), min(q[1] for q in sp), max(q[0] for q in sp), max(q[1] for q in sp))
+             for sp in subpaths(vols[0])]
+    for q in curve[::20]:
+        assert any(b[0] - 1 <= q[0] <= b[2] + 1 and b[1] - 1 <= q[1] <= b[3] + 1 for b in boxes), q
 
 
 def subprocess_bytes(args, stdin):
@@ -96,8 +204,7 @@ def test_demo_polygon_is_the_example_polygon():
     here = os.path.dirname(os.path.abspath(__file__))
     example = os.path.join(here, "..", "..", "examples", "comparison.cpp")
     demo = os.path.join(here, "..", "..", "cli", "demo.cpp")
-    if not os.path.exists(example):
-        return
+    assert os.path.exists(example), example
     num = r"\{\{?(-?[\d.]+), (-?[\d.]+)\}\}?"
     ex = re.findall(num, open(example).read().split("polygon = {")[1].split("};")[0])
     de = re.findall(num, open(demo).read().split("demo_polygon[][2] = {")[1].split("};")[0])

@@ -42,7 +42,6 @@ def test_every_input_format_gives_the_same_curve(files):
             ok(["bezier", "--input-format", "csv", "--delimiter", "tab", "-"], CSV.replace(",", "\t"))]
     for out in outs:
         assert json.loads(out) == want
-    assert len(outs) == 8
 
 
 def test_columns_by_name_and_comments(files):
@@ -75,7 +74,6 @@ def test_options_match_json_fields(files):
     for args, fields in cases:
         got = json.loads(ok(["bezier"] + args + [str(files / "p.csv")]))
         assert got == run_json("bezier", dict({"points": P5}, **fields)), args
-    assert len(cases) == 11
 
 
 def test_options_override_json_fields(files):
