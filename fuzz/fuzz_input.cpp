@@ -4,6 +4,8 @@
 // subcommand. See fuzz/README.md.
 #include "fuzz_input.hpp"
 
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include <crspline/error.hpp>
@@ -17,20 +19,36 @@ namespace {
 // Keeps the work per input small: a subcommand on a huge curve is slow, not wrong.
 constexpr std::size_t max_input = 1 << 16;
 
-void run_document(unsigned mode, const crspline::cli::document& doc) {
+// Runs one subcommand and returns its rendered output ("" when skipped).
+std::string run_document(unsigned mode, const crspline::cli::document& doc) {
     using namespace crspline::cli;
     if (mode % 5 == 3) {
         // sample: a count of 10^9 or a tolerance of 1e-300 is slow, not wrong.
         const auto& r = doc.root;
-        if (!r.is_object() || r.contains("tolerance")) return;
-        if (r.contains("count") && !(r["count"].is_number() && r["count"].get<double>() <= 1000)) return;
+        if (!r.is_object() || r.contains("tolerance")) return "";
+        if (r.contains("count") && !(r["count"].is_number() && r["count"].get<double>() <= 1000)) return "";
     }
     switch (mode % 5) {
-        case 0: render(run_bezier(doc)); break;
-        case 1: render(run_eval(doc)); break;
-        case 2: render(run_length(doc)); break;
-        case 3: render(run_sample(doc)); break;
-        case 4: convert_output("bezier", "csv", run_bezier(doc), doc); break;
+        case 0: return render(run_bezier(doc));
+        case 1: return render(run_eval(doc));
+        case 2: return render(run_length(doc));
+        case 3: return render(run_sample(doc));
+        default: return convert_output("bezier", "csv", run_bezier(doc), doc);
+    }
+}
+
+// What a user would see: the output, or the kind of error and its message.
+template <class F>
+std::string outcome(F&& f) {
+    using namespace crspline::cli;
+    try {
+        return "output\n" + f();
+    } catch (const input_error& e) {
+        return std::string("input_error\n") + e.what();
+    } catch (const crspline::invalid_input& e) {
+        return std::string("invalid_input\n") + e.what();
+    } catch (const crspline::out_of_domain& e) {
+        return std::string("out_of_domain\n") + e.what();
     }
 }
 
@@ -47,10 +65,18 @@ int crspline_fuzz_one(const std::uint8_t* data, std::size_t size) {
                 run_document(mode, parse_json_document(in));
                 break;
             }
-            case 1: {  // the same text through the tree only: both paths must agree
-                document d;
-                d.root = parse_json(in);
-                run_document(mode, d);
+            case 1: {  // the same text through the fast path and the tree only: both must agree
+                const std::string fast = outcome([&] { return run_document(mode, parse_json_document(in)); });
+                const std::string tree = outcome([&] {
+                    document d;
+                    d.root = parse_json(in);
+                    return run_document(mode, d);
+                });
+                if (fast != tree) {
+                    std::fprintf(stderr, "fuzz: the points fast path and the JSON tree disagree\nfast: %.2000s\ntree: %.2000s\n",
+                                 fast.c_str(), tree.c_str());
+                    std::abort();
+                }
                 break;
             }
             case 2: {  // CSV, auto or chosen columns, then a subcommand
