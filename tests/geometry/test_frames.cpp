@@ -431,4 +431,38 @@ TEST(Frames, ZeroSpeedPointsGiveFiniteFrames) {
     EXPECT_EQ(checked, 2u * 8 + 2u * 5);
 }
 
+// Closed forms, independent of the code under test: the twisted cubic
+// x(t) = (t, t^2, t^3) on [a, b] as the first segment of a curve. That
+// segment is the Hermite cubic with x(a), x(b), the start tangent (given:
+// dx(a)) and the tangent at b, which on a uniform grid {a, b, 2b - a} is
+// (P2 - P0) / 2h; P2 = P0 + 2h dx(b) makes it dx(b), so the segment is the
+// twisted cubic itself. (Two points alone give a straight line whatever the
+// end conditions: README.) From x' = (1, 2t, 3t^2), x'' = (0, 2, 6t),
+// x''' = (0, 0, 6): x' x x'' = (6t^2, -6t, 2), so
+//   kappa = 2 sqrt(9t^4 + 9t^2 + 1) / (1 + 4t^2 + 9t^4)^(3/2),
+//   tau = det(x', x'', x''') / |x' x x''|^2 = 3 / (9t^4 + 9t^2 + 1).
+TEST(Frames, TwistedCubicCurvatureAndTorsionInClosedForm) {
+    const auto x = [](double t) { return P3{{t, t * t, t * t * t}}; };
+    const auto dx = [](double t) { return P3{{1, 2 * t, 3 * t * t}}; };
+    for (const auto& [a, b] : {std::pair{0.0, 1.0}, std::pair{-1.0, 0.5}, std::pair{-0.25, 0.5}}) {
+        const double h = b - a;
+        const catmull_rom<3> c(std::vector<P3>{x(a), x(b), x(a) + (2 * h) * dx(b)},
+                               {.grid = std::vector<double>{a, b, b + h}, .start = end_condition<3>::tangent(dx(a))});
+        for (int j = 0; j < 40; ++j) {  // [a, b): b belongs to the next segment
+            const double t = a + h * j / 40.0;
+            const double q = 9 * t * t * t * t + 9 * t * t + 1;
+            const double kappa = 2 * std::sqrt(q) / std::pow(1 + 4 * t * t + 9 * t * t * t * t, 1.5);
+            const double tau = 3 / q;
+            // The curve's coefficients carry a few roundings of points and
+            // tangents of size 1 to 12; kappa and tau are ratios of products
+            // of derivatives: 1e-12 relative is thousands of eps of room for
+            // that, and far below any error in a formula, which is O(1).
+            EXPECT_NEAR(curvature(c, t), kappa, 1e-12 * kappa) << "t " << t;
+            EXPECT_NEAR(torsion(c, t), tau, 1e-12 * tau) << "t " << t;
+            // The segment is the cubic itself (coordinates up to 1).
+            EXPECT_LE(max_abs(c.evaluate(t) - x(t)), 64 * std::numeric_limits<double>::epsilon()) << "t " << t;
+        }
+    }
+}
+
 }  // namespace
