@@ -119,6 +119,30 @@ def test_curvature_of_a_circle_like_curve():
         crspline.CatmullRom(HELIX).signed_curvature(0.5)
 
 
+def test_curvature_and_torsion_of_the_twisted_cubic_in_closed_form():
+    # (t, t^2, t^3) on [a, b] is the first segment of a uniform 3-point curve
+    # with the start tangent given and P2 = P0 + 2h x'(b) (the Catmull-Rom
+    # tangent at b is then x'(b)): the segment is the cubic itself, so
+    # kappa = 2 sqrt(q) / (1 + 4t^2 + 9t^4)^(3/2) and tau = 3 / q with
+    # q = 9t^4 + 9t^2 + 1 (x' x x'' = (6t^2, -6t, 2), det(x', x'', x''') = 12).
+    def x(t):
+        return np.array([t, t * t, t ** 3])
+
+    def dx(t):
+        return np.array([1.0, 2 * t, 3 * t * t])
+
+    for a, b in [(0.0, 1.0), (-1.0, 0.5)]:
+        h = b - a
+        c = crspline.CatmullRom([x(a), x(b), x(a) + 2 * h * dx(b)], grid=[a, b, b + h],
+                                endconditions=(dx(a), "natural"))
+        t = a + h * np.arange(40) / 40  # [a, b): b belongs to the next segment
+        q = 9 * t ** 4 + 9 * t ** 2 + 1
+        # 1e-12 relative: a few roundings of coefficients of size <= 3 (C++
+        # Frames.TwistedCubicCurvatureAndTorsionInClosedForm explains).
+        assert np.allclose(c.curvature(t), 2 * np.sqrt(q) / (1 + 4 * t ** 2 + 9 * t ** 4) ** 1.5, rtol=1e-12, atol=0)
+        assert np.allclose(c.torsion(t), 3 / q, rtol=1e-12, atol=0)
+
+
 def test_torsion_and_frames_of_a_helix():
     c = crspline.CatmullRom(HELIX, alpha=0)
     t = np.linspace(1, 11, 50)  # away from the natural ends
