@@ -184,7 +184,7 @@ test('errors: a C++ exception arrives as a JavaScript Error with the core messag
     [() => withSpline([[0, 0], [1, 1]], 2, {}, (s) => s.evaluate(0.5, 4)), /derivative order must be 0, 1, 2 or 3, got 4/],
     [() => withSpline([[0, 0], [1, 1]], 2, {}, (s) => s.evaluateMany([0, 0.5, 9])), /index 2/],
     [() => withSpline([[0, 0], [1, 1]], 2, {}, (s) => s.bezier(3)), /segment index 3 is outside/],
-    [() => withSpline([[0, 0], [1, 1]], 2, {}, (s) => s.tAtArcLength(-1)), /./],
+    [() => withSpline([[0, 0], [1, 1]], 2, {}, (s) => s.tAtArcLength(-1)), /^s = -1 is outside the arc-length range \[0, 1\.4142135623730951\]$/],
     [() => withSpline([[0, 0, 0], [1, 1, 1]], 3, {}, (s) => s.curvatureComb(4)), /needs a plane curve/],
     // null Kochanek-Bartels values: only at the ends of an open curve, as in the CLI.
     [() => new M.Spline([[0, 0], [1, 1], [2, 0]], 2, { kb: { bias: [0, null, 0] } }), /kb bias\[1\] is not finite \(nan\)/],
@@ -197,7 +197,6 @@ test('errors: a C++ exception arrives as a JavaScript Error with the core messag
   withSpline(ends, 2, { kb: { bias: [null, 0.5, 0.25, null] } }, (a) =>
     withSpline(ends, 2, { kb: { bias: [0, 0.5, 0.25, 0] } }, (b) =>
       assert.deepEqual(Array.from(a.evaluate(1.7)), Array.from(b.evaluate(1.7)))));
-  assert.equal(cases.length, 16);
 });
 
 test('analysis: the uniform cusp, centripetal certificate, a crossing found exactly', () => {
