@@ -322,12 +322,18 @@ public:
             first_piece_[i] = pieces_.size();
             segment_start_[i] = total_;
             const auto& seg = segments_[i];
+            // Summed per segment, then segment by segment: the same order
+            // as arc_length(curve), so total() is that value bit for bit
+            // (and s = arc_length(curve) is never past the table's end).
+            T within = 0;
             detail::for_each_length_piece(seg, T(0), T(1), accuracy,
                                           [&](T u0, T u1, T len, const detail::rule_choice& rc) {
-                                              pieces_.push_back({u0, u1, total_, i, rc.n, T(rc.short_fraction(eff))});
-                                              total_ += len;
-                                              segment_length_[i] += len;
+                                              pieces_.push_back(
+                                                  {u0, u1, total_ + within, i, rc.n, T(rc.short_fraction(eff))});
+                                              within += len;
                                           });
+            segment_length_[i] = within;
+            total_ += within;
         }
         first_piece_[nseg] = pieces_.size();
         segment_start_[nseg] = total_;

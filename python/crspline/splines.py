@@ -41,7 +41,10 @@ from . import _crspline
 
 __all__ = ["CubicHermite", "CatmullRom", "FiniteDifference", "KochanekBartels", "UnitSpeedAdapter"]
 
-_GROUP = int(_crspline.max_dimension)  # coordinates per core curve
+# Coordinates per core curve: the fixed-dimension fast path (1 to 4). Wider
+# points are split into groups on one grid (knots and tangents come from the
+# full vectors), which is exact for any alpha.
+_GROUP = 4
 
 
 def _float_array(x, name):
