@@ -21,18 +21,7 @@ constexpr double pi = std::numbers::pi;
 // CRSPLINE_PROPERTY_SCALE (default 1: the full run) multiplies the random
 // case counts. Below 1 the minimum-count checks are off, and the run says so
 // on stderr: a reduced run must never pass for a full one.
-double property_scale() {
-    const char* s = std::getenv("CRSPLINE_PROPERTY_SCALE");
-    if (!s) return 1.0;
-    char* end = nullptr;
-    const double x = std::strtod(s, &end);
-    if (end == s || *end != '\0' || !(x > 0) || !std::isfinite(x))
-        throw std::invalid_argument(std::string("CRSPLINE_PROPERTY_SCALE: expected a number > 0, got '") + s + "'");
-    static const bool said = x < 1 && std::fprintf(stderr,
-        "note: CRSPLINE_PROPERTY_SCALE=%s: a REDUCED run, the minimum-count checks are off\n", s) > 0;
-    (void)said;
-    return std::max(0.01, x);
-}
+using test::property_scale;
 
 // A random angle: uniform, or within 1e-9 of 0 or pi (log-uniform offset,
 // sometimes exactly 0 / pi).

@@ -22,12 +22,13 @@ using namespace crspline;
 using P2 = vec<2>;
 using P3 = vec<3>;
 constexpr double pi = std::numbers::pi;
+using test::smooth_polygon;
 
 // CRSPLINE_PROPERTY_SCALE < 1 runs fewer cases and says so (scaled()
 // prints the reduced count); a Debug + AddressSanitizer build, some 30 times
 // slower, runs a fifth of them by default.
 double property_scale() {
-    if (const char* s = std::getenv("CRSPLINE_PROPERTY_SCALE")) return std::max(0.01, std::atof(s));
+    if (std::getenv("CRSPLINE_PROPERTY_SCALE")) return test::property_scale();
 #if defined(__SANITIZE_ADDRESS__)
     return 0.2;
 #else
@@ -40,27 +41,6 @@ std::size_t scaled(std::size_t n) {
     return m;
 }
 
-// A polygon whose turn at every vertex is at most max_turn, steps over
-// `decades` orders of magnitude (as in test_whole_curve.cpp).
-template <std::size_t D>
-std::vector<vec<D>> smooth_polygon(std::mt19937_64& rng, std::size_t n, double max_turn, double decades) {
-    std::uniform_real_distribution<double> U(0.0, 1.0);
-    std::normal_distribution<double> G(0.0, 1.0);
-    std::vector<vec<D>> p(n);
-    vec<D> dir{};
-    for (std::size_t k = 0; k < D; ++k) dir[k] = G(rng);
-    dir = dir / norm(dir);
-    for (std::size_t i = 1; i < n; ++i) {
-        vec<D> r{};
-        for (std::size_t k = 0; k < D; ++k) r[k] = G(rng);
-        r = r - dot(r, dir) * dir;
-        if (norm(r) > 0) r = r / norm(r);
-        const double t = max_turn * (2 * U(rng) - 1);
-        dir = std::cos(t) * dir + std::sin(t) * r;
-        p[i] = p[i - 1] + std::pow(10.0, decades * (U(rng) - 0.5)) * dir;
-    }
-    return p;
-}
 
 // ---------------------------------------------------------------------------
 // The independent checker: long-double subdivision of every pair of segments

@@ -14,45 +14,10 @@ using namespace crspline;
 using P2 = vec<2>;
 using P3 = vec<3>;
 constexpr double pi = std::numbers::pi;
+using test::property_scale;
+using test::smooth_polygon;
 
-// CRSPLINE_PROPERTY_SCALE (default 1: the full run) multiplies the random
-// case counts. Below 1 the minimum-count checks are off, and the run says so
-// on stderr: a reduced run must never pass for a full one.
-double property_scale() {
-    const char* s = std::getenv("CRSPLINE_PROPERTY_SCALE");
-    if (!s) return 1.0;
-    char* end = nullptr;
-    const double x = std::strtod(s, &end);
-    if (end == s || *end != '\0' || !(x > 0) || !std::isfinite(x))
-        throw std::invalid_argument(std::string("CRSPLINE_PROPERTY_SCALE: expected a number > 0, got '") + s + "'");
-    static const bool said = x < 1 && std::fprintf(stderr,
-        "note: CRSPLINE_PROPERTY_SCALE=%s: a REDUCED run, the minimum-count checks are off\n", s) > 0;
-    (void)said;
-    return std::max(0.01, x);
-}
 
-// A polygon whose turn at every vertex is at most max_turn (so polygon angles
-// are at least pi - max_turn), with step lengths over `decades`.
-template <std::size_t D>
-std::vector<vec<D>> smooth_polygon(std::mt19937_64& rng, std::size_t n, double max_turn, double decades) {
-    std::uniform_real_distribution<double> U(0.0, 1.0);
-    std::normal_distribution<double> G(0.0, 1.0);
-    std::vector<vec<D>> p(n);
-    vec<D> dir{};
-    for (std::size_t k = 0; k < D; ++k) dir[k] = G(rng);
-    dir = dir / norm(dir);
-    for (std::size_t i = 1; i < n; ++i) {
-        // Rotate dir by a random angle <= max_turn in a random plane.
-        vec<D> r{};
-        for (std::size_t k = 0; k < D; ++k) r[k] = G(rng);
-        r = r - dot(r, dir) * dir;
-        if (norm(r) > 0) r = r / norm(r);
-        const double t = max_turn * (2 * U(rng) - 1);
-        dir = std::cos(t) * dir + std::sin(t) * r;
-        p[i] = p[i - 1] + std::pow(10.0, decades * (U(rng) - 0.5)) * dir;
-    }
-    return p;
-}
 
 // Polyline of every segment, m chords each.
 template <std::size_t D>
