@@ -59,7 +59,7 @@ def test_command_line_input_opens_in_the_editor_with_its_options():
 @pytest.mark.parametrize("text, message", [
     ('{"points": [[0, 0], [1, 1]], "grid": [0, 1]}', "JSON: field 'grid' is not supported by the editor"),
     ('{"points": [[0, 0], [1, 1]], "kb": {}}', "JSON: field 'kb' is not supported by the editor"),
-    ('{"points": [[0, 0, 1], [1, 1, 1]]}', "JSON: point 0 has 3 coordinates; the editor draws 2-D curves"),
+    ('{"points": [[0], [1]]}', "JSON: point 0 has 1 coordinate; the editor draws curves of 2 to 16 coordinates"),
     ('{"points": [[0, 0], [1, 1]], "end": {"start": [1, 2]}}', 'JSON: end.start: the editor supports "natural", "reflect" or a zero tangent [0, 0], got [1,2]'),
     ('x,y\nNaN,1\n2,3\n', 'CSV line 2: "NaN,1" is not two finite numbers'),
     ('NaN,1\n2,3\n', 'CSV line 1: "NaN,1" is not two finite numbers'),
@@ -68,3 +68,14 @@ def test_the_editor_refuses_what_it_cannot_hold(text, message):
     out = node(f"try {{ io.parsePoints({json.dumps(text)}); process.stdout.write('accepted'); }}"
                f" catch (e) {{ process.stdout.write(e.message); }}")
     assert out.startswith(message), out
+
+
+def test_a_3d_curve_opens_whole_and_its_export_is_the_same_curve(tmp_path):
+    """A 3-D command-line input opens in the editor with all its coordinates
+    (shown there as a projection) and its export is the same 3-D curve."""
+    doc = {"points": [[0, 0, 1], [1, 2, -1], [3, 1, 0.5], [4, 3, 2]], "alpha": 0.25, "end": {"start": "reflect", "end": [0, 0, 0]}}
+    text = node(f"const r = io.parsePoints({json.dumps(json.dumps(doc))}, 'c.json');"
+                "process.stdout.write(io.pointsToJson(r.points, r.options, r.dimension));")
+    back = json.loads(text)
+    assert back["points"] == doc["points"]
+    assert run_json("length", back)["total"] == run_json("length", doc)["total"]

@@ -9,7 +9,7 @@
 // volumes, arc-length ticks) run in a worker, latest request wins; until an
 // answer for the current curve arrives, the last one is drawn faded.
 import CrSpline from '../dist/crspline.mjs';
-import { parsePoints, pointsToJson, pointsToCsv, curveToSvg, splineOptions, defaultOptions } from './io.mjs';
+import { parsePoints, pointsToJson, pointsToCsv, curveToSvg, splineOptions, defaultOptions, coordinateNames } from './io.mjs';
 import { computeGlobal } from './overlays.mjs';
 
 const M = await CrSpline({ locateFile: (p) => new URL('../dist/' + p, import.meta.url).href });
@@ -22,7 +22,16 @@ const ctx = canvas.getContext('2d');
 // State
 // ---------------------------------------------------------------------------
 const state = {
-  pts: new Float64Array(0),  // flat x, y in world units
+  pts: new Float64Array(0),  // flat x, y in world units (the two drawn coordinates)
+  // The document's dimension. A curve of dim > 2 coordinates is shown and
+  // edited as its projection on coordinates pair[0] (across) and pair[1]
+  // (up or down): `pts` holds those two of every point, `rest` the other
+  // dim - 2 (in coordinate order), so that nothing is cut; the curve itself
+  // (drawn, measured, certified) is the dim-D one. names: the coordinates'.
+  dim: 2,
+  pair: [0, 1],
+  rest: new Float64Array(0),
+  names: ['x', 'y'],
   opts: { ...defaultOptions },
   selected: -1,              // the primary selected point (-1: none)
   sel: new Set(),            // every selected point (marquee, Shift+click)
@@ -38,6 +47,7 @@ const state = {
 // the canvas works in 32-bit floats, which far from the origin (1e8) would
 // put the curve on a staircase of 8-unit steps.
 const view = { s: 1, x0: 0, y0: 0, yUp: false };
+const Y_UP_KEY = 'crspline.editor.yUp';
 const ys = () => (view.yUp ? -1 : 1);
 const SX = (x) => (x - view.x0) * view.s;
 const SY = (y) => (y - view.y0) * view.s * ys();
@@ -47,6 +57,44 @@ const undoStack = [], redoStack = [];
 const UNDO_LIMIT = 200;
 
 const count = () => state.pts.length / 2;
+
+// The coordinates not drawn, in order (their values are in state.rest).
+function hidden(dim = state.dim, pair = state.pair) {
+  const h = [];
+  for (let k = 0; k < dim; ++k) if (k !== pair[0] && k !== pair[1]) h.push(k);
+  return h;
+}
+// The points with every coordinate, flat (dim per point).
+function fullPoints() {
+  const d = state.dim;
+  if (d === 2 && state.pair[0] === 0) return state.pts;
+  const n = count(), out = new Float64Array(n * d), h = hidden(), r = d - 2;
+  for (let i = 0; i < n; ++i) {
+    out[i * d + state.pair[0]] = state.pts[2 * i];
+    out[i * d + state.pair[1]] = state.pts[2 * i + 1];
+    for (let j = 0; j < r; ++j) out[i * d + h[j]] = state.rest[i * r + j];
+  }
+  return out;
+}
+// Full points -> { pts, rest } for a projection pair.
+function splitPoints(full, d, pair) {
+  const n = full.length / d, pts = new Float64Array(2 * n), h = hidden(d, pair), r = d - 2, rest = new Float64Array(n * r);
+  for (let i = 0; i < n; ++i) {
+    pts[2 * i] = full[i * d + pair[0]];
+    pts[2 * i + 1] = full[i * d + pair[1]];
+    for (let j = 0; j < r; ++j) rest[i * r + j] = full[i * d + h[j]];
+  }
+  return { pts, rest };
+}
+// The hidden coordinates of point k (a copy; empty for a plane curve).
+const restOf = (k) => state.rest.slice(k * (state.dim - 2), (k + 1) * (state.dim - 2));
+// Flat points of dimension d -> their pair coordinates, flat x, y.
+function project(a, d = state.dim, pair = state.pair) {
+  if (d === 2) return a;
+  const n = a.length / d, out = new Float64Array(2 * n);
+  for (let i = 0; i < n; ++i) { out[2 * i] = a[i * d + pair[0]]; out[2 * i + 1] = a[i * d + pair[1]]; }
+  return out;
+}
 
 // ---------------------------------------------------------------------------
 // The curve and its per-segment caches
@@ -100,8 +148,8 @@ function rebuild() {
   const n = count();
   if (n >= 2) {
     try {
-      spline = new M.Spline(state.pts, 2, splineOptions(state.opts));
-      bez = spline.bezierAll();
+      spline = new M.Spline(fullPoints(), state.dim, splineOptions(state.opts, state.dim));
+      bez = project(spline.bezierAll());
     } catch (e) {
       splineError = e.message;
     }
@@ -112,7 +160,8 @@ function rebuild() {
 
 function updateCaches() {
   const nseg = spline ? spline.segmentCount() : 0;
-  const want = { len: true, cusps: state.overlays.cusps, comb: state.overlays.comb };
+  // The comb needs a plane curve (signed curvature).
+  const want = { len: true, cusps: state.overlays.cusps, comb: state.overlays.comb && state.dim === 2 };
   for (const key of Object.keys(cache)) {
     if (!want[key] || !spline) { cache[key] = null; continue; }
     const full = dirty.all || !cache[key] || cache[key].length !== nseg;
@@ -133,12 +182,13 @@ function computeRange(key, first, n) {
     const stride = (COMB_PER_SEGMENT + 1) * 5;
     return Array.from({ length: n }, (_, j) => all.subarray(j * stride, (j + 1) * stride));
   }
-  // cusps: (segment, u, t, x, y) per cusp
-  const flat = spline.cusps(first, n);
+  // cusps: (segment, u, t, point of dim coordinates) per cusp; kept as the
+  // drawn pair.
+  const flat = spline.cusps(first, n), stride = 3 + state.dim, [a, b] = state.pair;
   const out = Array.from({ length: n }, () => null);
-  for (let k = 0; k < flat.length; k += 5) {
-    const j = flat[k] - first;
-    out[j] = out[j] ? Float64Array.from([...out[j], flat[k + 3], flat[k + 4]]) : Float64Array.of(flat[k + 3], flat[k + 4]);
+  for (let k = 0; k < flat.length; k += stride) {
+    const j = flat[k] - first, x = flat[k + 3 + a], y = flat[k + 3 + b];
+    out[j] = out[j] ? Float64Array.from([...out[j], x, y]) : Float64Array.of(x, y);
   }
   return out;
 }
@@ -180,9 +230,13 @@ function requestGlobal() {
   deferredGlobal = false;
   const req = {
     version,
-    points: state.pts.slice(),
-    options: splineOptions(state.opts),
-    volumes: state.overlays.volumes ? state.volumeKind : null,
+    points: fullPoints().slice(),
+    dimension: state.dim,
+    pair: state.pair,
+    options: splineOptions(state.opts, state.dim),
+    // The paper's volumes are drawn for plane curves only (a projected
+    // capsule is not the capsule of the projection).
+    volumes: state.overlays.volumes && state.dim === 2 ? state.volumeKind : null,
     ticks: state.overlays.ticks ? Math.max(1e-9, state.tickSpacing) : null,
     maxTicks: 20000,
   };
@@ -548,7 +602,7 @@ function updateStatus(ms) {
   $('status-points').textContent = `${n} point${n === 1 ? '' : 's'}` + (state.sel.size > 1 ? ` (${state.sel.size} selected)` : '');
   const nseg = spline ? spline.segmentCount() : 0;
   $('status-segments').textContent = `${nseg} segment${nseg === 1 ? '' : 's'}`;
-  $('status-length').textContent = spline ? `length ${sig(totalLength())}` : 'length —';
+  $('status-length').textContent = spline ? `length ${sig(totalLength())}${state.dim > 2 ? ` (${state.dim}-D)` : ''}` : 'length —';
   const cc = cuspCount();
   $('status-cusps').textContent = !spline ? 'cusps —' : cc === null ? 'cusps off' : `${cc} cusp${cc === 1 ? '' : 's'}`;
   const cert = $('status-cert');
@@ -596,11 +650,16 @@ function showMessage(text) {
 // beginEdit() and ends with endEdit(), which records one undo step only if
 // the points or options actually changed. Selecting is not an edit.
 // ---------------------------------------------------------------------------
-function snapshot() { return { pts: state.pts.slice(), opts: { ...state.opts }, selected: state.selected, sel: [...state.sel] }; }
+function snapshot() {
+  return { pts: state.pts.slice(), rest: state.rest.slice(), dim: state.dim, pair: [...state.pair], names: state.names,
+    opts: { ...state.opts }, selected: state.selected, sel: [...state.sel] };
+}
 let pendingEdit = null;
 function sameAsNow(s) {
-  if (s.pts.length !== state.pts.length) return false;
+  if (s.pts.length !== state.pts.length || s.rest.length !== state.rest.length || s.dim !== state.dim) return false;
+  if (s.pair[0] !== state.pair[0] || s.pair[1] !== state.pair[1]) return false;
   for (let i = 0; i < s.pts.length; ++i) if (!Object.is(s.pts[i], state.pts[i])) return false;
+  for (let i = 0; i < s.rest.length; ++i) if (!Object.is(s.rest[i], state.rest[i])) return false;
   for (const k of Object.keys(state.opts)) if (s.opts[k] !== state.opts[k]) return false;
   return true;
 }
@@ -617,7 +676,12 @@ function endEdit() {
 function edit(f) { beginEdit(); f(); endEdit(); }
 function restore(s) {
   state.pts = s.pts;
+  state.rest = s.rest;
+  state.dim = s.dim;
+  state.pair = s.pair;
+  state.names = s.names;
   state.opts = s.opts;
+  syncProjection();
   state.sel = new Set(s.sel.filter((i) => i < count()));
   state.selected = s.selected < count() ? s.selected : -1;
   syncControls();
@@ -633,18 +697,39 @@ function select(list, primary = list.length ? list[list.length - 1] : -1) {
   requestFrame();
 }
 
-function setPoints(flat) {
-  state.pts = flat;
+// A plane curve (flat x, y).
+function setPoints(flat) { setDocument(flat, 2); }
+// A curve of any dimension (flat, dim per point), shown on `pair`.
+function setDocument(full, dim, names = coordinateNames(dim), pair = [0, 1]) {
+  const { pts, rest } = splitPoints(full, dim, pair);
+  state.pts = pts;
+  state.rest = rest;
+  state.dim = dim;
+  state.pair = pair;
+  state.names = names;
+  syncProjection();
   select([]);
   markAll();
   changed();
 }
 
-function insertPoint(k, x, y) {
+// Insert point (x, y) before point k; `rest`: its hidden coordinates (a
+// point of a projected curve), by default those of its neighbour (the point
+// before it, or the first): a point added in the view's plane lies in the
+// plane parallel to it through that neighbour.
+function insertPoint(k, x, y, rest = null) {
   const n = count(), a = new Float64Array(2 * (n + 1));
   a.set(state.pts.subarray(0, 2 * k));
   a[2 * k] = x; a[2 * k + 1] = y;
   a.set(state.pts.subarray(2 * k), 2 * k + 2);
+  const r = state.dim - 2;
+  if (r > 0) {
+    const b = new Float64Array(r * (n + 1));
+    b.set(state.rest.subarray(0, r * k));
+    b.set(rest ?? (n ? restOf(Math.max(0, k - 1)) : new Float64Array(r)), r * k);
+    b.set(state.rest.subarray(r * k), r * (k + 1));
+    state.rest = b;
+  }
   const before = state.opts.closed ? n : n - 1;
   state.pts = a;
   select([k]);
@@ -659,6 +744,13 @@ function deletePoint(k) {
   a.set(state.pts.subarray(0, 2 * k));
   a.set(state.pts.subarray(2 * k + 2), 2 * k);
   state.pts = a;
+  const r = state.dim - 2;
+  if (r > 0) {
+    const b = new Float64Array(r * (n - 1));
+    b.set(state.rest.subarray(0, r * k));
+    b.set(state.rest.subarray(r * (k + 1)), r * k);
+    state.rest = b;
+  }
   const next = Math.min(k, n - 2);
   select(next >= 0 ? [next] : []);
   if (n - 1 >= 3 && k > 0 && k < n - 1) { shiftCaches(k, -1); markAround(k, -3, 2); } else markAll();
@@ -670,9 +762,14 @@ function deleteSelected() {
   if (!sel.length) return;
   if (sel.length === 1) { edit(() => deletePoint(sel[0])); return; }
   edit(() => {
-    const drop = new Set(sel), keep = [];
-    for (let i = 0; i < count(); ++i) if (!drop.has(i)) keep.push(state.pts[2 * i], state.pts[2 * i + 1]);
+    const drop = new Set(sel), keep = [], keepRest = [], r = state.dim - 2;
+    for (let i = 0; i < count(); ++i) {
+      if (drop.has(i)) continue;
+      keep.push(state.pts[2 * i], state.pts[2 * i + 1]);
+      for (let j = 0; j < r; ++j) keepRest.push(state.rest[i * r + j]);
+    }
     state.pts = Float64Array.from(keep);
+    state.rest = Float64Array.from(keepRest);
     select([]);
     markAll();
     changed();
@@ -712,7 +809,8 @@ function insertAfter(k) {
     if (spline && k < nseg) {
       const g = spline.grid();
       const p = spline.evaluate((g[k] + g[k + 1]) / 2);
-      insertPoint(k + 1, p[0], p[1]);
+      const [xy, rest] = splitOne(p);
+      insertPoint(k + 1, xy[0], xy[1], rest);
     } else {
       const x = state.pts[2 * k], y = state.pts[2 * k + 1];
       const dx = n > 1 ? x - state.pts[2 * k - 2] : 40 / view.s, dy = n > 1 ? y - state.pts[2 * k - 1] : 0;
@@ -785,6 +883,9 @@ function setYUp(on) {
   view.yUp = on;
   view.y0 = cy - (ys() * h) / 2 / view.s;
   $('y-up').checked = on;
+  // Remembered by the browser: the curve file has no place for it (every
+  // field not in docs/spec.md is an error to the command line).
+  try { localStorage.setItem(Y_UP_KEY, on ? '1' : '0'); } catch { /* storage off: for this page only */ }
   requestFrame();
 }
 
@@ -820,11 +921,54 @@ function hit(px, py, r = 9) {
   }
   return best;
 }
-// The nearest curve point to screen (px, py) if within r px: { segment, point }.
+// A point of the curve (dim coordinates) -> [[x, y], hidden coordinates].
+function splitOne(p) {
+  const h = hidden();
+  return [[p[state.pair[0]], p[state.pair[1]]], Float64Array.from(h, (k) => p[k])];
+}
+// The nearest curve point to screen (px, py) if within r px: { segment,
+// point: [x, y], rest }. A projected curve is searched in the view's plane
+// (nearestProjected), then evaluated with every coordinate.
 function nearCurve(px, py, r) {
   if (!spline) return null;
-  const near = spline.nearest(toWorld(px, py));
-  return Math.sqrt(near.distanceSq) * view.s <= r ? near : null;
+  if (state.dim === 2) {
+    const near = spline.nearest(toWorld(px, py));
+    return Math.sqrt(near.distanceSq) * view.s <= r ? { segment: near.segment, point: near.point, rest: null } : null;
+  }
+  const near = nearestProjected(bez, toWorld(px, py), r / view.s);
+  if (!near) return null;
+  const g = spline.grid(), t = g[near.segment] + near.u * (g[near.segment + 1] - g[near.segment]);
+  const [xy, rest] = splitOne(spline.evaluate(Math.min(t, spline.tMax())));
+  return { segment: near.segment, point: xy, rest };
+}
+// The nearest point within `within` (world units) of q on the plane
+// Béziers `b` (8 numbers per segment): { segment, u } or null. Segments
+// whose control hull is farther are skipped; the rest sampled, then the
+// best sample refined by bisection on u.
+function nearestProjected(b, q, within) {
+  const at = (k, u) => {
+    const v = 1 - u, c0 = v * v * v, c1 = 3 * v * v * u, c2 = 3 * v * u * u, c3 = u * u * u;
+    return [c0 * b[k] + c1 * b[k + 2] + c2 * b[k + 4] + c3 * b[k + 6], c0 * b[k + 1] + c1 * b[k + 3] + c2 * b[k + 5] + c3 * b[k + 7]];
+  };
+  const d2 = (k, u) => { const p = at(k, u); return (p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2; };
+  let best = null, bd = within * within;
+  for (let i = 0; i < b.length / 8; ++i) {
+    const k = 8 * i;
+    const xa = Math.min(b[k], b[k + 2], b[k + 4], b[k + 6]), xb = Math.max(b[k], b[k + 2], b[k + 4], b[k + 6]);
+    const ya = Math.min(b[k + 1], b[k + 3], b[k + 5], b[k + 7]), yb = Math.max(b[k + 1], b[k + 3], b[k + 5], b[k + 7]);
+    const dx = Math.max(xa - q[0], 0, q[0] - xb), dy = Math.max(ya - q[1], 0, q[1] - yb);
+    if (dx * dx + dy * dy > bd) continue;
+    const m = 32;
+    let u0 = 0, du = 1 / m, e0 = Infinity;
+    for (let j = 0; j <= m; ++j) { const e = d2(k, j / m); if (e < e0) { e0 = e; u0 = j / m; } }
+    for (let it = 0; it < 40; ++it) {
+      du /= 2;
+      const ea = d2(k, Math.max(0, u0 - du)), eb = d2(k, Math.min(1, u0 + du));
+      if (ea < e0 && ea <= eb) { e0 = ea; u0 = Math.max(0, u0 - du); } else if (eb < e0) { e0 = eb; u0 = Math.min(1, u0 + du); }
+    }
+    if (e0 <= bd) { bd = e0; best = { segment: i, u: u0 }; }
+  }
+  return best;
 }
 let spaceDown = false;
 
@@ -872,7 +1016,7 @@ canvas.addEventListener('pointerdown', (e) => {
     const near = nearCurve(px, py, 12);
     if (near) {
       beginEdit();
-      insertPoint(near.segment + 1, near.point[0], near.point[1]);
+      insertPoint(near.segment + 1, near.point[0], near.point[1], near.rest);
       startMove([near.segment + 1], px, py);
       return;
     }
@@ -892,7 +1036,9 @@ function addPoint(px, py) {
   beginEdit();
   const [x, y] = snap(...toWorld(px, py));
   const atStart = state.selected === 0 && count() > 1 && state.sel.size === 1;
-  insertPoint(atStart ? 0 : count(), x, y);
+  // A projected curve: the new point takes the hidden coordinates of the
+  // end point it continues from.
+  insertPoint(atStart ? 0 : count(), x, y, count() ? restOf(atStart ? 0 : count() - 1) : null);
 }
 
 canvas.addEventListener('pointermove', (e) => {
@@ -970,7 +1116,7 @@ canvas.addEventListener('dblclick', (e) => {
   const [px, py] = local(e);
   if (hit(px, py) >= 0) return;
   const near = nearCurve(px, py, 8);
-  if (near) edit(() => insertPoint(near.segment + 1, near.point[0], near.point[1]));
+  if (near) edit(() => insertPoint(near.segment + 1, near.point[0], near.point[1], near.rest));
 });
 // Wheel: scroll pans, Ctrl/⌘+scroll zooms (a touchpad pinch arrives as
 // Ctrl+wheel too).
@@ -1045,6 +1191,50 @@ function toggleHelp(show = $('help').hidden) {
   $('help-button').setAttribute('aria-expanded', String(show));
   if (show) $('help-close').focus(); else canvas.focus({ preventScroll: true });
 }
+
+// ---------------------------------------------------------------------------
+// Projection: a curve of 3 or more coordinates is shown on two of them, and
+// says so (the banner over the canvas, with the choice of the pair).
+// ---------------------------------------------------------------------------
+function projectionText() {
+  const d = state.dim, N = state.names, [a, b] = state.pair, h = hidden().map((k) => N[k]);
+  const list = (xs) => (xs.length <= 3 ? xs.join(', ') : `${xs.slice(0, 2).join(', ')}, … ${xs[xs.length - 1]}`);
+  return `${d}-D curve (${list(N)}) shown as its projection on ${N[a]}, ${N[b]}. ` +
+    `Edits move points in ${N[a]}, ${N[b]} and keep ${list(h)} (a new point takes ${h.length === 1 ? 'it' : 'them'} from its neighbour or the curve). ` +
+    `Length, cusps and the certificate are of the ${d}-D curve; the comb and bounding volumes need a plane curve. ` +
+    `JSON and CSV exports write all ${d} coordinates; SVG draws ${N[a]}, ${N[b]}.`;
+}
+function syncProjection() {
+  const bar = $('projection'), on = state.dim > 2;
+  bar.hidden = !on;
+  if (!on) return;
+  $('projection-text').textContent = projectionText();
+  for (const [id, k] of [['pair-x', 0], ['pair-y', 1]]) {
+    const el = $(id);
+    const want = state.names.map((n, i) => `${i}:${n}`).join('|');
+    if (el.dataset.options !== want) {
+      el.replaceChildren(...state.names.map((n, i) => new Option(n, String(i))));
+      el.dataset.options = want;
+    }
+    el.value = String(state.pair[k]);
+  }
+}
+// Show coordinates (a, b): one undo step; the same coordinate on both axes
+// swaps them.
+function setPair(k, c) {
+  const pair = [...state.pair];
+  if (pair[1 - k] === c) pair[1 - k] = pair[k];
+  pair[k] = c;
+  if (pair[0] === state.pair[0] && pair[1] === state.pair[1]) return;
+  edit(() => {
+    const sel = [...state.sel], selected = state.selected;
+    setDocument(fullPoints(), state.dim, state.names, pair);
+    select(sel, selected);
+  });
+  fit();
+}
+$('pair-x').addEventListener('change', (e) => setPair(0, Number(e.target.value)));
+$('pair-y').addEventListener('change', (e) => setPair(1, Number(e.target.value)));
 
 // ---------------------------------------------------------------------------
 // Controls
@@ -1148,8 +1338,10 @@ function download(name, text, type) {
   a.remove();
   setTimeout(() => URL.revokeObjectURL(url), 1000);
 }
-$('export-json').addEventListener('click', () => download('crspline-points.json', pointsToJson(state.pts, state.opts), 'application/json'));
-$('export-csv').addEventListener('click', () => download('crspline-points.csv', pointsToCsv(state.pts), 'text/csv'));
+// JSON and CSV write every coordinate (a projected curve keeps its
+// dimension); SVG draws the view's two.
+$('export-json').addEventListener('click', () => download('crspline-points.json', pointsToJson(fullPoints(), state.opts, state.dim), 'application/json'));
+$('export-csv').addEventListener('click', () => download('crspline-points.csv', pointsToCsv(fullPoints(), state.dim, state.names), 'text/csv'));
 $('export-svg').addEventListener('click', () => {
   rebuild();
   download('crspline-curve.svg', curveToSvg(bez, state.pts, { closed: state.opts.closed }), 'image/svg+xml');
@@ -1157,13 +1349,20 @@ $('export-svg').addEventListener('click', () => {
 
 async function importFile(file) {
   try {
-    const { points, options } = parsePoints(await file.text(), file.name);
+    const { points, dimension, names, options, notKept } = parsePoints(await file.text(), file.name);
     edit(() => {
       state.opts = options;
       syncControls();
-      setPoints(points);
+      setDocument(points, dimension, names);
     });
     fit();
+    // Nothing read is dropped without a word: the command line's requests
+    // (t, derivatives, ...) are not part of the curve.
+    if (notKept.length) {
+      importMessage = `${file.name}: opened; ${notKept.map((k) => `"${k}"`).join(', ')} ${notKept.length === 1 ? 'is a request' : 'are requests'} ` +
+        'to the command line, not part of the curve: not kept';
+      requestFrame();
+    }
   } catch (e) {
     importMessage = `import ${file.name}: ${e.message}`;
     requestFrame();
@@ -1228,6 +1427,12 @@ window.editor = {
   get view() { return { ...view }; },
   get undoDepth() { return undoStack.length; },
   setPoints(list) { edit(() => setPoints(Float64Array.from(list.flat()))); },
+  get dimension() { return state.dim; },
+  get pair() { return [...state.pair]; },
+  /// Every coordinate of every point, flat (dimension per point).
+  get fullPoints() { return Array.from(fullPoints()); },
+  /// What the JSON export writes.
+  exportJson() { return pointsToJson(fullPoints(), state.opts, state.dim); },
   worldToScreen(x, y) { return [SX(x), SY(y)]; },
   screenToWorld(px, py) { return toWorld(px, py); },
   zoomBy(f, px = canvas.clientWidth / 2, py = canvas.clientHeight / 2) { zoomAt(px, py, f); },
@@ -1247,6 +1452,7 @@ window.editor = {
 };
 
 $('version').textContent = `v${M.version()}`;
+try { if (localStorage.getItem(Y_UP_KEY) === '1') setYUp(true); } catch { /* storage off */ }
 syncControls();
 new ResizeObserver(() => requestFrame()).observe(canvas);
 changed();

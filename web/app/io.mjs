@@ -13,9 +13,15 @@ export const defaultOptions = Object.freeze({
 
 const endKinds = ['natural', 'reflect', 'zero'];
 
-/// Options as the WASM Spline takes them ('zero' is a zero tangent, d3's end).
-export function splineOptions(o) {
-  const end = (e) => (e === 'zero' ? { tangent: [0, 0] } : e);
+/// The editor holds curves of 2 to 16 coordinates (the curve file's range
+/// above 1-D); it draws two of them (see coordinateNames and the editor's
+/// projection). The WASM module builds the curve; it may take fewer.
+export const maxDimension = 16;
+
+/// Options as the WASM Spline takes them ('zero' is a zero tangent, d3's
+/// end, of `dimension` coordinates).
+export function splineOptions(o, dimension = 2) {
+  const end = (e) => (e === 'zero' ? { tangent: new Array(dimension).fill(0) } : e);
   const opt = { alpha: o.alpha, tension: o.tension, closed: o.closed };
   if (!o.closed) {
     opt.start = end(o.start);
@@ -24,24 +30,44 @@ export function splineOptions(o) {
   return opt;
 }
 
+/// Names of the coordinates of a `dimension`-D curve: x, y (, z (, w)) up
+/// to 4, x1 .. xD beyond (the command line numbers columns from 1).
+export function coordinateNames(dimension) {
+  if (dimension <= 4) return ['x', 'y', 'z', 'w'].slice(0, dimension);
+  return Array.from({ length: dimension }, (_, k) => `x${k + 1}`);
+}
+
+// "point 0 has 1 coordinate; the editor draws curves of 2 to 16 coordinates"
+function checkDimension(d, what) {
+  if (d >= 2 && d <= maxDimension) return;
+  throw new Error(`${what} has ${d} coordinate${d === 1 ? '' : 's'}; the editor draws curves of 2 to ${maxDimension} coordinates`);
+}
+
+// Points of any one dimension from 2 to 16 (every point as many coordinates
+// as the first): { flat, dimension }. Nothing is cut: a 3-D file stays 3-D.
 function checkPoints(points, where) {
-  if (!Array.isArray(points)) throw new Error(`${where}: "points" must be an array of [x, y]`);
-  const flat = new Float64Array(points.length * 2);
+  if (!Array.isArray(points)) throw new Error(`${where}: "points" must be an array of [x, y, ...]`);
+  let dim = 0, flat = null;
   points.forEach((p, i) => {
     const xy = Array.isArray(p) ? p : p && typeof p === 'object' ? [p.x, p.y] : null;
-    if (!xy || xy.length < 2) throw new Error(`${where}: point ${i} is not [x, y]`);
-    // Never cut silently: a curve in 3 or more dimensions is refused.
-    if (xy.length > 2) {
-      throw new Error(`${where}: point ${i} has ${xy.length} coordinates; the editor draws 2-D curves ` +
-                      `(use 'crspline plot --columns' to view two of them)`);
+    if (!xy || xy.length < 2) {
+      if (Array.isArray(xy) && xy.length === 1 && i === 0) checkDimension(1, `${where}: point 0`);
+      throw new Error(`${where}: point ${i} is not [x, y]`);
     }
-    for (let k = 0; k < 2; ++k) {
-      const v = Number(xy[k]);
-      if (!Number.isFinite(v)) throw new Error(`${where}: point ${i}, coordinate ${k} is not a finite number (${xy[k]})`);
-      flat[2 * i + k] = v;
+    if (i === 0) {
+      dim = xy.length;
+      checkDimension(dim, `${where}: point 0`);
+      flat = new Float64Array(points.length * dim);
+    } else if (xy.length !== dim) {
+      throw new Error(`${where}: point ${i} has ${xy.length} coordinates, point 0 has ${dim}`);
+    }
+    for (let k = 0; k < dim; ++k) {
+      const v = typeof xy[k] === 'number' ? xy[k] : NaN;
+      if (!Number.isFinite(v)) throw new Error(`${where}: point ${i}, coordinate ${k} is not a finite number (${JSON.stringify(xy[k]) ?? xy[k]})`);
+      flat[dim * i + k] = v;
     }
   });
-  return flat;
+  return { flat: flat ?? new Float64Array(0), dimension: dim || 2 };
 }
 
 function checkOptions(o, where) {
@@ -65,12 +91,14 @@ function checkOptions(o, where) {
 
 // The curve file's end conditions ("end" as the command line reads it:
 // "natural" | "reflect" | "closed" | {"start": E, "end": E}) as editor
-// options; a tangent is supported only when it is zero (d3's end).
-function endFromFile(e, where) {
+// options; a tangent is supported only when it is zero (d3's end), with as
+// many coordinates as the points.
+function endFromFile(e, where, dimension) {
+  const zero = `[${new Array(dimension).fill(0).join(', ')}]`;
   const one = (x, path) => {
     if (x === 'natural' || x === 'reflect') return x;
-    if (Array.isArray(x) && x.length === 2 && x.every((v) => v === 0)) return 'zero';
-    throw new Error(`${where}: ${path}: the editor supports "natural", "reflect" or a zero tangent [0, 0], got ${JSON.stringify(x)}`);
+    if (Array.isArray(x) && x.length === dimension && x.every((v) => v === 0)) return 'zero';
+    throw new Error(`${where}: ${path}: the editor supports "natural", "reflect" or a zero tangent ${zero}, got ${JSON.stringify(x)}`);
   };
   if (e === 'closed') return { closed: true };
   if (typeof e === 'string') return { closed: false, start: one(e, 'end'), end: one(e, 'end') };
@@ -84,19 +112,24 @@ function endFromFile(e, where) {
 }
 
 // The fields of a curve file the editor reads: the command line's
-// (docs/spec.md) that a 2-D editor curve can hold, plus the editor's older
-// export form ("format", "dimension", "options"). Any other field is an
-// error naming it, never dropped.
+// (docs/spec.md) that an editor curve can hold, plus the editor's older
+// export form ("format", "dimension", "options"). The command line's
+// requests (what to compute: t, s, derivatives, ...) are not part of the
+// curve: they are read past and named in `notKept`, which the editor shows.
+// Any other field is an error naming it, never dropped.
 const fileFields = ['points', 'alpha', 'tension', 'end', 'format', 'dimension', 'options'];
+export const requestFields = ['t', 's', 'derivatives', 'accuracy', 'count', 'spacing', 'tolerance'];
 
-function optionsFromFile(data, where) {
+function optionsFromFile(data, where, dimension) {
   for (const key of Object.keys(data)) {
-    if (!fileFields.includes(key)) throw new Error(`${where}: field '${key}' is not supported by the editor`);
+    if (!fileFields.includes(key) && !requestFields.includes(key)) throw new Error(`${where}: field '${key}' is not supported by the editor`);
   }
   if (data.format !== undefined && data.format !== 'crspline-points') {
     throw new Error(`${where}: format must be "crspline-points", got ${JSON.stringify(data.format)}`);
   }
-  if (data.dimension !== undefined && data.dimension !== 2) throw new Error(`${where}: the editor is 2-D, got dimension ${data.dimension}`);
+  if (data.dimension !== undefined && data.dimension !== dimension) {
+    throw new Error(`${where}: dimension is ${JSON.stringify(data.dimension)}, but the points have ${dimension} coordinates`);
+  }
   const top = ['alpha', 'tension', 'end'].filter((k) => data[k] !== undefined);
   if (top.length && data.options !== undefined) {
     throw new Error(`${where}: give "options" or the top-level ${top.map((k) => `"${k}"`).join(', ')}, not both`);
@@ -104,15 +137,17 @@ function optionsFromFile(data, where) {
   if (data.options !== undefined) return checkOptions(data.options, where);
   const o = {};
   for (const key of ['alpha', 'tension']) if (data[key] !== undefined) o[key] = data[key];
-  if (data.end !== undefined) Object.assign(o, endFromFile(data.end, where));
+  if (data.end !== undefined) Object.assign(o, endFromFile(data.end, where, dimension));
   return checkOptions(o, where);
 }
 
-/// Parse an export back: JSON (the curve file of docs/spec.md: {points,
-/// alpha, tension, end}; the older {points, options}; or a bare [[x, y], ...])
-/// or CSV (x,y per line; a header line and # comments are skipped).
-/// Returns { points: Float64Array (flat x, y), options }. Throws Error with
-/// the line or index at fault.
+/// Parse a curve file: JSON (the curve file of docs/spec.md: {points,
+/// alpha, tension, end}; the older {points, options}; or a bare
+/// [[x, y, ...], ...]) or CSV (one point per line, 2 to 16 numbers; a header
+/// line names the coordinates; # comments are skipped).
+/// Returns { points: Float64Array (flat, `dimension` numbers per point),
+/// dimension, names (the coordinates' names), options, notKept (request
+/// fields read past) }. Throws Error with the line or index at fault.
 export function parsePoints(text, name = '') {
   const trimmed = text.trim();
   const looksJson = /\.json$/i.test(name) || trimmed.startsWith('{') || trimmed.startsWith('[');
@@ -123,49 +158,67 @@ export function parsePoints(text, name = '') {
     } catch (e) {
       throw new Error(`JSON: ${e.message}`);
     }
-    if (Array.isArray(data)) return { points: checkPoints(data, 'JSON'), options: { ...defaultOptions } };
+    const result = (pointsData, options = () => ({ ...defaultOptions }), notKept = []) => {
+      const { flat, dimension } = checkPoints(pointsData, 'JSON');
+      return { points: flat, dimension, names: coordinateNames(dimension), options: options(dimension), notKept };
+    };
+    if (Array.isArray(data)) return result(data);
     if (data && typeof data === 'object') {
-      const options = optionsFromFile(data, 'JSON');
-      return { points: checkPoints(data.points, 'JSON'), options };
+      return result(data.points, (d) => optionsFromFile(data, 'JSON', d), requestFields.filter((k) => data[k] !== undefined));
     }
     throw new Error('JSON: expected {"points": [[x, y], ...]} or [[x, y], ...]');
   }
   const xs = [];
+  let dim = 0, header = null;
   const lines = trimmed.split(/\r?\n/);
   lines.forEach((line, i) => {
     const l = line.trim();
     if (!l || l.startsWith('#')) return;
     const cells = l.split(/[,;\t ]+/);
-    if (cells.length < 2) throw new Error(`CSV line ${i + 1}: expected x,y, got "${l}"`);
-    const x = Number(cells[0]), y = Number(cells[1]);
-    if (!Number.isFinite(x) || !Number.isFinite(y) || cells[0] === '' || cells[1] === '') {
+    const numbers = cells.map((c) => (c === '' ? NaN : Number(c)));
+    if (!numbers.every(Number.isFinite)) {
       // A header: the first line, with no cell that reads as a number,
       // NaN or an infinity ("NaN,1" is a bad point, not a header).
       const numberLike = (c) => c !== '' && (Number.isFinite(Number(c)) || /^[+-]?(nan|inf(inity)?)$/i.test(c));
-      if (xs.length === 0 && /[a-z]/i.test(l) && !cells.some(numberLike)) return;
-      throw new Error(`CSV line ${i + 1}: "${l}" is not two finite numbers`);
+      if (dim === 0 && header === null && /[a-z]/i.test(l) && !cells.some(numberLike)) {
+        header = cells.map((c) => c.replace(/^"(.*)"$/, '$1'));
+        return;
+      }
+      const k = dim || (header ? header.length : cells.length);
+      throw new Error(`CSV line ${i + 1}: "${l}" is not ${k === 2 ? 'two' : k} finite numbers`);
     }
-    xs.push(x, y);
+    if (dim === 0) {
+      dim = cells.length;
+      checkDimension(dim, `CSV line ${i + 1}: "${l}"`);
+      if (header && header.length !== dim) throw new Error(`CSV line ${i + 1}: ${dim} numbers, but the header has ${header.length} names`);
+    } else if (cells.length !== dim) {
+      throw new Error(`CSV line ${i + 1}: expected ${dim} numbers like the first point, got ${cells.length}`);
+    }
+    xs.push(...numbers);
   });
-  return { points: Float64Array.from(xs), options: { ...defaultOptions } };
+  const dimension = dim || 2;
+  return { points: Float64Array.from(xs), dimension, names: header ?? coordinateNames(dimension), options: { ...defaultOptions }, notKept: [] };
 }
 
 // Shortest round-trip text of a double, keeping the sign of -0.
 const num = (x) => (Object.is(x, -0) ? '-0' : String(x));
 const pairs = (flat) => Array.from({ length: flat.length / 2 }, (_, i) => [flat[2 * i], flat[2 * i + 1]]);
+const rows = (flat, d) => Array.from({ length: flat.length / d }, (_, i) => Array.from(flat.subarray(d * i, d * i + d), num));
 
-/// The curve file (docs/spec.md): the points and the command line's fields,
-/// so that every crspline subcommand reads an export unchanged.
-export function pointsToJson(flat, options) {
+/// The curve file (docs/spec.md): the points (`dimension` numbers each) and
+/// the command line's fields, so that every crspline subcommand reads an
+/// export unchanged.
+export function pointsToJson(flat, options, dimension = 2) {
   const o = checkOptions(options, 'options');
-  const body = pairs(flat).map((p) => `    [${num(p[0])}, ${num(p[1])}]`).join(',\n');
-  const e = (x) => (x === 'zero' ? [0, 0] : x);
+  const body = rows(Float64Array.from(flat), dimension).map((p) => `    [${p.join(', ')}]`).join(',\n');
+  const e = (x) => (x === 'zero' ? new Array(dimension).fill(0) : x);
   const end = o.closed ? 'closed' : o.start === o.end && o.start !== 'zero' ? o.start : { start: e(o.start), end: e(o.end) };
   return `{\n  "alpha": ${num(o.alpha)},\n  "tension": ${num(o.tension)},\n  "end": ${JSON.stringify(end)},\n  "points": [\n${body}\n  ]\n}\n`;
 }
 
-export function pointsToCsv(flat) {
-  return 'x,y\n' + pairs(flat).map((p) => `${num(p[0])},${num(p[1])}`).join('\n') + '\n';
+/// CSV with a header of the coordinates' names (x,y by default).
+export function pointsToCsv(flat, dimension = 2, names = coordinateNames(dimension)) {
+  return names.join(',') + '\n' + rows(Float64Array.from(flat), dimension).map((p) => p.join(',')).join('\n') + '\n';
 }
 
 /// SVG path data of the curve from bezierAll()'s flat B0..B3 per segment.

@@ -3,16 +3,20 @@
 // it fails), the paper's bounding volumes and arc-length ticks. The editor
 // runs this in a worker (worker.mjs), or on the main thread without one.
 
-/// req: { version, points (flat Float64Array), options (Spline options),
-///        volumes: 'tightened' | 'local' | null, ticks: spacing | null,
-///        maxTicks }
-/// Returns plain data (structured-clone friendly) tagged with req.version.
+/// req: { version, points (flat Float64Array, `dimension` numbers per point;
+///        2 when absent), pair (the two coordinates drawn; [0, 1]), options
+///        (Spline options), volumes: 'tightened' | 'local' | null (plane
+///        curves), ticks: spacing | null, maxTicks }
+/// Returns plain data (structured-clone friendly) tagged with req.version;
+/// points in it are the drawn pair's (x, y). The certificate, the search
+/// and the ticks' arc length are those of the whole `dimension`-D curve.
 export function computeGlobal(M, req) {
   const t0 = performance.now();
   const out = { version: req.version, error: null };
   let spline = null;
   try {
-    spline = new M.Spline(req.points, 2, req.options);
+    const d = req.dimension ?? 2, [a, b] = req.pair ?? [0, 1];
+    spline = new M.Spline(req.points, d, req.options);
     const cert = spline.certify({ searchOnFailure: true });
     out.cert = {
       certified: cert.certified,
@@ -28,11 +32,26 @@ export function computeGlobal(M, req) {
     // Crossing points, flat x, y: none when certified (the certificate is
     // the proof), else what the exact search found.
     const found = cert.search ? cert.search.intersections : [];
-    out.intersections = Float64Array.from(found.flatMap((x) => [x.point[0], x.point[1]]));
+    out.intersections = Float64Array.from(found.flatMap((x) => [x.point[a], x.point[b]]));
     out.intersectionSegments = found.map((x) => x.segments);
     out.folds = cert.search ? cert.search.folds : [];
     if (req.volumes) out.volumes = spline.boundingVolumes(req.volumes);
-    if (req.ticks) out.ticks = spline.arcLengthTicks(req.ticks, req.maxTicks ?? 20000);
+    if (req.ticks) {
+      const t = spline.arcLengthTicks(req.ticks, req.maxTicks ?? 20000);
+      if (d === 2) {
+        out.ticks = t;
+      } else {
+        // Positions, then unit tangents, of the drawn pair (the tangent of
+        // the projection, normalized; 0 where it vanishes).
+        const n = t.length / (2 * d), p = new Float64Array(4 * n);
+        for (let k = 0; k < n; ++k) {
+          p[2 * k] = t[k * d + a]; p[2 * k + 1] = t[k * d + b];
+          const tx = t[(n + k) * d + a], ty = t[(n + k) * d + b], l = Math.hypot(tx, ty);
+          p[2 * (n + k)] = l > 0 ? tx / l : 0; p[2 * (n + k) + 1] = l > 0 ? ty / l : 0;
+        }
+        out.ticks = p;
+      }
+    }
   } catch (e) {
     out.error = e.message;
   } finally {

@@ -316,7 +316,22 @@ test('io: JSON and CSV round trips are exact; SVG path has one cubic per segment
   // export through every subcommand).
   assert.equal(parsePoints('{"points": [[1, 2], [3, 4]], "alpha": 0}').options.alpha, 0);
   assert.throws(() => parsePoints('{"points": [[1, 2], [3, 4]], "strict": true}'), /field 'strict' is not supported/);
-  assert.throws(() => parsePoints('{"points": [[1, 2, 0], [3, 4, 0]]}'), /point 0 has 3 coordinates/);
+  // 3 to 16 coordinates are kept whole (the editor shows a projection), in
+  // JSON and CSV, and written back whole; 1 or 17 are refused, as are points
+  // of different dimensions.
+  const three = parsePoints('{"points": [[1, 2, 0.5], [3, 4, -0]], "end": {"start": [0, 0, 0]}}');
+  assert.deepEqual([three.dimension, Array.from(three.points), three.names, three.options.start], [3, [1, 2, 0.5, 3, 4, -0], ['x', 'y', 'z'], 'zero']);
+  assert.deepEqual(parsePoints(pointsToJson(three.points, three.options, 3), 'a.json'), { ...three, notKept: [] });
+  const csv3 = parsePoints(pointsToCsv(three.points, 3, ['u', 'v', 'w']), 'a.csv');
+  assert.deepEqual([csv3.dimension, Array.from(csv3.points), csv3.names], [3, Array.from(three.points), ['u', 'v', 'w']]);
+  assert.equal(parsePoints(JSON.stringify({ points: [new Array(16).fill(1), new Array(16).fill(2)] })).dimension, 16);
+  assert.throws(() => parsePoints('{"points": [[1], [2]]}'), /JSON: point 0 has 1 coordinate; the editor draws curves of 2 to 16 coordinates/);
+  assert.throws(() => parsePoints(JSON.stringify({ points: [new Array(17).fill(1)] })), /point 0 has 17 coordinates/);
+  assert.throws(() => parsePoints('{"points": [[1, 2, 0], [3, 4]]}'), /point 1 has 2 coordinates, point 0 has 3/);
+  assert.throws(() => parsePoints('1,2,3\n4,5\n'), /CSV line 2: expected 3 numbers like the first point, got 2/);
+  assert.throws(() => parsePoints('{"points": [[1, 2, 0], [3, 4, 0]], "end": {"end": [0, 0]}}'), /end.end: the editor supports .* a zero tangent \[0, 0, 0\]/);
+  // The command line's requests are read past and named, not kept.
+  assert.deepEqual(parsePoints('{"points": [[0, 0], [1, 1]], "t": [0], "derivatives": [1]}').notKept, ['t', 'derivatives']);
   assert.deepEqual(parsePoints('{"points": [[0, 0], [1, 1]], "options": {"closed": true}}').options.closed, true);
   withSpline(pts.subarray(0, 6), 2, splineOptions({ ...opts, closed: false }), (s) => {
     const bez = s.bezierAll();
