@@ -1199,16 +1199,23 @@ function toggleHelp(show = $('help').hidden) {
 function projectionText() {
   const d = state.dim, N = state.names, [a, b] = state.pair, h = hidden().map((k) => N[k]);
   const list = (xs) => (xs.length <= 3 ? xs.join(', ') : `${xs.slice(0, 2).join(', ')}, … ${xs[xs.length - 1]}`);
-  return `${d}-D curve (${list(N)}) shown as its projection on ${N[a]}, ${N[b]}. ` +
+  return [`${d}-D curve (${list(N)}) shown as its projection on ${N[a]}, ${N[b]}.`,
     `Edits move points in ${N[a]}, ${N[b]} and keep ${list(h)} (a new point takes ${h.length === 1 ? 'it' : 'them'} from its neighbour or the curve). ` +
     `Length, cusps and the certificate are of the ${d}-D curve; the comb and bounding volumes need a plane curve. ` +
-    `JSON and CSV exports write all ${d} coordinates; SVG draws ${N[a]}, ${N[b]}.`;
+    `JSON and CSV exports write all ${d} coordinates; SVG draws ${N[a]}, ${N[b]}.`];
 }
 function syncProjection() {
   const bar = $('projection'), on = state.dim > 2;
   bar.hidden = !on;
   if (!on) return;
-  $('projection-text').textContent = projectionText();
+  // The headline always; the details beside it (under a tap on phones).
+  const [head, more] = projectionText();
+  const b = document.createElement('strong'), m = document.createElement('span');
+  b.textContent = head;
+  m.textContent = ` ${more}`;
+  m.className = 'more';
+  $('projection-text').replaceChildren(b, m);
+  $('projection-text').title = `${head} ${more}`;
   for (const [id, k] of [['pair-x', 0], ['pair-y', 1]]) {
     const el = $(id);
     const want = state.names.map((n, i) => `${i}:${n}`).join('|');
@@ -1233,6 +1240,7 @@ function setPair(k, c) {
   });
   fit();
 }
+$('projection-text').addEventListener('click', () => $('projection').classList.toggle('open'));
 $('pair-x').addEventListener('change', (e) => setPair(0, Number(e.target.value)));
 $('pair-y').addEventListener('change', (e) => setPair(1, Number(e.target.value)));
 
