@@ -139,17 +139,40 @@ function changed() {
   requestFrame();
 }
 
+// While the drag layer draws (see draw), only the segments the drag moves
+// are read back from the new curve (bezier(i), a few numbers) instead of
+// every segment (bezierAll, 64 bytes a segment); the others keep theirs,
+// which differ from the new curve's by rounding at most (their knot
+// intervals and points did not change). Once the drag ends, the whole.
+let bezPartial = false;
 function rebuild() {
-  if (builtVersion === version) return;
+  if (builtVersion === version) {
+    if (bezPartial && spline && !layerWanted()) { bez = project(spline.bezierAll()); bezPartial = false; }
+    return;
+  }
   builtVersion = version;
   if (spline) { spline.delete(); spline = null; }
   splineError = null;
+  const old = bez, partial = layerWanted() && !dirty.all;
   bez = new Float64Array(0);
+  bezPartial = false;
   const n = count();
   if (n >= 2) {
     try {
       spline = new M.Spline(fullPoints(), state.dim, splineOptions(state.opts, state.dim));
-      bez = project(spline.bezierAll());
+      const nseg = spline.segmentCount();
+      if (partial && old.length === 8 * nseg) {
+        const d = state.dim, [a, b] = state.pair;
+        for (const i of dirty.segments) {
+          if (i >= nseg) continue;
+          const q = spline.bezier(i);
+          for (let j = 0; j < 4; ++j) { old[8 * i + 2 * j] = q[j * d + a]; old[8 * i + 2 * j + 1] = q[j * d + b]; }
+        }
+        bez = old;
+        bezPartial = true;
+      } else {
+        bez = project(spline.bezierAll());
+      }
     } catch (e) {
       splineError = e.message;
     }
@@ -307,7 +330,7 @@ function gridStep() {
   return (m < 2 ? 2 : m < 5 ? 5 : 10) * p;
 }
 
-function drawGrid(w, h) {
+function drawGrid(ctx, w, h) {
   const step = gridStep();
   const path = new Path2D(), axes = new Path2D();
   const xa = view.x0, xb = view.x0 + w / view.s;
@@ -388,20 +411,162 @@ function allInside(a) {
   return true;
 }
 
+// Which parts of the base picture (polygon edges, curve segments, control
+// points) to draw: every one (null), every one but those in `skip`, or only
+// those in `only`.
+const every = { only: null, skip: null };
+function* indices(n, part) {
+  if (part.only) { for (const i of part.only) if (i >= 0 && i < n) yield i; return; }
+  for (let i = 0; i < n; ++i) if (!part.skip || !part.skip.has(i)) yield i;
+}
+
+// The base picture: the control polygon, the curve (and its Bézier handles)
+// and the control points, in that order (the comb between polygon and curve
+// when on). Edge i joins points i and i + 1 (the last edge of a closed
+// curve wraps).
+function drawBase(c, P, B, parts, showComb) {
+  const n = P.length / 2, nb = B.length / 8, o = state.overlays;
+  if (o.polygon && n >= 2) {
+    const ne = state.opts.closed ? n : n - 1;
+    const path = new Path2D(), pen = clipPen(path, parts.edges === every && allInside(P));
+    for (const i of indices(ne, parts.edges)) {
+      const j = (i + 1) % n;
+      pen.line(P[2 * i], P[2 * i + 1], P[2 * j], P[2 * j + 1]);
+    }
+    if (n <= 2000) c.setLineDash([4, 4]);  // dashing 10^4 edges costs more than the curve
+    c.strokeStyle = colors.polygon;
+    c.lineWidth = 1;
+    c.stroke(path);
+    c.setLineDash([]);
+  }
+  if (showComb) drawComb();
+  // The curve: one path of cubic Béziers.
+  if (nb > 0) {
+    const path = new Path2D(), pen = clipPen(path, parts.segments === every && allInside(B));
+    for (const i of indices(nb, parts.segments)) {
+      const k = 8 * i;
+      pen.cubic(B[k], B[k + 1], B[k + 2], B[k + 3], B[k + 4], B[k + 5], B[k + 6], B[k + 7], 0);
+    }
+    c.strokeStyle = colors.curve;
+    // Past a few thousand segments a 1-pixel line (Skia's hairline path)
+    // rasterizes several times faster than a thick stroke.
+    c.lineWidth = nb > 2000 ? 1 : 2.5;
+    c.stroke(path);
+  }
+  if (o.handles && nb > 0) {
+    const lines = new Path2D(), dots = new Path2D(), r = 2.5, pen = clipPen(lines);
+    for (const i of indices(nb, parts.segments)) {
+      const k = 8 * i;
+      pen.line(B[k], B[k + 1], B[k + 2], B[k + 3]);
+      pen.line(B[k + 6], B[k + 7], B[k + 4], B[k + 5]);
+      dots.rect(B[k + 2] - r, B[k + 3] - r, 2 * r, 2 * r);
+      dots.rect(B[k + 4] - r, B[k + 5] - r, 2 * r, 2 * r);
+    }
+    c.strokeStyle = colors.handle;
+    c.lineWidth = 1;
+    c.stroke(lines);
+    c.fillStyle = colors.handle;
+    c.fill(dots);
+  }
+  // Control points.
+  if (n > 0) {
+    c.fillStyle = colors.point;
+    if (n > 2000) {
+      // Many points: fillRect each (one path of 10^4 squares fills slower),
+      // those in view only; past 20 000 in view they are closer than the
+      // pixels and the curve through them shows where they are.
+      const W = canvas.clientWidth, H = canvas.clientHeight;
+      let visible = 0;
+      for (let i = 0; i < n; ++i) { const x = P[2 * i], y = P[2 * i + 1]; if (x >= -2 && x <= W + 2 && y >= -2 && y <= H + 2) ++visible; }
+      if (visible <= 20000) {
+        for (const i of indices(n, parts.points)) {
+          const x = P[2 * i], y = P[2 * i + 1];
+          if (x >= -2 && x <= W + 2 && y >= -2 && y <= H + 2) c.fillRect(x - 1, y - 1, 2, 2);
+        }
+      }
+    } else {
+      const r = 4, path = new Path2D();
+      for (const i of indices(n, parts.points)) path.rect(P[2 * i] - r, P[2 * i + 1] - r, 2 * r, 2 * r);
+      c.fill(path);
+    }
+  }
+}
+
+// The drag layer. While points of a long curve are dragged, what the drag
+// cannot change (the grid and the polygon, curve and points away from the
+// dragged points: a segment depends on four points, so dragging point k
+// moves segments k-2 .. k+1, edges k-1 and k) is drawn once into an
+// offscreen canvas; each frame copies it and draws the few parts that move.
+// Only without the comb and the bounding volumes (drawn between the base
+// parts), and while the view stays as it was.
+const LAYER_MIN_SEGMENTS = 2000;
+let layer = null;      // { canvas, key, parts (the moving ones) }
+let useLayer = true;   // tests compare with and without
+let layerFrames = 0;   // frames drawn from the layer (reported)
+function movingParts(idx) {
+  const n = count(), closed = state.opts.closed, nseg = closed ? n : n - 1;
+  const segments = new Set(), edges = new Set();
+  const wrap = (i, m) => (closed ? ((i % m) + m) % m : i);
+  for (const k of idx) {
+    for (let i = k - 2; i <= k + 1; ++i) { const j = wrap(i, nseg); if (j >= 0 && j < nseg) segments.add(j); }
+    for (let i = k - 1; i <= k; ++i) { const j = wrap(i, nseg); if (j >= 0 && j < nseg) edges.add(j); }
+  }
+  return { segments, edges, points: new Set(idx) };
+}
+function layerKey(dpr) {
+  const o = state.overlays;
+  return [canvas.width, canvas.height, dpr, view.s, view.x0, view.y0, view.yUp, state.grid, o.polygon, o.handles,
+    state.opts.closed, count(), bez.length, drag && drag.idx.join(',')].join('|');
+}
+function layerWanted() {
+  const o = state.overlays;
+  return useLayer && drag && drag.kind === 'move' && drag.idx.length <= 64 && !o.comb && !o.volumes &&
+    bez.length / 8 > LAYER_MIN_SEGMENTS;
+}
+
 function draw() {
   const dpr = resize();
-  ctx.setTransform(1, 0, 0, 1, 0, 0);
-  ctx.fillStyle = '#fff';
-  ctx.fillRect(0, 0, canvas.width, canvas.height);
-  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-  ctx.lineJoin = 'round';
-  ctx.lineCap = 'round';
-  if (state.grid) drawGrid(canvas.clientWidth, canvas.clientHeight);
   const n = count(), o = state.overlays;
   const P = toScreen(state.pts, 'pts');
   const B = toScreen(bez, 'bez');
   const fresh = globalCurrent();
   const g = global && !global.error ? global : null;
+  const clear = (c) => {
+    c.setTransform(1, 0, 0, 1, 0, 0);
+    c.fillStyle = '#fff';
+    c.fillRect(0, 0, canvas.width, canvas.height);
+    c.setTransform(dpr, 0, 0, dpr, 0, 0);
+    c.lineJoin = 'round';
+    c.lineCap = 'round';
+  };
+  let moving = null;
+  if (layerWanted()) {
+    const key = layerKey(dpr);
+    if (!layer || layer.key !== key) {
+      // Drawn at the first frame of the drag (or after a zoom during it).
+      const lc = layer && layer.canvas.width === canvas.width && layer.canvas.height === canvas.height
+        ? layer.canvas : Object.assign(document.createElement('canvas'), { width: canvas.width, height: canvas.height });
+      const parts = movingParts(drag.idx), c2 = lc.getContext('2d');
+      clear(c2);
+      if (state.grid) drawGrid(c2, canvas.clientWidth, canvas.clientHeight);
+      drawBase(c2, P, B, { edges: { skip: parts.edges }, segments: { skip: parts.segments }, points: { skip: parts.points } }, false);
+      layer = { canvas: lc, key, parts };
+    }
+    moving = layer.parts;
+  } else {
+    layer = null;
+  }
+  if (moving) {
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.drawImage(layer.canvas, 0, 0);
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    ctx.lineJoin = 'round';
+    ctx.lineCap = 'round';
+    ++layerFrames;
+  } else {
+    clear(ctx);
+    if (state.grid) drawGrid(ctx, canvas.clientWidth, canvas.clientHeight);
+  }
 
   // Bounding volumes first (under everything).
   if (o.volumes && g && g.volumes) {
@@ -409,46 +574,9 @@ function draw() {
     drawVolumes(g.volumes);
     ctx.globalAlpha = 1;
   }
-  if (o.polygon && n >= 2) {
-    const path = new Path2D(), pen = clipPen(path, allInside(P));
-    for (let i = 1; i < n; ++i) pen.line(P[2 * i - 2], P[2 * i - 1], P[2 * i], P[2 * i + 1]);
-    if (state.opts.closed) pen.line(P[2 * n - 2], P[2 * n - 1], P[0], P[1]);
-    if (n <= 2000) ctx.setLineDash([4, 4]);  // dashing 10^4 edges costs more than the curve
-    ctx.strokeStyle = colors.polygon;
-    ctx.lineWidth = 1;
-    ctx.stroke(path);
-    ctx.setLineDash([]);
-  }
-  if (o.comb && cache.comb) drawComb();
-  // The curve: one path of cubic Béziers.
-  const nb = B.length / 8;
-  if (nb > 0) {
-    const path = new Path2D(), pen = clipPen(path, allInside(B));
-    for (let i = 0; i < nb; ++i) {
-      const k = 8 * i;
-      pen.cubic(B[k], B[k + 1], B[k + 2], B[k + 3], B[k + 4], B[k + 5], B[k + 6], B[k + 7], 0);
-    }
-    ctx.strokeStyle = colors.curve;
-    // Past a few thousand segments a 1-pixel line (Skia's hairline path)
-    // rasterizes several times faster than a thick stroke.
-    ctx.lineWidth = nb > 2000 ? 1 : 2.5;
-    ctx.stroke(path);
-  }
-  if (o.handles && nb > 0) {
-    const lines = new Path2D(), dots = new Path2D(), r = 2.5, pen = clipPen(lines);
-    for (let i = 0; i < nb; ++i) {
-      const k = 8 * i;
-      pen.line(B[k], B[k + 1], B[k + 2], B[k + 3]);
-      pen.line(B[k + 6], B[k + 7], B[k + 4], B[k + 5]);
-      dots.rect(B[k + 2] - r, B[k + 3] - r, 2 * r, 2 * r);
-      dots.rect(B[k + 4] - r, B[k + 5] - r, 2 * r, 2 * r);
-    }
-    ctx.strokeStyle = colors.handle;
-    ctx.lineWidth = 1;
-    ctx.stroke(lines);
-    ctx.fillStyle = colors.handle;
-    ctx.fill(dots);
-  }
+  const only = (set) => ({ only: set });
+  drawBase(ctx, P, B, moving ? { edges: only(moving.edges), segments: only(moving.segments), points: only(moving.points) }
+    : { edges: every, segments: every, points: every }, o.comb && cache.comb);
   if (o.ticks && g && g.ticks) {
     ctx.globalAlpha = fresh ? 1 : 0.4;
     const t = g.ticks, m = t.length / 4, path = new Path2D(), L = 5, k = ys();
@@ -462,32 +590,10 @@ function draw() {
     ctx.stroke(path);
     ctx.globalAlpha = 1;
   }
-  // Control points.
-  if (n > 0) {
-    ctx.fillStyle = colors.point;
-    if (n > 2000) {
-      // Many points: fillRect each (one path of 10^4 squares fills slower),
-      // those in view only; past 20 000 in view they are closer than the
-      // pixels and the curve through them shows where they are.
-      const W = canvas.clientWidth, H = canvas.clientHeight;
-      let visible = 0;
-      for (let i = 0; i < n; ++i) { const x = P[2 * i], y = P[2 * i + 1]; if (x >= -2 && x <= W + 2 && y >= -2 && y <= H + 2) ++visible; }
-      if (visible <= 20000) {
-        for (let i = 0; i < n; ++i) {
-          const x = P[2 * i], y = P[2 * i + 1];
-          if (x >= -2 && x <= W + 2 && y >= -2 && y <= H + 2) ctx.fillRect(x - 1, y - 1, 2, 2);
-        }
-      }
-    } else {
-      const r = 4, path = new Path2D();
-      for (let i = 0; i < n; ++i) path.rect(P[2 * i] - r, P[2 * i + 1] - r, 2 * r, 2 * r);
-      ctx.fill(path);
-    }
-    if (state.sel.size) {
-      ctx.strokeStyle = colors.selected;
-      ctx.lineWidth = 1.5;
-      for (const s of state.sel) if (s < n) ctx.strokeRect(P[2 * s] - 7, P[2 * s + 1] - 7, 14, 14);
-    }
+  if (state.sel.size) {
+    ctx.strokeStyle = colors.selected;
+    ctx.lineWidth = 1.5;
+    for (const s of state.sel) if (s < n) ctx.strokeRect(P[2 * s] - 7, P[2 * s + 1] - 7, 14, 14);
   }
   if (o.cusps && cache.cusps) {
     const path = new Path2D(), r = 6;
@@ -597,44 +703,51 @@ function cuspCount() {
   for (const c of cache.cusps) if (c) k += c.length / 2;
   return k;
 }
+// Status texts are written only when they change.
+const setText = (id, text) => { const el = $(id); if (el.textContent !== text) el.textContent = text; };
+let frameTextAt = 0;
 function updateStatus(ms) {
   const n = count();
-  $('status-points').textContent = `${n} point${n === 1 ? '' : 's'}` + (state.sel.size > 1 ? ` (${state.sel.size} selected)` : '');
+  setText('status-points', `${n} point${n === 1 ? '' : 's'}` + (state.sel.size > 1 ? ` (${state.sel.size} selected)` : ''));
   const nseg = spline ? spline.segmentCount() : 0;
-  $('status-segments').textContent = `${nseg} segment${nseg === 1 ? '' : 's'}`;
-  $('status-length').textContent = spline ? `length ${sig(totalLength())}${state.dim > 2 ? ` (${state.dim}-D)` : ''}` : 'length —';
+  setText('status-segments', `${nseg} segment${nseg === 1 ? '' : 's'}`);
+  setText('status-length', spline ? `length ${sig(totalLength())}${state.dim > 2 ? ` (${state.dim}-D)` : ''}` : 'length —');
   const cc = cuspCount();
-  $('status-cusps').textContent = !spline ? 'cusps —' : cc === null ? 'cusps off' : `${cc} cusp${cc === 1 ? '' : 's'}`;
-  const cert = $('status-cert');
-  cert.className = '';
+  setText('status-cusps', !spline ? 'cusps —' : cc === null ? 'cusps off' : `${cc} cusp${cc === 1 ? '' : 's'}`);
+  let text, cls = '';
   if (!spline) {
-    cert.textContent = n < 2 ? 'click to add points' : '—';
+    text = n < 2 ? 'click to add points' : '—';
   } else if (!globalCurrent()) {
-    cert.textContent = deferredGlobal ? 'certificate after release' : 'certifying…';
+    text = deferredGlobal ? 'certificate after release' : 'certifying…';
   } else if (global.error) {
-    cert.textContent = `error: ${global.error}`;
+    text = `error: ${global.error}`;
   } else if (global.cert.certified) {
-    cert.textContent = 'certified intersection-free';
-    cert.className = 'ok';
+    text = 'certified intersection-free';
+    cls = 'ok';
   } else {
     const c = global.cert;
     const k = global.intersections.length / 2 + global.folds.length;
     const found = c.intersects === null ? '' : c.intersects ? `; ${k} self-intersection${k === 1 ? '' : 's'}${c.complete ? '' : ' (search incomplete)'}` : '; no self-intersection found';
-    cert.textContent = `not certified (${c.failedRule.replace(/_/g, ' ')}: ${c.detail})${found}`;
-    cert.className = c.intersects ? 'bad' : '';
+    text = `not certified (${c.failedRule.replace(/_/g, ' ')}: ${c.detail})${found}`;
+    cls = c.intersects ? 'bad' : '';
   }
-  cert.title = cert.textContent;
-  $('status-frame').textContent = `frame ${fmt(ms, 1)} ms`;
+  const cert = $('status-cert');
+  if (cert.textContent !== text) { cert.textContent = text; cert.title = text; }
+  if (cert.className !== cls) cert.className = cls;
+  // The frame time, four times a second (a text that changes every frame
+  // costs a layout every frame).
+  if (performance.now() - frameTextAt > 250) { frameTextAt = performance.now(); setText('status-frame', `frame ${fmt(ms, 1)} ms`); }
   showMessage(importMessage || splineError || '');
   syncPointFields();
+  // For tests: the numbers as data attributes (written when they change).
   const d = document.body.dataset;
-  d.points = n;
-  d.segments = nseg;
-  d.length = spline ? totalLength() : '';
-  d.cusps = cc ?? '';
-  d.certified = spline && globalCurrent() && !global.error ? String(global.cert.certified) : '';
-  d.intersections = spline && globalCurrent() && !global.error ? String(global.intersections.length / 2) : '';
-  d.version = version;
+  const data = {
+    points: n, segments: nseg, length: spline ? totalLength() : '', cusps: cc ?? '',
+    certified: spline && globalCurrent() && !global.error ? String(global.cert.certified) : '',
+    intersections: spline && globalCurrent() && !global.error ? String(global.intersections.length / 2) : '',
+    version,
+  };
+  for (const [k, v] of Object.entries(data)) if (d[k] !== String(v)) d[k] = v;
 }
 
 // The message (import errors, the library's complaint about the curve):
@@ -900,9 +1013,16 @@ function setYUp(on) {
 //   marquee  Shift+drag on empty canvas: select the points inside
 // ---------------------------------------------------------------------------
 const pointers = new Map();  // pointerId -> [x, y] in canvas CSS px
-function local(e) {
-  const r = canvas.getBoundingClientRect();
-  return [e.clientX - r.left - canvas.clientLeft, e.clientY - r.top - canvas.clientTop];
+// The canvas' position, read again at the start of every gesture (and after
+// a resize): reading it on every move would force a layout each time, since
+// the status line changes every frame.
+let canvasRect = null;
+function local(e, fresh = false) {
+  if (fresh || !canvasRect) {
+    const r = canvas.getBoundingClientRect();
+    canvasRect = [r.left + canvas.clientLeft, r.top + canvas.clientTop];
+  }
+  return [e.clientX - canvasRect[0], e.clientY - canvasRect[1]];
 }
 const toWorld = (px, py) => [view.x0 + px / view.s, view.y0 + (py * ys()) / view.s];
 function snap(x, y) {
@@ -983,7 +1103,7 @@ canvas.addEventListener('contextmenu', (e) => e.preventDefault());
 canvas.addEventListener('pointerdown', (e) => {
   canvas.focus({ preventScroll: true });
   try { canvas.setPointerCapture(e.pointerId); } catch { /* synthetic events have no active pointer */ }
-  const [px, py] = local(e);
+  const [px, py] = local(e, true);
   pointers.set(e.pointerId, [px, py]);
   const touch = e.pointerType === 'touch';
   if (touch && pointers.size === 2) {
@@ -1453,8 +1573,12 @@ window.editor = {
   cusps() { rebuild(); return cache.cusps ? cache.cusps.filter(Boolean).flatMap((c) => Array.from(c)) : null; },
   global() { return global; },
   idle() { return new Promise((resolve) => { idleWaiters.push(resolve); requestFrame(); }); },
-  resetFrameStats() { frameTimes.length = 0; curveTimes.length = 0; frameIntervals.length = 0; latencies.length = 0; },
-  frameStats() { return { work: quantiles(frameTimes), curve: quantiles(curveTimes), interval: quantiles(frameIntervals), latency: quantiles(latencies) }; },
+  resetFrameStats() { frameTimes.length = 0; curveTimes.length = 0; frameIntervals.length = 0; latencies.length = 0; layerFrames = 0; },
+  frameStats() { return { work: quantiles(frameTimes), curve: quantiles(curveTimes), interval: quantiles(frameIntervals), latency: quantiles(latencies), layerFrames }; },
+  /// The drag layer on (default) or off, for comparisons; redraws.
+  setDragLayer(on) { useLayer = on; layer = null; requestFrame(); },
+  /// A frame now (in the middle of a gesture too), resolved when drawn.
+  redraw() { return new Promise((resolve) => { requestFrame(); requestAnimationFrame(() => resolve()); }); },
   loadStress,
   loadDemo,
 };
@@ -1462,5 +1586,6 @@ window.editor = {
 $('version').textContent = `v${M.version()}`;
 try { if (localStorage.getItem(Y_UP_KEY) === '1') setYUp(true); } catch { /* storage off */ }
 syncControls();
-new ResizeObserver(() => requestFrame()).observe(canvas);
+new ResizeObserver(() => { canvasRect = null; requestFrame(); }).observe(canvas);
+window.addEventListener('scroll', () => { canvasRect = null; }, true);
 changed();
