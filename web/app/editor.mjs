@@ -120,6 +120,7 @@ function markAround(k, lo = -2, hi = 1) {
 // Keep the caches aligned with segment indices across an insertion
 // (+1) or deletion (-1) of point k.
 function shiftCaches(k, delta) {
+  lenBlocks = null;
   for (const key of Object.keys(cache)) {
     const a = cache[key];
     if (!a) continue;
@@ -190,8 +191,13 @@ function updateCaches() {
     const full = dirty.all || !cache[key] || cache[key].length !== nseg;
     if (full) {
       cache[key] = computeRange(key, 0, nseg);
+      if (key === 'len') lenBlocks = null;
     } else {
-      for (const i of dirty.segments) if (i < nseg) cache[key][i] = computeRange(key, i, 1)[0];
+      for (const i of dirty.segments) {
+        if (i >= nseg) continue;
+        cache[key][i] = computeRange(key, i, 1)[0];
+        if (key === 'len' && lenBlocks) lenBlocks[Math.floor(i / LEN_BLOCK)] = NaN;
+      }
     }
   }
   dirty = { all: false, segments: new Set() };
@@ -219,13 +225,15 @@ function computeRange(key, first, n) {
 // ---------------------------------------------------------------------------
 // Whole-curve overlays: worker, latest request wins
 // ---------------------------------------------------------------------------
-let worker = null, workerBusy = false, queued = null, global = null;
+// queued: the curve changed while the worker was busy; the request is made
+// (the points copied) once it is free, not on every frame meanwhile.
+let worker = null, workerBusy = false, queued = false, global = null;
 try {
   worker = new Worker(new URL('./worker.mjs', import.meta.url), { type: 'module' });
   worker.onmessage = (e) => {
     workerBusy = false;
     global = e.data;
-    if (queued) { const q = queued; queued = null; send(q); }
+    if (queued) { queued = false; requestGlobal(); }
     requestFrame();
     settle();
   };
@@ -251,7 +259,8 @@ function requestGlobal() {
   if (!spline) { global = null; settle(); return; }
   if (drag && drag.kind === 'move' && global && global.ms > DRAG_GLOBAL_BUDGET) { deferredGlobal = true; return; }
   deferredGlobal = false;
-  const req = {
+  if (workerBusy) { queued = true; return; }
+  send({
     version,
     points: fullPoints().slice(),
     dimension: state.dim,
@@ -262,9 +271,7 @@ function requestGlobal() {
     volumes: state.overlays.volumes && state.dim === 2 ? state.volumeKind : null,
     ticks: state.overlays.ticks ? Math.max(1e-9, state.tickSpacing) : null,
     maxTicks: 20000,
-  };
-  if (workerBusy) queued = req;
-  else send(req);
+  });
 }
 const globalCurrent = () => global && global.version === version;
 
@@ -476,8 +483,7 @@ function drawBase(c, P, B, parts, showComb) {
       // those in view only; past 20 000 in view they are closer than the
       // pixels and the curve through them shows where they are.
       const W = canvas.clientWidth, H = canvas.clientHeight;
-      let visible = 0;
-      for (let i = 0; i < n; ++i) { const x = P[2 * i], y = P[2 * i + 1]; if (x >= -2 && x <= W + 2 && y >= -2 && y <= H + 2) ++visible; }
+      const visible = parts.visible ?? visibleCount(P);
       if (visible <= 20000) {
         for (const i of indices(n, parts.points)) {
           const x = P[2 * i], y = P[2 * i + 1];
@@ -490,6 +496,13 @@ function drawBase(c, P, B, parts, showComb) {
       c.fill(path);
     }
   }
+}
+
+function visibleCount(P) {
+  const W = canvas.clientWidth, H = canvas.clientHeight;
+  let visible = 0;
+  for (let i = 0; i < P.length; i += 2) { const x = P[i], y = P[i + 1]; if (x >= -2 && x <= W + 2 && y >= -2 && y <= H + 2) ++visible; }
+  return visible;
 }
 
 // The drag layer. While points of a long curve are dragged, what the drag
@@ -524,11 +537,32 @@ function layerWanted() {
     bez.length / 8 > LAYER_MIN_SEGMENTS;
 }
 
+// Flat world coordinates -> screen, only for items `idx` (stride numbers
+// each) of a buffer that toScreen filled for the same array length.
+function toScreenAt(src, key, stride, idx) {
+  const out = buffers[key];
+  if (!out || out.length !== src.length) return toScreen(src, key);
+  const x0 = view.x0, y0 = view.y0, s = view.s, t = view.s * ys();
+  for (const i of idx) for (let j = i * stride; j < (i + 1) * stride; j += 2) { out[j] = (src[j] - x0) * s; out[j + 1] = (src[j + 1] - y0) * t; }
+  return out;
+}
+
 function draw() {
   const dpr = resize();
   const n = count(), o = state.overlays;
-  const P = toScreen(state.pts, 'pts');
-  const B = toScreen(bez, 'bez');
+  // With the drag layer drawn for this view, only the moving parts (and the
+  // selection) need screen coordinates.
+  const reuse = layerWanted() && layer && layer.key === layerKey(dpr);
+  let P, B;
+  if (reuse) {
+    const m = layer.parts, ids = new Set([...m.points, ...state.sel]);
+    for (const e of m.edges) { ids.add(e); ids.add((e + 1) % n); }
+    P = toScreenAt(state.pts, 'pts', 2, ids);
+    B = toScreenAt(bez, 'bez', 8, m.segments);
+  } else {
+    P = toScreen(state.pts, 'pts');
+    B = toScreen(bez, 'bez');
+  }
   const fresh = globalCurrent();
   const g = global && !global.error ? global : null;
   const clear = (c) => {
@@ -550,7 +584,7 @@ function draw() {
       clear(c2);
       if (state.grid) drawGrid(c2, canvas.clientWidth, canvas.clientHeight);
       drawBase(c2, P, B, { edges: { skip: parts.edges }, segments: { skip: parts.segments }, points: { skip: parts.points } }, false);
-      layer = { canvas: lc, key, parts };
+      layer = { canvas: lc, key, parts: { ...parts, visible: visibleCount(P) } };
     }
     moving = layer.parts;
   } else {
@@ -575,7 +609,7 @@ function draw() {
     ctx.globalAlpha = 1;
   }
   const only = (set) => ({ only: set });
-  drawBase(ctx, P, B, moving ? { edges: only(moving.edges), segments: only(moving.segments), points: only(moving.points) }
+  drawBase(ctx, P, B, moving ? { edges: only(moving.edges), segments: only(moving.segments), points: only(moving.points), visible: moving.visible }
     : { edges: every, segments: every, points: every }, o.comb && cache.comb);
   if (o.ticks && g && g.ticks) {
     ctx.globalAlpha = fresh ? 1 : 0.4;
@@ -691,11 +725,22 @@ const fmt = (x, d = 2) => (Number.isFinite(x) ? x.toFixed(d) : String(x));
 // Significant digits, whatever the scale: 7 (at least 6 asked for), no
 // trailing exponent noise for ordinary magnitudes.
 const sig = (x, d = 7) => (Number.isFinite(x) ? (x === 0 ? '0' : x.toPrecision(d).replace(/e\+?/, 'e')) : String(x));
+// The total length: Kahan sums of blocks of 512 segment lengths, each
+// redone only when a length in it changed (a drag at 10^5 points changes 4),
+// then of the blocks.
+const LEN_BLOCK = 512;
+let lenBlocks = null;  // block sums; NaN: to redo
+function kahan(a, from = 0, to = a.length) {
+  let s = 0, c = 0;
+  for (let i = from; i < to; ++i) { const y = a[i] - c, t = s + y; c = (t - s) - y; s = t; }
+  return s;
+}
 function totalLength() {
   if (!cache.len) return NaN;
-  let s = 0, c = 0;  // Kahan sum
-  for (const x of cache.len) { const y = x - c, t = s + y; c = (t - s) - y; s = t; }
-  return s;
+  const nb = Math.ceil(cache.len.length / LEN_BLOCK);
+  if (!lenBlocks || lenBlocks.length !== nb) lenBlocks = new Float64Array(nb).fill(NaN);
+  for (let b = 0; b < nb; ++b) if (Number.isNaN(lenBlocks[b])) lenBlocks[b] = kahan(cache.len, b * LEN_BLOCK, Math.min(cache.len.length, (b + 1) * LEN_BLOCK));
+  return kahan(lenBlocks);
 }
 function cuspCount() {
   if (!cache.cusps) return null;
