@@ -512,7 +512,7 @@ function visibleCount(P) {
 // offscreen canvas; each frame copies it and draws the few parts that move.
 // Only without the comb and the bounding volumes (drawn between the base
 // parts), and while the view stays as it was.
-const LAYER_MIN_SEGMENTS = 2000;
+const LAYER_MIN_SEGMENTS = 200;
 let layer = null;      // { canvas, key, parts (the moving ones) }
 let useLayer = true;   // tests compare with and without
 let layerFrames = 0;   // frames drawn from the layer (reported)

@@ -66,6 +66,7 @@ test('the drag layer draws the pixels of a full redraw, mid-drag and after', asy
     { n: 10000, k: 1, closed: false, handles: true },
     { n: 4000, k: 0, closed: true, handles: false },
     { n: 4000, k: 3999, closed: true, handles: true },
+    { n: 1000, k: 500, closed: false, handles: false },  // a dashed polygon
   ];
   for (const c of cases) {
     await page.evaluate((c) => window.editor.loadStress(c.n), c);
