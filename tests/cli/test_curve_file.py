@@ -56,11 +56,21 @@ def test_command_line_input_opens_in_the_editor_with_its_options():
     assert opts == {"alpha": 0, "tension": 0.5, "closed": False, "start": "reflect", "end": "reflect"}
 
 
+def test_grid_kb_strict_and_end_tangents_go_through_the_editor_unchanged(tmp_path):
+    doc = {"points": [[0, 0], [1, 1], [2, 0], [3, 1]], "grid": [0, 1, 2.5, 3], "tension": 0.1,
+           "end": {"start": [1, -0.5], "end": "reflect"},
+           "kb": {"tension": [None, 0.2, -0.1, None], "bias": [0, 0.1, 0, 0]}, "strict": True}
+    text = node(f"const r = io.parsePoints({json.dumps(json.dumps(doc))}, 'c.json');"
+                "process.stdout.write(io.pointsToJson(r.points, r.options, r.dimension));")
+    assert json.loads(text) == doc
+    assert run_json("length", json.loads(text))["total"] == run_json("length", doc)["total"]
+
+
 @pytest.mark.parametrize("text, message", [
-    ('{"points": [[0, 0], [1, 1]], "grid": [0, 1]}', "JSON: field 'grid' is not supported by the editor"),
-    ('{"points": [[0, 0], [1, 1]], "kb": {}}', "JSON: field 'kb' is not supported by the editor"),
+    ('{"points": [[0, 0], [1, 1]], "tangents": [[1, 0], [1, 0]]}', "JSON: field 'tangents' is not supported by the editor"),
+    ('{"points": [[0, 0], [1, 1]], "kb": {"tensions": [0, 0]}}', "JSON: kb: unknown field 'tensions'"),
     ('{"points": [[0], [1]]}', "JSON: point 0 has 1 coordinate; the editor draws curves of 2 to 16 coordinates"),
-    ('{"points": [[0, 0], [1, 1]], "end": {"start": [1, 2]}}', 'JSON: end.start: the editor supports "natural", "reflect" or a zero tangent [0, 0], got [1,2]'),
+    ('{"points": [[0, 0], [1, 1]], "end": {"start": [1]}}', 'JSON: end.start: expected "natural", "reflect" or a tangent of 2 numbers like [0, 0], got [1]'),
     ('x,y\nNaN,1\n2,3\n', 'CSV line 2: "NaN,1" is not two finite numbers'),
     ('NaN,1\n2,3\n', 'CSV line 1: "NaN,1" is not two finite numbers'),
 ])

@@ -818,7 +818,7 @@ function sameAsNow(s) {
   if (s.pair[0] !== state.pair[0] || s.pair[1] !== state.pair[1]) return false;
   for (let i = 0; i < s.pts.length; ++i) if (!Object.is(s.pts[i], state.pts[i])) return false;
   for (let i = 0; i < s.rest.length; ++i) if (!Object.is(s.rest[i], state.rest[i])) return false;
-  for (const k of Object.keys(state.opts)) if (s.opts[k] !== state.opts[k]) return false;
+  for (const k of new Set([...Object.keys(s.opts), ...Object.keys(state.opts)])) if (s.opts[k] !== state.opts[k]) return false;
   return true;
 }
 function beginEdit() { if (!pendingEdit) pendingEdit = snapshot(); }
@@ -889,6 +889,7 @@ function insertPoint(k, x, y, rest = null) {
     state.rest = b;
   }
   const before = state.opts.closed ? n : n - 1;
+  if (state.opts.grid || state.opts.kb) perPointInsert(k);
   state.pts = a;
   select([k]);
   if (before >= 1 && k > 0) { shiftCaches(k, +1); markAround(k, -3, 2); } else markAll();
@@ -901,6 +902,7 @@ function deletePoint(k) {
   const a = new Float64Array(2 * (n - 1));
   a.set(state.pts.subarray(0, 2 * k));
   a.set(state.pts.subarray(2 * k + 2), 2 * k);
+  if (state.opts.grid || state.opts.kb) perPointKeep((i) => i !== k);
   state.pts = a;
   const r = state.dim - 2;
   if (r > 0) {
@@ -921,6 +923,7 @@ function deleteSelected() {
   if (sel.length === 1) { edit(() => deletePoint(sel[0])); return; }
   edit(() => {
     const drop = new Set(sel), keep = [], keepRest = [], r = state.dim - 2;
+    if (state.opts.grid || state.opts.kb) perPointKeep((i) => !drop.has(i));
     for (let i = 0; i < count(); ++i) {
       if (drop.has(i)) continue;
       keep.push(state.pts[2 * i], state.pts[2 * i + 1]);
@@ -947,13 +950,53 @@ function movePoints(idx, from, dx, dy) {
 }
 
 function setOption(key, value) {
-  if (state.opts[key] === value) return;
+  if (state.opts[key] === value && !(key === 'alpha' && state.opts.grid)) return;
   edit(() => {
     state.opts = { ...state.opts, [key]: value };
+    let dropped = false;
+    if (key === 'alpha') dropped = dropGrid();
+    // A closed grid has one knot more (the end of the period).
+    if (key === 'closed' && state.opts.grid) state.opts.grid = value ? extendKnots(state.opts.grid, state.opts.grid.length) : state.opts.grid.slice(0, -1);
     syncControls();
     markAll();
     changed();
+    if (dropped) noteGridDropped();
   });
+}
+
+// Knots and Kochanek-Bartels values from a file follow the points: a new
+// point gets the knot halfway between its neighbours' (beyond an end, one
+// interval further) and zero KB values; a deleted point takes its own away.
+// Choosing alpha replaces the file's knots by alpha's (undo brings them
+// back), and says so.
+function extendKnots(g, k) {
+  const a = g.slice();
+  const t = k > 0 && k < g.length ? (g[k - 1] + g[k]) / 2 : k === 0 ? g[0] - (g[1] - g[0]) : g[k - 1] + (g[k - 1] - g[k - 2]);
+  a.splice(k, 0, t);
+  return a;
+}
+function perPointInsert(k) {
+  const o = { ...state.opts };
+  if (o.grid && o.grid.length >= 2) o.grid = extendKnots(o.grid, k);
+  if (o.kb) o.kb = Object.fromEntries(Object.entries(o.kb).map(([key, v]) => { const a = v.slice(); a.splice(k, 0, 0); return [key, a]; }));
+  state.opts = o;
+}
+// Before points are deleted: keep(i) for the points that stay.
+function perPointKeep(keep) {
+  const o = { ...state.opts }, n = count();
+  if (o.grid) o.grid = o.grid.filter((_, i) => i >= n || keep(i));  // a closed grid's last knot stays
+  if (o.kb) o.kb = Object.fromEntries(Object.entries(o.kb).map(([key, v]) => [key, v.filter((_, i) => keep(i))]));
+  state.opts = o;
+}
+function dropGrid() {
+  if (!state.opts.grid) return false;
+  const { grid, ...rest } = state.opts;
+  state.opts = rest;
+  return true;
+}
+function noteGridDropped() {
+  importMessage = `knots from α = ${state.opts.alpha} now, instead of the file's grid (Ctrl+Z brings it back)`;
+  requestFrame();
 }
 
 // The point after `k` on the curve: the middle (in t) of segment k, or past
@@ -1414,12 +1457,26 @@ $('pair-y').addEventListener('change', (e) => setPair(1, Number(e.target.value))
 // ---------------------------------------------------------------------------
 function syncControls() {
   const o = state.opts;
-  $('alpha').value = o.alpha; $('alpha-value').value = o.alpha.toFixed(2);
+  // Knots from a file's grid: alpha plays no part until it is chosen.
+  $('alpha').value = o.alpha; $('alpha-value').value = o.grid ? 'grid' : o.alpha.toFixed(2);
+  $('alpha').title = o.grid ? "knots from the file's grid; choosing alpha replaces them" : '';
   $('tension').value = o.tension; $('tension-value').value = o.tension.toFixed(2);
   $('closed').checked = o.closed;
-  $('start').value = o.start; $('end').value = o.end;
+  // An end tangent from a file (not zero) shows as its own choice.
+  for (const id of ['start', 'end']) {
+    const el = $(id), v = o[id];
+    let opt = el.querySelector('option[value="tangent"]');
+    if (Array.isArray(v)) {
+      if (!opt) { opt = new Option('', 'tangent'); el.append(opt); }
+      opt.textContent = `tangent [${v.join(', ')}]`;
+      el.value = 'tangent';
+    } else {
+      if (opt) opt.remove();
+      el.value = v;
+    }
+  }
   $('start').disabled = $('end').disabled = o.closed;
-  for (const b of document.querySelectorAll('.presets button')) b.classList.toggle('active', Number(b.dataset.alpha) === o.alpha);
+  for (const b of document.querySelectorAll('.presets button')) b.classList.toggle('active', !o.grid && Number(b.dataset.alpha) === o.alpha);
 }
 
 // The selected point's coordinates, editable (shortest round-trip text).
@@ -1452,17 +1509,18 @@ for (const id of ['alpha', 'tension']) {
   el.addEventListener('input', () => {
     beginEdit();
     state.opts = { ...state.opts, [id]: Number(el.value) };
+    const dropped = id === 'alpha' && dropGrid();
     syncControls();
     markAll();
     changed();
+    if (dropped) noteGridDropped();
   });
   el.addEventListener('change', endEdit);
   el.addEventListener('blur', endEdit);
 }
 for (const b of document.querySelectorAll('.presets button')) b.addEventListener('click', () => setOption('alpha', Number(b.dataset.alpha)));
 $('closed').addEventListener('change', (e) => setOption('closed', e.target.checked));
-$('start').addEventListener('change', (e) => setOption('start', e.target.value));
-$('end').addEventListener('change', (e) => setOption('end', e.target.value));
+for (const id of ['start', 'end']) $(id).addEventListener('change', (e) => { if (e.target.value !== 'tangent') setOption(id, e.target.value); });
 
 for (const box of document.querySelectorAll('[data-overlay]')) {
   box.addEventListener('change', () => {
@@ -1523,6 +1581,12 @@ $('export-svg').addEventListener('click', () => {
 async function importFile(file) {
   try {
     const { points, dimension, names, options, notKept } = parsePoints(await file.text(), file.name);
+    // What the editor holds, the library checks (the same words as the
+    // command line: a grid of the wrong length, a KB value, ...). A module
+    // that cannot build this dimension yet opens it anyway, and says so.
+    if (points.length >= 2 * dimension) {
+      try { new M.Spline(points, dimension, splineOptions(options, dimension)).delete(); } catch (e) { if (!/dimension must be/.test(e.message)) throw e; }
+    }
     edit(() => {
       state.opts = options;
       syncControls();
@@ -1600,6 +1664,7 @@ window.editor = {
   get view() { return { ...view }; },
   get undoDepth() { return undoStack.length; },
   setPoints(list) { edit(() => setPoints(Float64Array.from(list.flat()))); },
+  setSelection(list) { select(list); },
   get dimension() { return state.dim; },
   get pair() { return [...state.pair]; },
   /// Every coordinate of every point, flat (dimension per point).

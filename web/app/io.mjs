@@ -20,9 +20,16 @@ export const maxDimension = 16;
 
 /// Options as the WASM Spline takes them ('zero' is a zero tangent, d3's
 /// end, of `dimension` coordinates).
+/// Options may also hold what a command-line file gives and the controls do
+/// not: `grid` (the knots, instead of alpha's), `kb` ({tension, continuity,
+/// bias}: one value per point, NaN for a null end value), `strict`, and an
+/// end tangent other than zero (start / end an array dx/dt).
 export function splineOptions(o, dimension = 2) {
-  const end = (e) => (e === 'zero' ? { tangent: new Array(dimension).fill(0) } : e);
-  const opt = { alpha: o.alpha, tension: o.tension, closed: o.closed };
+  const end = (e) => (e === 'zero' ? { tangent: new Array(dimension).fill(0) } : Array.isArray(e) ? { tangent: e } : e);
+  const opt = { tension: o.tension, closed: o.closed };
+  if (o.grid) opt.grid = o.grid; else opt.alpha = o.alpha;
+  if (o.kb) opt.kb = o.kb;
+  if (o.strict) opt.strict = true;
   if (!o.closed) {
     opt.start = end(o.start);
     opt.end = end(o.end);
@@ -83,8 +90,34 @@ function checkOptions(o, where) {
   if (o.closed !== undefined) out.closed = Boolean(o.closed);
   for (const key of ['start', 'end']) {
     if (o[key] === undefined) continue;
-    if (!endKinds.includes(o[key])) throw new Error(`${where}: ${key} must be one of ${endKinds.join(', ')}, got ${JSON.stringify(o[key])}`);
-    out[key] = o[key];
+    const tangent = Array.isArray(o[key]) && o[key].length > 0 && o[key].every((v) => typeof v === 'number' && Number.isFinite(v));
+    if (!endKinds.includes(o[key]) && !tangent) {
+      throw new Error(`${where}: ${key} must be one of ${endKinds.join(', ')} or a tangent [dx/dt, ...], got ${JSON.stringify(o[key])}`);
+    }
+    out[key] = tangent ? [...o[key]] : o[key];
+  }
+  // Numbers of a list (null: NaN where `nulls`); the core checks the rest
+  // (count, order, where NaN may be).
+  const list = (a, path, nulls) => {
+    if (!Array.isArray(a)) throw new Error(`${where}: ${path} must be an array of numbers, got ${JSON.stringify(a)}`);
+    return a.map((v, i) => {
+      if ((v === null || Number.isNaN(v)) && nulls) return NaN;
+      if (typeof v !== 'number' || !Number.isFinite(v)) throw new Error(`${where}: ${path}[${i}] is not a finite number (${JSON.stringify(v)})`);
+      return v;
+    });
+  };
+  if (o.grid !== undefined && o.grid !== null) out.grid = list(o.grid, 'grid', false);
+  if (o.kb !== undefined && o.kb !== null) {
+    if (typeof o.kb !== 'object' || Array.isArray(o.kb)) throw new Error(`${where}: kb must be {"tension": [...], "continuity": [...], "bias": [...]}`);
+    out.kb = {};
+    for (const [k, v] of Object.entries(o.kb)) {
+      if (!['tension', 'continuity', 'bias'].includes(k)) throw new Error(`${where}: kb: unknown field '${k}' (expected "tension", "continuity", "bias")`);
+      out.kb[k] = list(v, `kb.${k}`, true);
+    }
+  }
+  if (o.strict !== undefined) {
+    if (typeof o.strict !== 'boolean') throw new Error(`${where}: strict must be true or false, got ${JSON.stringify(o.strict)}`);
+    if (o.strict) out.strict = true;
   }
   return out;
 }
@@ -97,8 +130,10 @@ function endFromFile(e, where, dimension) {
   const zero = `[${new Array(dimension).fill(0).join(', ')}]`;
   const one = (x, path) => {
     if (x === 'natural' || x === 'reflect') return x;
-    if (Array.isArray(x) && x.length === dimension && x.every((v) => v === 0)) return 'zero';
-    throw new Error(`${where}: ${path}: the editor supports "natural", "reflect" or a zero tangent ${zero}, got ${JSON.stringify(x)}`);
+    if (Array.isArray(x) && x.length === dimension && x.every((v) => typeof v === 'number' && Number.isFinite(v))) {
+      return x.every((v) => v === 0) ? 'zero' : [...x];
+    }
+    throw new Error(`${where}: ${path}: expected "natural", "reflect" or a tangent of ${dimension} numbers like ${zero}, got ${JSON.stringify(x)}`);
   };
   if (e === 'closed') return { closed: true };
   if (typeof e === 'string') return { closed: false, start: one(e, 'end'), end: one(e, 'end') };
@@ -117,7 +152,7 @@ function endFromFile(e, where, dimension) {
 // requests (what to compute: t, s, derivatives, ...) are not part of the
 // curve: they are read past and named in `notKept`, which the editor shows.
 // Any other field is an error naming it, never dropped.
-const fileFields = ['points', 'alpha', 'tension', 'end', 'format', 'dimension', 'options'];
+const fileFields = ['points', 'alpha', 'grid', 'tension', 'end', 'kb', 'strict', 'format', 'dimension', 'options'];
 export const requestFields = ['t', 's', 'derivatives', 'accuracy', 'count', 'spacing', 'tolerance'];
 
 function optionsFromFile(data, where, dimension) {
@@ -130,13 +165,13 @@ function optionsFromFile(data, where, dimension) {
   if (data.dimension !== undefined && data.dimension !== dimension) {
     throw new Error(`${where}: dimension is ${JSON.stringify(data.dimension)}, but the points have ${dimension} coordinates`);
   }
-  const top = ['alpha', 'tension', 'end'].filter((k) => data[k] !== undefined);
+  const top = ['alpha', 'grid', 'tension', 'end', 'kb', 'strict'].filter((k) => data[k] !== undefined);
   if (top.length && data.options !== undefined) {
     throw new Error(`${where}: give "options" or the top-level ${top.map((k) => `"${k}"`).join(', ')}, not both`);
   }
   if (data.options !== undefined) return checkOptions(data.options, where);
   const o = {};
-  for (const key of ['alpha', 'tension']) if (data[key] !== undefined) o[key] = data[key];
+  for (const key of ['alpha', 'tension', 'grid', 'kb', 'strict']) if (data[key] !== undefined) o[key] = data[key];
   if (data.end !== undefined) Object.assign(o, endFromFile(data.end, where, dimension));
   return checkOptions(o, where);
 }
@@ -211,9 +246,15 @@ const rows = (flat, d) => Array.from({ length: flat.length / d }, (_, i) => Arra
 export function pointsToJson(flat, options, dimension = 2) {
   const o = checkOptions(options, 'options');
   const body = rows(Float64Array.from(flat), dimension).map((p) => `    [${p.join(', ')}]`).join(',\n');
-  const e = (x) => (x === 'zero' ? new Array(dimension).fill(0) : x);
-  const end = o.closed ? 'closed' : o.start === o.end && o.start !== 'zero' ? o.start : { start: e(o.start), end: e(o.end) };
-  return `{\n  "alpha": ${num(o.alpha)},\n  "tension": ${num(o.tension)},\n  "end": ${JSON.stringify(end)},\n  "points": [\n${body}\n  ]\n}\n`;
+  const e = (x) => (x === 'zero' ? new Array(dimension).fill(0) : Array.isArray(x) ? `[${x.map(num).join(', ')}]` : x);
+  const same = typeof o.start === 'string' && o.start === o.end && o.start !== 'zero';
+  const text = (x) => (typeof x === 'string' && x.startsWith('[') ? x : JSON.stringify(x));
+  const end = o.closed ? '"closed"' : same ? JSON.stringify(o.start) : `{"start": ${text(e(o.start))}, "end": ${text(e(o.end))}}`;
+  const list = (a) => `[${a.map((v) => (Number.isNaN(v) ? 'null' : num(v))).join(', ')}]`;
+  const fields = [o.grid ? `  "grid": ${list(o.grid)}` : `  "alpha": ${num(o.alpha)}`, `  "tension": ${num(o.tension)}`, `  "end": ${end}`];
+  if (o.kb) fields.push(`  "kb": {${Object.entries(o.kb).map(([k, v]) => `"${k}": ${list(v)}`).join(', ')}}`);
+  if (o.strict) fields.push('  "strict": true');
+  return `{\n${fields.join(',\n')},\n  "points": [\n${body}\n  ]\n}\n`;
 }
 
 /// CSV with a header of the coordinates' names (x,y by default).

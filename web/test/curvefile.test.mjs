@@ -104,6 +104,9 @@ describe('curve files in the editor', () => {
     const own = [
       { alpha: 0 }, { alpha: 1, tension: 0.3 }, { alpha: 0.25, end: 'reflect' }, { end: 'closed' },
       { alpha: 0.75, end: { start: [0, 0], end: 'reflect' } },
+      { grid: [0, 1, 2.5, 3, 4.5] }, { end: 'closed', grid: [0, 1, 2, 3.5, 4, 5.5] },
+      { kb: { tension: [null, 0.2, -0.1, 0.3, null], continuity: [0, 0.1, 0, -0.2, 0], bias: [0, 0, 0.3, 0, 0] } },
+      { strict: true, tension: 0.2, end: { start: [2, -1], end: 'reflect' } },
     ].map((o, k) => ({ where: `own input ${k} ${JSON.stringify(o)}`, name: 'own.json', text: JSON.stringify({ points: uneven, ...o }) }));
     own.push({ where: 'own CSV', name: 'own.csv', text: 'a,b\n' + uneven.map((p) => p.join(',')).join('\n') + '\n' });
     for (const e of [...found, ...own]) {
@@ -117,6 +120,11 @@ describe('curve files in the editor', () => {
       if (e.name.endsWith('.json')) {
         const pts = JSON.parse(e.text).points ?? JSON.parse(e.text);
         assert.deepEqual(await page.evaluate(() => window.editor.fullPoints), pts.flat(), `${e.where}: points`);
+      }
+      // Exported back: the same fields (what the curve file holds).
+      if (e.where.startsWith('own input')) {
+        const back = JSON.parse(await page.evaluate(() => window.editor.exportJson()));
+        for (const [k, v] of Object.entries(JSON.parse(e.text))) assert.deepEqual(back[k], v, `${e.where}: exported ${k}`);
       }
       // Nothing is dropped without a word: a request field is named.
       const keys = e.name.endsWith('.json') ? Object.keys(JSON.parse(e.text)).filter((k) => requestFields.includes(k)) : [];
@@ -215,6 +223,52 @@ describe('curve files in the editor', () => {
     assert.deepEqual(await page.evaluate(() => window.editor.pair), [0, 1]);
     s = await status(page);
     assert.match(s.banner, /projection on x, y\./);
+    assert.deepEqual(h.errors, []);
+  });
+
+  test('knots and Kochanek-Bartels values from a file follow the points; alpha replaces the knots, undo brings them back', { skip: noCli }, async () => {
+    const file = { points: [[0, 0], [100, 60], [220, 40], [300, 160], [420, 120]], grid: [0, 1, 2.5, 3, 4.5],
+      kb: { tension: [null, 0.2, -0.1, 0.3, null], bias: [0, 0, 0.3, 0, 0] } };
+    await importText(page, 'kb.json', JSON.stringify(file));
+    assert.equal(await page.evaluate(() => document.getElementById('alpha-value').value), 'grid');
+    // Double-click on segment 1: a point with the knot halfway (1.75) and
+    // zero KB values.
+    const s = await page.evaluate(() => { const e = window.editor, g = e.grid(); return e.worldToScreen(...e.evaluate((g[1] + g[2]) / 2)); });
+    const box = await h.canvasBox();
+    await page.mouse.dblclick(box.x + s[0], box.y + s[1]);
+    await idle(page);
+    let back = JSON.parse(await page.evaluate(() => window.editor.exportJson()));
+    assert.equal(back.points.length, 6);
+    assert.deepEqual(back.grid, [0, 1, 1.75, 2.5, 3, 4.5]);
+    assert.deepEqual(back.kb, { tension: [null, 0.2, 0, -0.1, 0.3, null], bias: [0, 0, 0, 0.3, 0, 0] });
+    // The export is the curve the editor shows, to the command line too.
+    const want = cliLength(JSON.stringify(back), 'kb_back.json');
+    assert.ok(Math.abs((await page.evaluate(() => window.editor.length())) - want) <= 1e-12 * want);
+    // Deleting point 3 takes its knot and values away.
+    await page.evaluate(() => window.editor.setSelection([3]));
+    await page.keyboard.press('Delete');
+    await idle(page);
+    back = JSON.parse(await page.evaluate(() => window.editor.exportJson()));
+    assert.deepEqual(back.grid, [0, 1, 1.75, 3, 4.5]);
+    assert.deepEqual(back.kb, { tension: [null, 0.2, 0, 0.3, null], bias: [0, 0, 0, 0, 0] });
+    // The chordal preset: knots from alpha = 1, said so; undo: the grid.
+    await page.click('#chordal');
+    await idle(page);
+    back = JSON.parse(await page.evaluate(() => window.editor.exportJson()));
+    assert.equal(back.grid, undefined);
+    assert.equal(back.alpha, 1);
+    assert.match((await status(page)).message, /knots from α = 1 now, instead of the file's grid/);
+    await page.keyboard.press('Control+z');
+    await idle(page);
+    back = JSON.parse(await page.evaluate(() => window.editor.exportJson()));
+    assert.deepEqual(back.grid, [0, 1, 1.75, 3, 4.5]);
+    // A grid of the wrong length is refused at import with the library's
+    // words, and the curve stays as it was.
+    await page.setInputFiles('#import', { name: 'bad.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify({ ...file, grid: [0, 1, 2] })) });
+    await page.waitForFunction(() => !document.getElementById('toast').hidden);
+    const after = await status(page);
+    assert.match(after.message, /^import bad\.json: .*grid/);
+    assert.equal(JSON.parse(await page.evaluate(() => window.editor.exportJson())).points.length, 5);
     assert.deepEqual(h.errors, []);
   });
 

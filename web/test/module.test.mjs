@@ -315,7 +315,11 @@ test('io: JSON and CSV round trips are exact; SVG path has one cubic per segment
   // 3-D points refused rather than cut (tests/cli/test_curve_file.py runs the
   // export through every subcommand).
   assert.equal(parsePoints('{"points": [[1, 2], [3, 4]], "alpha": 0}').options.alpha, 0);
-  assert.throws(() => parsePoints('{"points": [[1, 2], [3, 4]], "strict": true}'), /field 'strict' is not supported/);
+  assert.equal(parsePoints('{"points": [[1, 2], [3, 4]], "strict": true}').options.strict, true);
+  assert.throws(() => parsePoints('{"points": [[1, 2], [3, 4]], "strict": 1}'), /strict must be true or false, got 1/);
+  assert.throws(() => parsePoints('{"points": [[1, 2], [3, 4]], "tangents": [[1, 0], [1, 0]]}'), /field 'tangents' is not supported/);
+  assert.throws(() => parsePoints('{"points": [[1, 2], [3, 4]], "grid": [0, "1"]}'), /grid\[1\] is not a finite number \("1"\)/);
+  assert.throws(() => parsePoints('{"points": [[1, 2], [3, 4]], "kb": {"tension": [null, null], "bais": [0, 0]}}'), /kb: unknown field 'bais'/);
   // 3 to 16 coordinates are kept whole (the editor shows a projection), in
   // JSON and CSV, and written back whole; 1 or 17 are refused, as are points
   // of different dimensions.
@@ -329,7 +333,7 @@ test('io: JSON and CSV round trips are exact; SVG path has one cubic per segment
   assert.throws(() => parsePoints(JSON.stringify({ points: [new Array(17).fill(1)] })), /point 0 has 17 coordinates/);
   assert.throws(() => parsePoints('{"points": [[1, 2, 0], [3, 4]]}'), /point 1 has 2 coordinates, point 0 has 3/);
   assert.throws(() => parsePoints('1,2,3\n4,5\n'), /CSV line 2: expected 3 numbers like the first point, got 2/);
-  assert.throws(() => parsePoints('{"points": [[1, 2, 0], [3, 4, 0]], "end": {"end": [0, 0]}}'), /end.end: the editor supports .* a zero tangent \[0, 0, 0\]/);
+  assert.throws(() => parsePoints('{"points": [[1, 2, 0], [3, 4, 0]], "end": {"end": [0, 0]}}'), /end.end: expected "natural", "reflect" or a tangent of 3 numbers like \[0, 0, 0\], got \[0,0\]/);
   // The command line's requests are read past and named, not kept.
   assert.deepEqual(parsePoints('{"points": [[0, 0], [1, 1]], "t": [0], "derivatives": [1]}').notKept, ['t', 'derivatives']);
   assert.deepEqual(parsePoints('{"points": [[0, 0], [1, 1]], "options": {"closed": true}}').options.closed, true);
