@@ -1,6 +1,9 @@
 // crspline for JavaScript: Embind bindings of the public headers.
 //
-// One class, Spline, holds a curve of dimension 1 to 4 (chosen at run time);
+// One class, Spline, holds a curve of dimension 1 to 16 (chosen at run time:
+// 1 to 4 as themselves, 5 to 16 as the zero-padded curve of 16, whose first
+// coordinates are bit for bit those of the curve's own dimension, see
+// crspline/dispatch.hpp; only those coordinates cross back to JavaScript);
 // every array crosses the boundary as a flat Float64Array copy (safe across
 // memory growth). Names are camelCase here only. A C++ exception never
 // escapes as a number: each entry point catches it and throws a JavaScript
@@ -14,6 +17,8 @@
 #include <crspline/arc_length.hpp>
 #include <crspline/bounds.hpp>
 #include <crspline/catmull_rom.hpp>
+#include <crspline/dispatch.hpp>
+#include <crspline/spec.hpp>
 #include <crspline/nearest.hpp>
 #include <crspline/tessellate.hpp>
 #include <crspline/version.hpp>
@@ -40,10 +45,22 @@ namespace cr = crspline;
 // Errors: the library's message becomes a JavaScript Error.
 // ---------------------------------------------------------------------------
 
-[[noreturn]] void throw_js(const std::string& message) {
-    val error = val::global("Error").new_(message);
+[[noreturn]] void throw_js(const val& error) {
     error.throw_();
     __builtin_unreachable();
+}
+
+// A spec_error's parts as properties of the Error (field, index, component,
+// value; null where the core has none), so callers can point at the input.
+val js_error(const std::string& message, const cr::spec_error* spec) {
+    val error = val::global("Error").new_(message);
+    if (spec) {
+        error.set("field", spec->field());
+        error.set("index", spec->index() ? val(double(*spec->index())) : val::null());
+        error.set("component", spec->component() ? val(double(*spec->component())) : val::null());
+        error.set("value", spec->value());
+    }
+    return error;
 }
 
 // Runs f; a C++ exception becomes a JavaScript Error with the same message.
@@ -52,14 +69,18 @@ namespace cr = crspline;
 template <class F>
 auto guarded(F&& f) -> decltype(f()) {
     std::string message;
+    std::optional<cr::spec_error> spec;
     try {
         return f();
+    } catch (const cr::spec_error& e) {
+        message = e.what();
+        spec.emplace(e);
     } catch (const std::exception& e) {
         message = e.what();
     } catch (...) {
         message = "crspline: unknown error";
     }
-    throw_js(message);
+    throw_js(js_error(message, spec ? &*spec : nullptr));
 }
 
 // ---------------------------------------------------------------------------
@@ -76,6 +97,22 @@ template <std::size_t D>
 val points_array(const std::vector<cr::vec<D>>& p) {
     return float64_array(p.empty() ? nullptr : p.front().data(), p.size() * D);
 }
+// The first dim coordinates of each point (a wide curve's padding stays in
+// WASM).
+template <std::size_t D>
+val points_array(std::span<const cr::vec<D>> p, std::size_t dim) {
+    if (dim >= D) return float64_array(p.empty() ? nullptr : p.front().data(), p.size() * D);
+    std::vector<double> out(p.size() * dim);
+    for (std::size_t i = 0; i < p.size(); ++i)
+        for (std::size_t k = 0; k < dim; ++k) out[i * dim + k] = p[i][k];
+    return float64_array(out);
+}
+template <std::size_t D>
+val points_array(const std::vector<cr::vec<D>>& p, std::size_t dim) {
+    return points_array(std::span<const cr::vec<D>>(p), dim);
+}
+template <std::size_t D>
+val point_array(const cr::vec<D>& p, std::size_t dim) { return float64_array(p.data(), std::min(dim, D)); }
 
 bool is_nullish(const val& v) { return v.isUndefined() || v.isNull(); }
 
@@ -97,64 +134,73 @@ std::vector<double> numbers(const val& a, const char* what) {
     return emscripten::convertJSArrayToNumberVector<double>(a);
 }
 
+// Points of dim coordinates (flat) as vec<D>, D >= dim, zero-padded.
 template <std::size_t D>
-std::vector<cr::vec<D>> to_points(const std::vector<double>& flat, const char* what) {
-    if (flat.size() % D != 0)
+std::vector<cr::vec<D>> to_points(const std::vector<double>& flat, const char* what, std::size_t dim = D) {
+    if (flat.size() % dim != 0)
         throw cr::invalid_input(std::string(what) + " has " + std::to_string(flat.size()) +
-                                " coordinates, not a multiple of the dimension " + std::to_string(D));
-    std::vector<cr::vec<D>> p(flat.size() / D);
+                                " coordinates, not a multiple of the dimension " + std::to_string(dim));
+    std::vector<cr::vec<D>> p(flat.size() / dim);
     for (std::size_t i = 0; i < p.size(); ++i)
-        for (std::size_t k = 0; k < D; ++k) p[i][k] = flat[i * D + k];
+        for (std::size_t k = 0; k < dim; ++k) p[i][k] = flat[i * dim + k];
     return p;
 }
 
 template <std::size_t D>
-cr::vec<D> to_point(const val& a, const char* what) {
+cr::vec<D> to_point(const val& a, const char* what, std::size_t dim = D) {
     const std::vector<double> v = numbers(a, what);
-    if (v.size() != D)
+    if (v.size() != dim)
         throw cr::invalid_input(std::string(what) + " has " + std::to_string(v.size()) + " coordinates, expected " +
-                                std::to_string(D));
-    cr::vec<D> p;
-    for (std::size_t k = 0; k < D; ++k) p[k] = v[k];
+                                std::to_string(dim));
+    cr::vec<D> p{};
+    for (std::size_t k = 0; k < dim; ++k) p[k] = v[k];
     return p;
 }
 
 // ---------------------------------------------------------------------------
-// Options: { alpha, grid, closed, tension, start, end, strict, kb }.
+// Options: { alpha, grid, closed, tension, start, end, strict, kb } and the
+// points, as the core's run-time description (crspline/spec.hpp): the core
+// validates it once and names the field, index and value when it is wrong.
 // ---------------------------------------------------------------------------
 
-template <std::size_t D>
-cr::end_condition<D> end_from(const val& e, const char* which) {
-    using ec = cr::end_condition<D>;
-    if (is_nullish(e)) return ec::natural();
+cr::end_spec end_from(const val& e, const char* which) {
+    cr::end_spec r;
+    if (is_nullish(e)) return r;
     if (e.isString()) {
         const std::string s = e.as<std::string>();
-        if (s == "natural") return ec::natural();
-        if (s == "reflect") return ec::reflect();
-        throw cr::invalid_input(std::string(which) + " end condition must be \"natural\", \"reflect\" or " +
-                                "{tangent: [...]}, got \"" + s + "\"");
+        if (s == "natural") return r;
+        if (s == "reflect") {
+            r.type = cr::end_spec::kind::reflect;
+            return r;
+        }
+        cr::detail::spec_fail(which, std::nullopt, std::nullopt, s,
+                              std::string(which) + " end condition must be \"natural\", \"reflect\" or " +
+                                  "{tangent: [...]}, got \"" + s + "\"");
     }
-    if (!is_nullish(e["tangent"])) return ec::tangent(to_point<D>(e["tangent"], "tangent"));
-    return ec::tangent(to_point<D>(e, "tangent"));
+    r.type = cr::end_spec::kind::tangent;
+    r.velocity = numbers(is_nullish(e["tangent"]) ? e : e["tangent"], "tangent");
+    return r;
 }
 
-template <std::size_t D>
-cr::options<D> options_from(const val& o) {
-    cr::options<D> opt;
-    if (is_nullish(o)) return opt;
+cr::curve_spec spec_from(std::vector<double> flat, int dimension, const val& o) {
+    cr::curve_spec s;
+    s.dimension = dimension > 0 ? std::size_t(dimension) : 0;
+    s.points = std::move(flat);
+    if (is_nullish(o)) return s;
     auto number = [&](const char* key) -> std::optional<double> {
         const val v = o[key];
         if (is_nullish(v)) return std::nullopt;
-        if (!v.isNumber()) throw cr::invalid_input(std::string(key) + " must be a number");
+        if (!v.isNumber())
+            cr::detail::spec_fail(key, std::nullopt, std::nullopt, "", std::string(key) + " must be a number");
         return v.as<double>();
     };
-    opt.alpha = number("alpha");
-    if (!is_nullish(o["grid"])) opt.grid = numbers(o["grid"], "grid");
-    if (!is_nullish(o["closed"])) opt.closed = o["closed"].as<bool>();
-    if (!is_nullish(o["strict"])) opt.strict = o["strict"].as<bool>();
-    if (const auto t = number("tension")) opt.tension = *t;
-    opt.start = end_from<D>(o["start"], "start");
-    opt.end = end_from<D>(o["end"], "end");
+    s.alpha = number("alpha");
+    if (!is_nullish(o["grid"])) s.grid = numbers(o["grid"], "grid");
+    if (!is_nullish(o["closed"])) s.closed = o["closed"].as<bool>();
+    if (!is_nullish(o["strict"])) s.strict = o["strict"].as<bool>();
+    if (const auto t = number("tension")) s.tension = *t;
+    s.start = end_from(o["start"], "start");
+    s.end = end_from(o["end"], "end");
     const val kb = o["kb"];
     if (!is_nullish(kb)) {
         // null entries read as NaN: the core ignores the value at the two
@@ -168,11 +214,11 @@ cr::options<D> options_from(const val& o) {
             for (std::size_t i = 0; i < n; ++i) out.push_back(is_nullish(a[i]) ? std::numeric_limits<double>::quiet_NaN() : a[i].as<double>());
             return out;
         };
-        opt.kb.tension = tcb("tension");
-        opt.kb.continuity = tcb("continuity");
-        opt.kb.bias = tcb("bias");
+        s.kb.tension = tcb("tension");
+        s.kb.continuity = tcb("continuity");
+        s.kb.bias = tcb("bias");
     }
-    return opt;
+    return s;
 }
 
 // ---------------------------------------------------------------------------
@@ -287,6 +333,7 @@ struct curve_of {
     cr::catmull_rom<D> curve;
     std::optional<cr::arc_length_table<D>> table;  // built on first use
     double alpha;                                  // NaN when built from a grid
+    std::size_t dim;                               // the input's dimension (D, or less when padded)
 
     const cr::arc_length_table<D>& lengths() {
         if (!table) table.emplace(curve);
@@ -300,42 +347,40 @@ struct curve_of {
 // What would compute tangents (tension, kb, strict, end conditions) is
 // rejected rather than ignored.
 template <std::size_t D>
-curve_of<D> make_hermite_curve(const std::vector<double>& flat, const val& o, const cr::options<D>& opt,
-                               double alpha) {
+curve_of<D> make_hermite_curve(const cr::curve_spec& s, const val& o, double alpha) {
     for (const char* key : {"tension", "kb", "strict", "start", "end"})
         if (!is_nullish(o[key])) throw cr::invalid_input(std::string("given tangents take no '") + key + "'");
-    if (opt.alpha && opt.grid) throw cr::invalid_input("give alpha or grid, not both");
-    const std::vector<cr::vec<D>> p = to_points<D>(flat, "points");
-    const std::vector<cr::vec<D>> out = to_points<D>(numbers(o["tangents"], "tangents"), "tangents");
-    const std::vector<cr::vec<D>> in =
-        is_nullish(o["tangentsIn"]) ? out : to_points<D>(numbers(o["tangentsIn"], "tangentsIn"), "tangentsIn");
+    if (s.alpha && s.grid) throw cr::invalid_input("give alpha or grid, not both");
+    const std::size_t dim = s.dimension;
+    const std::vector<cr::vec<D>> p = to_points<D>(s.points, "points", dim);
+    const std::vector<cr::vec<D>> out = to_points<D>(numbers(o["tangents"], "tangents"), "tangents", dim);
+    const std::vector<cr::vec<D>> in = is_nullish(o["tangentsIn"])
+                                           ? out
+                                           : to_points<D>(numbers(o["tangentsIn"], "tangentsIn"), "tangentsIn", dim);
     const std::span<const cr::vec<D>> ps(p);
-    const std::vector<double> grid = opt.grid ? *opt.grid : cr::knots(ps, opt.alpha.value_or(cr::centripetal), opt.closed);
-    return curve_of<D>{cr::catmull_rom<D>::hermite(ps, out, in, grid, opt.closed), std::nullopt, alpha};
+    const std::vector<double> grid = s.grid ? *s.grid : cr::knots(ps, s.alpha.value_or(cr::centripetal), s.closed);
+    return curve_of<D>{cr::catmull_rom<D>::hermite(ps, out, in, grid, s.closed), std::nullopt, alpha, dim};
 }
 
+// D is the storage dimension: the spec's own (1-4) or the wide 16.
 template <std::size_t D>
-curve_of<D> make_curve(const std::vector<double>& flat, const val& o) {
-    const cr::options<D> opt = options_from<D>(o);
-    const double alpha = opt.grid ? std::nan("") : opt.alpha.value_or(cr::centripetal);
-    if (!is_nullish(o) && !is_nullish(o["tangents"])) return make_hermite_curve<D>(flat, o, opt, alpha);
-    return curve_of<D>{cr::catmull_rom<D>(to_points<D>(flat, "points"), opt), std::nullopt, alpha};
+curve_of<D> make_curve(const cr::curve_spec& s, const val& o) {
+    const double alpha = s.grid ? std::nan("") : s.alpha.value_or(cr::centripetal);
+    if (!is_nullish(o) && !is_nullish(o["tangents"])) return make_hermite_curve<D>(s, o, alpha);
+    return curve_of<D>{cr::make_curve<D>(s), std::nullopt, alpha, s.dimension};
 }
 
 class Spline {
-    using any_curve = std::variant<curve_of<1>, curve_of<2>, curve_of<3>, curve_of<4>>;
+    using any_curve = std::variant<curve_of<1>, curve_of<2>, curve_of<3>, curve_of<4>, curve_of<cr::wide_dimension>>;
     any_curve c_;
 
     static any_curve build(const val& points, int dimension, const val& opt) {
         return guarded([&]() -> any_curve {
-            const std::vector<double> flat = numbers(points, "points");
-            switch (dimension) {
-                case 1: return make_curve<1>(flat, opt);
-                case 2: return make_curve<2>(flat, opt);
-                case 3: return make_curve<3>(flat, opt);
-                case 4: return make_curve<4>(flat, opt);
-                default: throw cr::invalid_input("dimension must be 1, 2, 3 or 4, got " + std::to_string(dimension));
-            }
+            const cr::curve_spec s = spec_from(numbers(points, "points"), dimension, opt);
+            return cr::with_dimension(
+                s.dimension,
+                [&](auto d) -> any_curve { return make_curve<decltype(d)::value>(s, opt); },
+                [&](std::size_t) { cr::validate(s); });  // throws the core's "dimension must be 1 to 16"
         });
     }
 
@@ -365,7 +410,7 @@ public:
     Spline(val points, int dimension) : Spline(std::move(points), dimension, val::undefined()) {}
 
     // --- what the curve is made of ------------------------------------------
-    int dimension() const { return visit([](const auto& c) { return int(c.curve.dimension); }); }
+    int dimension() const { return visit([](const auto& c) { return int(c.dim); }); }
     double pointCount() const { return visit([](const auto& c) { return double(c.curve.points().size()); }); }
     double segmentCount() const { return visit([](const auto& c) { return double(c.curve.segment_count()); }); }
     bool closed() const { return visit([](const auto& c) { return c.curve.closed(); }); }
@@ -373,8 +418,7 @@ public:
     double tMax() const { return visit([](const auto& c) { return c.curve.t_max(); }); }
     val points() const {
         return visit([](const auto& c) {
-            const auto p = c.curve.points();
-            return float64_array(p.front().data(), p.size() * c.curve.dimension);
+            return points_array(c.curve.points(), c.dim);
         });
     }
     val grid() const {
@@ -385,14 +429,14 @@ public:
     // --- evaluation -----------------------------------------------------------
     val evaluate(double t, int order) const {
         return guarded([&] {
-            return visit([&](const auto& c) { return float64_array(c.curve.evaluate(t, order).data(), c.curve.dimension); });
+            return visit([&](const auto& c) { return point_array(c.curve.evaluate(t, order), c.dim); });
         });
     }
     val evaluate0(double t) const { return evaluate(t, 0); }
     val evaluateMany(val t, int order) const {
         return guarded([&] {
             const std::vector<double> ts = numbers(t, "t");
-            return visit([&](const auto& c) { return points_array(c.curve.evaluate(std::span<const double>(ts), order)); });
+            return visit([&](const auto& c) { return points_array(c.curve.evaluate(std::span<const double>(ts), order), c.dim); });
         });
     }
     val evaluateMany0(val t) const { return evaluateMany(std::move(t), 0); }
@@ -405,7 +449,7 @@ public:
                     throw cr::invalid_input("segment index " + cr::detail::num(i) + " is outside [0, " +
                                             std::to_string(c.curve.segment_count()) + ")");
                 const auto b = c.curve.bezier(std::size_t(i));
-                return points_array(std::vector<std::decay_t<decltype(b[0])>>(b.begin(), b.end()));
+                return points_array(std::vector<std::decay_t<decltype(b[0])>>(b.begin(), b.end()), c.dim);
             });
         });
     }
@@ -413,7 +457,7 @@ public:
     // segment. The editor draws a frame from this one call.
     val bezierAll() const {
         return visit([](const auto& c) {
-            constexpr std::size_t D = std::decay_t<decltype(c.curve)>::dimension;
+            const std::size_t D = c.dim;
             const std::size_t n = c.curve.segment_count();
             std::vector<double> out(n * 4 * D);
             for (std::size_t i = 0; i < n; ++i) {
@@ -427,14 +471,14 @@ public:
 
     // --- sampling -------------------------------------------------------------
     val sampleT(double n) const {
-        return guarded([&] { return visit([&](const auto& c) { return points_array(cr::sample_t(c.curve, count(n))); }); });
+        return guarded([&] { return visit([&](const auto& c) { return points_array(cr::sample_t(c.curve, count(n)), c.dim); }); });
     }
     val tessellate(double tolerance) const {
         return guarded([&] {
             return visit([&](const auto& c) {
                 const auto p = tolerance > 0 ? cr::tessellate(c.curve, tolerance) : cr::tessellate(c.curve);
                 val r = val::object();
-                r.set("points", points_array(p.points));
+                r.set("points", points_array(p.points, c.dim));
                 r.set("t", float64_array(p.t));
                 return r;
             });
@@ -443,7 +487,7 @@ public:
     val boundingBox() const {
         return visit([](const auto& c) {
             const auto b = cr::bounding_box(c.curve);
-            constexpr std::size_t D = std::decay_t<decltype(c.curve)>::dimension;
+            const std::size_t D = c.dim;
             val r = val::object();
             r.set("lo", float64_array(b.lo.data(), D));
             r.set("hi", float64_array(b.hi.data(), D));
@@ -454,12 +498,12 @@ public:
         return guarded([&] {
             return visit([&](const auto& c) {
                 constexpr std::size_t D = std::decay_t<decltype(c.curve)>::dimension;
-                const auto n = cr::nearest(c.curve, to_point<D>(q, "query point"));
+                const auto n = cr::nearest(c.curve, to_point<D>(q, "query point", c.dim));
                 val r = val::object();
                 r.set("t", n.t);
                 r.set("distanceSq", n.distance_sq);
                 r.set("segment", double(n.segment));
-                r.set("point", float64_array(n.point.data(), D));
+                r.set("point", point_array(n.point, c.dim));
                 return r;
             });
         });
@@ -488,7 +532,7 @@ public:
                 val r = val::object();
                 r.set("t", float64_array(smp.t));
                 r.set("s", float64_array(smp.s));
-                r.set("points", points_array(smp.points));
+                r.set("points", points_array(smp.points, c.dim));
                 return r;
             });
         });
@@ -499,7 +543,7 @@ public:
     val arcLengthTicks(double spacing, double max_ticks) {
         return guarded([&] {
             return visit([&](auto& c) {
-                constexpr std::size_t D = std::decay_t<decltype(c.curve)>::dimension;
+                const std::size_t D = c.dim;
                 if (!(spacing > 0)) throw cr::invalid_input("tick spacing must be positive, got " + cr::detail::num(spacing));
                 const auto& table = c.lengths();
                 const double total = table.total();
@@ -577,7 +621,7 @@ public:
     val cuspsIn(double first, double n) const {
         return guarded([&] {
             return visit([&](const auto& c) {
-                constexpr std::size_t D = std::decay_t<decltype(c.curve)>::dimension;
+                const std::size_t D = c.dim;
                 const auto [i0, i1] = range(first, n, c.curve.segment_count());
                 std::vector<double> out;
                 for (std::size_t i = i0; i < i1; ++i) {
@@ -638,7 +682,7 @@ public:
     val boundingVolumes(std::string kind) const {
         return guarded([&] {
             return visit([&](const auto& c) {
-                constexpr std::size_t D = std::decay_t<decltype(c.curve)>::dimension;
+                const std::size_t D = c.dim;
                 cr::volume_kind k;
                 if (kind == "tightened") k = cr::volume_kind::tightened;
                 else if (kind == "local") k = cr::volume_kind::local;
@@ -671,8 +715,8 @@ public:
 // One segment analysed from its four control points (the oracle's case):
 // alpha, tension as in options.
 template <std::size_t D>
-val analyze_segment_d(const std::vector<double>& flat, double alpha, double tension) {
-    const auto p = to_points<D>(flat, "points");
+val analyze_segment_d(const std::vector<double>& flat, std::size_t dim, double alpha, double tension) {
+    const auto p = to_points<D>(flat, "points", dim);
     if (p.size() != 4) throw cr::invalid_input("a segment needs 4 points, got " + std::to_string(p.size()));
     return segment_report(cr::analyze_segment(std::array<cr::vec<D>, 4>{p[0], p[1], p[2], p[3]}, alpha, tension));
 }
@@ -680,13 +724,13 @@ val analyze_segment_d(const std::vector<double>& flat, double alpha, double tens
 val analyzeSegment(val points, int dimension, double alpha, double tension) {
     return guarded([&] {
         const std::vector<double> flat = numbers(points, "points");
-        switch (dimension) {
-            case 1: return analyze_segment_d<1>(flat, alpha, tension);
-            case 2: return analyze_segment_d<2>(flat, alpha, tension);
-            case 3: return analyze_segment_d<3>(flat, alpha, tension);
-            case 4: return analyze_segment_d<4>(flat, alpha, tension);
-            default: throw cr::invalid_input("dimension must be 1, 2, 3 or 4, got " + std::to_string(dimension));
-        }
+        const std::size_t dim = dimension > 0 ? std::size_t(dimension) : 0;
+        return cr::with_dimension(
+            dim, [&](auto d) { return analyze_segment_d<decltype(d)::value>(flat, dim, alpha, tension); },
+            [&](std::size_t) {
+                throw cr::invalid_input("dimension must be 1 to " + std::to_string(cr::max_runtime_dimension) +
+                                        ", got " + std::to_string(dimension));
+            });
     });
 }
 

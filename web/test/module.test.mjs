@@ -176,8 +176,9 @@ test('errors: a C++ exception arrives as a JavaScript Error with the core messag
     [() => new M.Spline([[0, 0], [1, 1]], 2, { alpha: 1.5 }), /alpha must be in \[0, 1\], got 1.5/],
     [() => new M.Spline([[0, 0], [1, NaN]], 2, {}), /point 1, coordinate 1 is not finite \(nan\)/],
     [() => new M.Spline([[0, 0], [1, 1]], 2, { tension: -1 }), /tension must be in \[0, 1\], got -1/],
-    [() => new M.Spline([0, 0, 1], 2, {}), /3 coordinates, not a multiple of the dimension 2/],
-    [() => new M.Spline([[0, 0], [1, 1]], 5, {}), /dimension must be 1, 2, 3 or 4, got 5/],
+    [() => new M.Spline([0, 0, 1], 2, {}), /points has 3 coordinates, not a whole number of points of dimension 2/],
+    [() => new M.Spline([[0, 0], [1, 1]], 17, {}), /dimension must be 1 to 16, got 17/],
+    [() => new M.Spline([[0, 0], [1, 1]], 0, {}), /dimension must be 1 to 16, got 0/],
     [() => new M.Spline([[0, 0], [1, 1]], 2, { start: 'clamped' }), /start end condition must be/],
     [() => new M.Spline([[0, 0], [1, 1], [2, 0]], 2, { grid: [0, 1, 1] }), /grid must be strictly increasing/],
     [() => withSpline([[0, 0], [1, 1]], 2, {}, (s) => s.evaluate(7)), /t = 7 is outside the domain/],
@@ -190,6 +191,14 @@ test('errors: a C++ exception arrives as a JavaScript Error with the core messag
     [() => new M.Spline([[0, 0], [1, 1], [2, 0]], 2, { kb: { bias: [0, null, 0] } }), /kb bias\[1\] is not finite \(nan\)/],
   ];
   for (const [f, message] of cases) assert.throws(f, (e) => e instanceof Error && message.test(e.message), String(message));
+  // The core's structured error: field, index, component and value as properties.
+  assert.throws(() => new M.Spline([[0, 0], [1, NaN]], 2, {}),
+    (e) => e.field === 'points' && e.index === 1 && e.component === 1 && e.value === 'nan');
+  assert.throws(() => new M.Spline([[0, 0], [1, 1], [2, 0]], 2, { grid: [0, 1, 1] }),
+    (e) => e.field === 'grid' && e.index === 2 && e.component === null && e.value === '1');
+  assert.throws(() => new M.Spline([[0, 0], [1, 1]], 2, { start: 'clamped' }), (e) => e.field === 'start' && e.index === null);
+  // A domain error is not a description error: no field.
+  assert.throws(() => withSpline([[0, 0], [1, 1]], 2, {}, (s) => s.evaluate(7)), (e) => e.field === undefined);
   // The module is still usable after the errors.
   withSpline([[0, 0], [1, 1]], 2, {}, (s) => assert.deepEqual(Array.from(s.evaluate(0)), [0, 0]));
   // null at the two ends of an open curve is ignored: the curve with 0 there.
@@ -374,4 +383,68 @@ test('given tangents: a cubic Hermite curve (closed forms)', () => {
     /outgoing tangents: got 1, expected one per point \(2\)/);
   assert.throws(() => new M.Spline([[0, 0], [1, 0]], 2, { tangents: [[1, 0], [1, 0]], tension: 0.5 }),
     /given tangents take no 'tension'/);
+});
+
+test('any dimension 1-16: a 7-D curve gives the numbers of catmull_rom<7> (seven_d.json), bit for bit', () => {
+  // seven_d.json was written by the CLI's wide path and checked bit for bit
+  // against catmull_rom<7, double> by Reference.SevenDimensions: the wide
+  // curve's padding adds exact zeros, so the batch path (the one the CLI
+  // uses) is compared exactly. The one-t path rounds the first derivative
+  // differently under clang/WASM than under the native build (measured: up to
+  // 2.8 eps * scale at 68 of 147 coordinates, positions and second
+  // derivatives exact), so it gets 8 eps * scale, scale the largest
+  // |coordinate| of that order in the file.
+  const ref = reference('seven_d.json');
+  const inp = ref.input;
+  const opts = { alpha: inp.alpha, tension: inp.tension, start: inp.end.start, end: { tangent: inp.end.end } };
+  withSpline(inp.points, 7, opts, (s) => {
+    assert.equal(s.dimension(), 7);
+    assert.deepEqual(Array.from(s.grid()), ref.grid);
+    assert.deepEqual(Array.from(s.points()), inp.points.flat());
+    let n = 0;
+    for (const order of inp.derivatives) {
+      const want = ref.values[String(order)];
+      const tol = 8 * Number.EPSILON * Math.max(...want.flat().map(Math.abs));
+      const many = s.evaluateMany(inp.t, order);
+      assert.equal(many.length, 7 * inp.t.length);
+      inp.t.forEach((t, j) => {
+        assert.deepEqual(Array.from(many.subarray(7 * j, 7 * j + 7)), want[j], `order ${order}, t ${t}`);
+        const err = maxAbs(s.evaluate(t, order), want[j]);
+        assert.ok(err <= tol, `order ${order}, t ${t}: ${err} > ${tol}`);
+        ++n;
+      });
+    }
+    assert.equal(n, 63);  // 21 parameters x orders 0, 1, 2
+    // Outputs carry 7 coordinates, not the 16 of the padded storage.
+    assert.equal(s.bezier(0).length, 4 * 7);
+    assert.equal(s.bezierAll().length, 5 * 4 * 7);
+    assert.equal(s.nearest(inp.points[2]).point.length, 7);
+    assert.ok(s.nearest(inp.points[2]).distanceSq <= 1e-20);
+    assert.equal(s.boundingBox().lo.length, 7);
+    assert.equal(s.tessellate(1e-3).points.length % 7, 0);
+  });
+});
+
+test('any dimension 1-16: every coordinate of a d-D curve is its own 1-D curve on the same knots', () => {
+  const seed = Number(process.env.CRSPLINE_SEED ?? Math.floor(Math.random() * 2 ** 31));
+  let state = seed;
+  const rand = () => ((state = (state * 1103515245 + 12345) % 2 ** 31) / 2 ** 31) * 10 - 5;
+  let checked = 0;
+  for (let dim = 1; dim <= 16; ++dim) {
+    const pts = Array.from({ length: 5 }, () => Array.from({ length: dim }, rand));
+    withSpline(pts, dim, { alpha: 0.5 }, (s) => {
+      assert.equal(s.dimension(), dim, `seed ${seed}`);
+      const grid = s.grid();
+      const ts = Array.from({ length: 11 }, (_, k) => Math.min(grid.at(-1), grid[0] + (grid.at(-1) - grid[0]) * k / 10));
+      const all = s.evaluateMany(ts, 1);
+      assert.equal(all.length, dim * ts.length, `seed ${seed}, dimension ${dim}`);
+      for (let k = 0; k < dim; ++k)
+        withSpline(pts.map((p) => [p[k]]), 1, { grid }, (one) => {
+          const want = one.evaluateMany(ts, 1);
+          ts.forEach((_, j) => assert.equal(all[j * dim + k], want[j], `seed ${seed}, dimension ${dim}, coordinate ${k}`));
+          ++checked;
+        });
+    });
+  }
+  assert.equal(checked, 136);  // 1 + 2 + ... + 16 coordinates
 });
