@@ -1,0 +1,245 @@
+// crspline for JavaScript: cubic Catmull-Rom curves, the C++ library compiled
+// to WebAssembly (dist/crspline.mjs + dist/crspline.wasm, built by
+// web/build.sh) behind an API that reads like JavaScript.
+//
+//   import { init, catmullRom } from 'crspline';
+//   await init();                      // loads the .wasm once
+//   const curve = catmullRom([[0, 0], [1, 2], [3, 1]], { alpha: 0.5 });
+//   curve.evaluate(0.7);               // Float64Array [x, y]
+//   curve.dispose();                   // or let the garbage collector do it
+//
+// Every number is computed by the C++ core; this file only converts
+// arguments, checks what the core cannot see (the shape of the JavaScript
+// input, option names) and owns the WASM object's lifetime.
+import CrSpline from './dist/crspline.mjs';
+
+let wasm = null;      // the instantiated module
+let loading = null;   // its promise while it loads
+
+/// Loads the WebAssembly module (once; later calls return the same promise).
+/// In node the .wasm next to this file is read from disk; in a browser or a
+/// bundler it is fetched from the URL next to this module. Pass
+/// { wasmBinary } (bytes) or { wasmURL } to load it from elsewhere.
+export function init(options = {}) {
+  if (wasm) return Promise.resolve(api);
+  if (!loading) {
+    loading = load(options).then((m) => {
+      wasm = m;
+      return api;
+    }, (e) => {
+      loading = null;
+      throw e;
+    });
+  }
+  return loading;
+}
+
+async function load({ wasmBinary, wasmURL } = {}) {
+  const url = new URL(wasmURL ?? './dist/crspline.wasm', import.meta.url);
+  const args = {};
+  if (wasmBinary) {
+    args.wasmBinary = wasmBinary;
+  } else if (url.protocol === 'file:' && typeof process !== 'undefined' && process.versions?.node) {
+    // node's fetch cannot read file: URLs; read the bytes instead.
+    const { readFile } = await import('node:fs/promises');
+    args.wasmBinary = await readFile(url);
+  } else {
+    args.locateFile = (name) => (name.endsWith('.wasm') ? url.href : name);
+  }
+  return CrSpline(args);
+}
+
+/// true once init() has resolved.
+export function isReady() {
+  return wasm !== null;
+}
+
+function module() {
+  if (!wasm) throw new Error('crspline: call `await init()` before creating curves');
+  return wasm;
+}
+
+/// The C++ library's version.
+export function version() {
+  return module().version();
+}
+
+/// The size of the WebAssembly memory in bytes (it grows, never shrinks):
+/// what curves that were neither disposed nor collected hold shows here.
+export function wasmMemoryBytes() {
+  return module().HEAPU8.length;
+}
+
+// An Error shaped like the core's spec_error: message, then field, index,
+// component, value (null where there is none).
+function inputError(message, field, index = null, component = null, value = '') {
+  const e = new Error(message);
+  Object.assign(e, { field, index, component, value });
+  return e;
+}
+
+const OPTIONS = new Set(['alpha', 'grid', 'closed', 'tension', 'start', 'end', 'strict', 'kb', 'tangents',
+  'tangentsIn', 'dimension']);
+
+// points: [[x, y, ...], ...], [{x, y, z?}, ...] or a flat typed array /
+// array of numbers with options.dimension. Returns [flat Float64Array, dimension].
+function flatten(points, dimension) {
+  if (points === null || points === undefined || typeof points.length !== 'number' || typeof points === 'string')
+    throw inputError('points must be an array of points', 'points');
+  const n = points.length;
+  if (dimension !== undefined) {
+    if (!Number.isInteger(dimension) || dimension < 1)
+      throw inputError(`dimension must be a positive integer, got ${dimension}`, 'dimension', null, null, String(dimension));
+    if (n > 0 && typeof points[0] !== 'number')
+      throw inputError('options.dimension is for flat coordinates; points[0] is not a number', 'points', 0);
+    return [Float64Array.from(points), dimension];
+  }
+  if (n === 0) throw inputError('a curve needs at least 2 points, got 0', 'points', null, null, '0');
+  const first = points[0];
+  if (typeof first === 'number')
+    throw inputError('flat coordinates need options.dimension (or give points as [[x, y], ...])', 'points');
+  if (first && typeof first === 'object' && typeof first.length !== 'number' && 'x' in first) {
+    // {x, y, z?} objects (three.js Vector3, d3 data): 2-D unless z is there.
+    const dim = 'z' in first && first.z !== undefined ? 3 : 2;
+    const flat = new Float64Array(n * dim);
+    for (let i = 0; i < n; ++i) {
+      const p = points[i];
+      if (!p || typeof p !== 'object')
+        throw inputError(`point ${i} is not an object with x, y${dim === 3 ? ', z' : ''}`, 'points', i);
+      flat[i * dim] = p.x;
+      flat[i * dim + 1] = p.y;
+      if (dim === 3) flat[i * dim + 2] = p.z;
+    }
+    return [flat, dim];
+  }
+  if (!first || typeof first.length !== 'number')
+    throw inputError('point 0 is not an array of coordinates', 'points', 0);
+  const dim = first.length;
+  const flat = new Float64Array(n * dim);
+  for (let i = 0; i < n; ++i) {
+    const p = points[i];
+    if (!p || typeof p.length !== 'number')
+      throw inputError(`point ${i} is not an array of coordinates`, 'points', i);
+    if (p.length !== dim)
+      throw inputError(`point ${i} has ${p.length} coordinates, point 0 has ${dim}`, 'points', i, null, String(p.length));
+    for (let k = 0; k < dim; ++k) flat[i * dim + k] = p[k];
+  }
+  return [flat, dim];
+}
+
+// The WASM object is freed when its curve is collected, unless dispose()
+// freed it first.
+const registry = typeof FinalizationRegistry === 'function'
+  ? new FinalizationRegistry((spline) => { if (!spline.isDeleted()) spline.delete(); })
+  : null;
+
+/// A Catmull-Rom curve through points. options: alpha (0 uniform, 0.5
+/// centripetal, the default, 1 chordal) or grid (the knots), closed,
+/// tension, start/end ('natural' | 'reflect' | {tangent: [...]}), strict,
+/// kb ({tension, continuity, bias} per point), tangents/tangentsIn (given
+/// dx/dt: a Hermite curve), dimension (with flat coordinates).
+export function catmullRom(points, options = {}) {
+  const M = module();
+  if (options === null || typeof options !== 'object') throw inputError('options must be an object', 'options');
+  for (const key of Object.keys(options))
+    if (!OPTIONS.has(key) && options[key] !== undefined)
+      throw inputError(`unknown option '${key}' (options are ${[...OPTIONS].join(', ')})`, key);
+  const [flat, dim] = flatten(points, options.dimension);
+  const { dimension: _, ...rest } = options;
+  return new CatmullRom(new M.Spline(flat, dim, rest));
+}
+
+/// A curve, as catmullRom() makes it. t is the curve's own parameter
+/// (the knots: curve.tMin .. curve.tMax), s is arc length.
+export class CatmullRom {
+  #s;
+  #dim;
+
+  /// @internal: use catmullRom().
+  constructor(spline) {
+    this.#s = spline;
+    this.#dim = spline.dimension();
+    registry?.register(this, spline, this);
+  }
+
+  #spline() {
+    if (!this.#s) throw new Error('crspline: this curve was disposed');
+    return this.#s;
+  }
+
+  /// Frees the WASM memory now; the curve cannot be used afterwards.
+  dispose() {
+    if (!this.#s) return;
+    registry?.unregister(this);
+    this.#s.delete();
+    this.#s = null;
+  }
+
+  get disposed() { return this.#s === null; }
+  get dimension() { return this.#dim; }
+  get pointCount() { return this.#spline().pointCount(); }
+  get segmentCount() { return this.#spline().segmentCount(); }
+  get closed() { return this.#spline().closed(); }
+  get tMin() { return this.#spline().tMin(); }
+  get tMax() { return this.#spline().tMax(); }
+  /// The knots (pointCount values, one more when closed).
+  get grid() { return this.#spline().grid(); }
+  /// The points, flat: point i is [i * dimension, (i + 1) * dimension).
+  get points() { return this.#spline().points(); }
+
+  /// Position (order 0) or derivative d^order x / dt^order (1..3) at t.
+  evaluate(t, order = 0) { return this.#spline().evaluate(t, order); }
+  /// Many parameters at once: point k is [k * dimension, (k + 1) * dimension)
+  /// of the result (written into `out` when given).
+  evaluateMany(t, order = 0, out) {
+    const r = this.#spline().evaluateMany(t, order);
+    if (!out) return r;
+    if (out.length < r.length)
+      throw inputError(`out has ${out.length} numbers, ${r.length} needed`, 'out', null, null, String(out.length));
+    out.set(r);
+    return out;
+  }
+  /// The segment holding t.
+  locate(t) { return this.#spline().locate(t); }
+  /// Curvature at t (null where the speed is zero).
+  curvature(t) { return this.#spline().curvature(t); }
+
+  /// The Bézier control points B0..B3: of segment i, or of every segment
+  /// in turn (4 * dimension numbers per segment).
+  bezier(i) { return i === undefined ? this.#spline().bezierAll() : this.#spline().bezier(i); }
+
+  /// Total arc length (the cached table), or to the given accuracy.
+  arcLength(accuracy) {
+    return accuracy === undefined ? this.#spline().arcLength() : this.#spline().arcLength(accuracy);
+  }
+  arcLengthBetween(t0, t1) { return this.#spline().arcLengthBetween(t0, t1); }
+  /// Arc length from the start to t, and its inverse.
+  sAt(t) { return this.#spline().sAt(t); }
+  tAtArcLength(s) { return this.#spline().tAtArcLength(s); }
+  /// Arc length at every knot.
+  knotLengths() { return this.#spline().knotLengths(); }
+  /// n points evenly spaced in arc length: {t, s, points}.
+  sampleArcLength(n, accuracy = 0) { return this.#spline().sampleArcLength(n, accuracy); }
+  /// n points evenly spaced in t.
+  sampleT(n) { return this.#spline().sampleT(n); }
+  /// A polyline within `tolerance` of the curve: {points, t}.
+  tessellate(tolerance = 0) { return this.#spline().tessellate(tolerance); }
+  boundingBox() { return this.#spline().boundingBox(); }
+  /// The point of the curve nearest to p: {t, distance, distanceSq, segment, point}.
+  nearest(p) {
+    const r = this.#spline().nearest(p);
+    r.distance = Math.sqrt(r.distanceSq);
+    return r;
+  }
+
+  /// The paper's analysis, per segment, as the core reports it.
+  analyze() { return this.#spline().analyze(); }
+  /// The intersection-free certificate, as the core reports it.
+  certify(options) { return options === undefined ? this.#spline().certify() : this.#spline().certify(options); }
+  intersections(tolerance = 0) { return this.#spline().intersections(tolerance); }
+  cusps() { return this.#spline().cusps(); }
+}
+if (typeof Symbol.dispose === 'symbol') CatmullRom.prototype[Symbol.dispose] = CatmullRom.prototype.dispose;
+
+const api = { init, isReady, version, wasmMemoryBytes, catmullRom, CatmullRom };
+export default api;

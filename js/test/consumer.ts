@@ -1,0 +1,51 @@
+// A typed consumer of the package: `tsc --noEmit` checks the declarations
+// against the way the docs use them (test/types.test.mjs runs it). Lines
+// marked @ts-expect-error must fail to type-check: the declarations are not
+// just `any`.
+import crspline, { init, catmullRom, CatmullRom, type CurveOptions, type CrsplineError, type Nearest } from 'crspline';
+import { crsplineCurve, crsplineCurveClosed, crsplineCurveOpen } from 'crspline/d3';
+import { CRSplineCurve3 } from 'crspline/three';
+import { line, area, type CurveFactory } from 'd3-shape';
+import { TubeGeometry, Vector3, type Curve } from 'three';
+
+async function main(): Promise<number> {
+  const api = await init();
+  const opts: CurveOptions = { alpha: 0.5, closed: false, tension: 0, start: 'reflect', end: { tangent: [1, 0] } };
+  const curve: CatmullRom = api.catmullRom([[0, 0], [1, 2], [3, 1]], opts);
+  const p: Float64Array = curve.evaluate(0.5, 1);
+  const many: Float64Array = curve.evaluateMany(new Float64Array([0, 0.5]), 0, new Float64Array(4));
+  const L: number = curve.arcLength();
+  const t: number = curve.tAtArcLength(L / 2);
+  const poly = curve.tessellate(1e-3);
+  const n: Nearest = curve.nearest([1, 1]);
+  const ok: boolean = curve.certify({ safeAngle: 1 }).certified;
+  curve.analyze();
+  curve.bezier(0);
+  curve.dispose();
+  // @ts-expect-error: order 4 is not a derivative order crspline computes
+  catmullRom([[0], [1]]).evaluate(0, 4);
+  // @ts-expect-error: alpha is a number
+  catmullRom([[0], [1]], { alpha: 'centripetal' });
+  try {
+    catmullRom([[0, 0]]);
+  } catch (e) {
+    const err = e as CrsplineError;
+    console.log(err.field, err.index, err.value);
+  }
+  const factory: CurveFactory = crsplineCurve.alpha(0.5).ends('d3');
+  const d: string | null = line().curve(factory)([[0, 0], [1, 1], [2, 0]]);
+  area().curve(crsplineCurveOpen.alpha(1))([[0, 0], [1, 1], [2, 0], [3, 1]]);
+  line().curve(crsplineCurveClosed);
+  // @ts-expect-error: ends are 'natural', 'd3' or 'reflect'
+  crsplineCurve.ends('clamped');
+  const c3 = new CRSplineCurve3([new Vector3(0, 0, 0), new Vector3(1, 1, 0), new Vector3(2, 0, 1)], false, 'chordal');
+  const asCurve: Curve<Vector3> = c3;
+  const tube = new TubeGeometry(c3, 32, 0.1, 8, false);
+  const at: Vector3 = c3.getPointAt(0.5);
+  // @ts-expect-error: curveType is one of three.js' three
+  new CRSplineCurve3([], false, 'bspline');
+  c3.dispose();
+  return p[0] + many[0] + t + poly.points.length + n.distance + Number(ok) + (d?.length ?? 0) +
+    tube.attributes.position.count + at.x + (asCurve.arcLengthDivisions) + crspline.version().length;
+}
+void main;
