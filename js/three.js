@@ -130,6 +130,7 @@ export class CRSplineCurve3 extends Curve {
 
   // three.js' t -> crspline's t (the knots).
   _globalT(t, c) {
+    if (t >= 1) return c.grid[c.nseg];  // the end (of a closed curve too: getLengths)
     const [i, u] = this._locate(t, c);
     const g = c.grid;
     return i === c.nseg - 1 && u === 1 ? g[c.nseg] : g[i] + u * (g[i + 1] - g[i]);
