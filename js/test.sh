@@ -21,8 +21,12 @@ scratch="$work/project"
 mkdir -p "$scratch"
 cp "$here/test/package.json" "$here/test/package-lock.json" "$here/test/tsconfig.json" "$here/test/consumer.ts" "$scratch/"
 cp "$here"/test/*.mjs "$scratch/"
+cp -r "$here/test/browser" "$scratch/"
 cp -a "$here/test/node_modules" "$scratch/"
 rm -rf "$scratch/node_modules/crspline"
 (cd "$scratch" && npm install --no-save --offline --no-audit --no-fund --loglevel=error "$tgz")
 cd "$scratch"
-CRSPLINE_REPO="$root" node --test "$@" ./*.test.mjs
+# Test files named in the arguments run alone; otherwise all of them.
+files=(./*.test.mjs)
+for a in "$@"; do [[ "$a" == *.test.mjs ]] && files=() && break; done
+CRSPLINE_REPO="$root" node --test "$@" "${files[@]}"
