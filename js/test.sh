@@ -19,7 +19,7 @@ if [[ ! -d "$here/test/node_modules/three" || "$here/test/package-lock.json" -nt
 fi
 scratch="$work/project"
 mkdir -p "$scratch"
-cp "$here/test/package.json" "$here/test/package-lock.json" "$here/test/tsconfig.json" "$here/test/consumer.ts" "$scratch/"
+cp "$here/test/package.json" "$here/test/package-lock.json" "$here"/test/tsconfig*.json "$here/test/consumer.ts" "$scratch/"
 cp "$here"/test/*.mjs "$scratch/"
 cp -r "$here/test/browser" "$scratch/"
 cp -a "$here/test/node_modules" "$scratch/"
