@@ -113,10 +113,16 @@ def main():
         p(f"| {name} | {fmt_ns(t)}/{unit} | {' '.join(extra)} |")
     for name, v in js.get("results", {}).items():
         if isinstance(v, dict) and "median_ns" in v:
-            extra = f"rel_err={v['rel_err']:.3g} (arcLengthDivisions={v['arcLengthDivisions']})" if "rel_err" in v else ""
+            extra = f"rel_err={v['rel_err']:.3g}" if "rel_err" in v else ""
+            if "arcLengthDivisions" in v:
+                extra += f" (arcLengthDivisions={v['arcLengthDivisions']})"
+            if "max_distance_to_three" in v:
+                extra += f"max distance to three.js' getPoint={v['max_distance_to_three']:.2g}"
             p(f"| {name} (node {js.get('node')}, three {js.get('three')}) | {fmt_ns(v['median_ns'])}/point | {extra} |")
     if "wasm_error" in js.get("results", {}):
         p(f"| threejs_*/wasm | not run | {js['results']['wasm_error']} |")
+    if "adapter_error" in js.get("results", {}):
+        p(f"| threejs_*/adapter | not run | {js['results']['adapter_error']} |")
 
     p("")
     p("| target | measured (same run) | goal | status |")
@@ -173,6 +179,9 @@ def main():
             p(f"| {case}: three.js / native crspline time | {v['median_ns'] / nat:.1f}x | (info) | |")
         if v and w:
             p(f"| {case}: three.js / crspline WASM time | {v['median_ns'] / w['median_ns']:.1f}x | (info) | |")
+        ad = js.get("results", {}).get(f"{case}/adapter")
+        if v and ad:
+            p(f"| {case}: three.js / CRSplineCurve3 (crspline/three) time | {v['median_ns'] / ad['median_ns']:.1f}x | (info) | |")
 
     sc = [(int(k.split("/")[1]), k) for k in rows if k.startswith(("nearest_scaling/", "nearest/"))]
     if sc:

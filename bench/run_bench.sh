@@ -3,7 +3,8 @@
 # project's normal flags, no -march), the Google Benchmark suite with
 # repetitions, the three.js peer in node, then the table of medians and ratios.
 #   apt: libbenchmark-dev libboost-math-dev libglm-dev nodejs npm
-#   npm: three (bench/js/package.json, installed with `npm ci`)
+#   npm: three (bench/js/package.json, installed with `npm ci`); crspline's
+#        own npm package (js/build.sh) for its three.js adapter
 # Environment: BUILD (default build-bench/bench), REPS (default 5),
 # FILTER (a --benchmark_filter regex, default all).
 set -euo pipefail
@@ -17,6 +18,10 @@ mkdir -p "$results"
 cmake -S bench -B "$build" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" -j2
 if [[ ! -d bench/js/node_modules/three ]]; then (cd bench/js && npm ci --no-audit --no-fund); fi
+# crspline's npm package (CRSplineCurve3 against CatmullRomCurve3), packed
+# from web/dist and installed without touching bench/js's lock file.
+tgz="$(js/build.sh "$build/pack")"
+(cd bench/js && npm install --no-save --offline --no-audit --no-fund --loglevel=error "$tgz")
 
 stamp="$(date -u +%Y%m%dT%H%M%SZ)"
 "$build/crspline_bench" --dump-points="$results/walk1000.json"

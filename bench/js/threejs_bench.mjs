@@ -10,6 +10,9 @@
 //   threejs_getPointAt/three   getPointAt(u, target), arc-length parameter
 //   threejs_getPoint/wasm      Spline.evaluateMany(t) on 10^6 increasing t
 //   threejs_getPointAt/wasm    Spline.sampleArcLength(10^6) (builds its table)
+//   threejs_getPoint/adapter   crspline's CRSplineCurve3 (the npm package,
+//   threejs_getPointAt/adapter installed in bench/js by run_bench.sh), the
+//                              same calls as three.js, same three
 // Accuracy of getPointAt: how far three's arc-length parameter is from
 // true arc length, |s(point) - u L| / L, s from a 2*10^6-chord polyline.
 import fs from 'node:fs';
@@ -70,8 +73,11 @@ results['threejs_getPointAt/three'] = time(() => {
 // Accuracy of getPointAt: the reference arc length s(t) of three's own curve
 // from a dense polyline in its parameter t (chord error ~ (L/N)^2 curvature,
 // far below what is measured).
-{
-    const N = 2_000_000;
+function getPointAtError(curve) {
+    // About 2*10^6 chords, a whole number per segment: every knot (where
+    // three's t changes speed) is a sample, so no chord straddles one.
+    const nseg = curve.points.length - (curve.closed ? 0 : 1);
+    const N = nseg * Math.ceil(2_000_000 / nseg);
     const cum = new Float64Array(N + 1);
     const a = new THREE.Vector3(), b = new THREE.Vector3();
     curve.getPoint(0, a);
@@ -89,8 +95,42 @@ results['threejs_getPointAt/three'] = time(() => {
         const s = cum[i] + (cum[i + 1] - cum[i]) * (x - i);
         worst = Math.max(worst, Math.abs(s - u * L) / L);
     }
-    results['threejs_getPointAt/three'].rel_err = worst;
-    results['threejs_getPointAt/three'].arcLengthDivisions = curve.arcLengthDivisions;
+    return worst;
+}
+results['threejs_getPointAt/three'].rel_err = getPointAtError(curve);
+results['threejs_getPointAt/three'].arcLengthDivisions = curve.arcLengthDivisions;
+
+// The same calls through crspline's three.js adapter, if the package is
+// installed here (run_bench.sh: js/build.sh, npm install --no-save).
+try {
+    const { init } = await import('crspline');
+    const { CRSplineCurve3 } = await import('crspline/three');
+    await init();
+    const adapter = new CRSplineCurve3(pts.map(([x, y, z]) => new THREE.Vector3(x, y, z)), false, 'centripetal');
+    results['threejs_getPoint/adapter'] = time(() => {
+        for (let k = 0; k < n; ++k) {
+            adapter.getPoint(k / (n - 1), target);
+            out[3 * k] = target.x; out[3 * k + 1] = target.y; out[3 * k + 2] = target.z;
+        }
+        sink += out[3 * (n >> 1)];
+    });
+    results['threejs_getPointAt/adapter'] = time(() => {
+        for (let k = 0; k < n; ++k) {
+            adapter.getPointAt(k / (n - 1), target);
+            out[3 * k] = target.x; out[3 * k + 1] = target.y; out[3 * k + 2] = target.z;
+        }
+        sink += out[3 * (n >> 1)];
+    });
+    results['threejs_getPointAt/adapter'].rel_err = getPointAtError(adapter);
+    // The same curve as three.js' (no coincident points on the walk): the
+    // largest distance between the two getPoint over the timed u.
+    let gap = 0;
+    const a = new THREE.Vector3(), b = new THREE.Vector3();
+    for (let k = 0; k < n; k += 97) gap = Math.max(gap, curve.getPoint(k / (n - 1), a).distanceTo(adapter.getPoint(k / (n - 1), b)));
+    results['threejs_getPoint/adapter'].max_distance_to_three = gap;
+    adapter.dispose();
+} catch (e) {
+    results.adapter_error = String(e);
 }
 
 // crspline's WebAssembly module, if built.
