@@ -40,8 +40,10 @@ async function load({ wasmBinary, wasmURL } = {}) {
   if (wasmBinary) {
     args.wasmBinary = wasmBinary;
   } else if (url.protocol === 'file:' && typeof process !== 'undefined' && process.versions?.node) {
-    // node's fetch cannot read file: URLs; read the bytes instead.
-    const { readFile } = await import('node:fs/promises');
+    // node's fetch cannot read file: URLs; read the bytes instead. (The
+    // specifier is a variable, hidden from bundlers: browsers never get here.)
+    const fsModule = 'node:fs/promises';
+    const { readFile } = await import(/* webpackIgnore: true */ /* @vite-ignore */ fsModule);
     args.wasmBinary = await readFile(url);
   } else {
     args.locateFile = (name) => (name.endsWith('.wasm') ? url.href : name);
