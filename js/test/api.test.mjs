@@ -223,7 +223,7 @@ test('errors are Error objects with the core words and field / index / component
 });
 
 // Runs `code` (an ES module body) in a node with --expose-gc; returns its JSON output.
-function runWithGc(code) {
+function runChild(code) {
   const file = fileURLToPath(new URL(`./gc-${process.pid}-${Math.random().toString(36).slice(2)}.mjs`, import.meta.url));
   fs.writeFileSync(file, code);
   try {
@@ -242,7 +242,7 @@ test('WASM memory: dispose() frees it now, and a dropped curve is freed by the g
   // 240 MB. Freed, the allocator reuses the same memory: the heap stays under
   // 100 MB (it starts at 32 MB).
   // memory is the WASM heap's size in bytes (it only grows).
-  const out = runWithGc(`
+  const out = runChild(`
     import { init, catmullRom, wasmMemoryBytes } from 'crspline';
     await init();
     const n = 20000, pts = new Float64Array(3 * n);
@@ -264,4 +264,18 @@ test('WASM memory: dispose() frees it now, and a dropped curve is freed by the g
   `);
   assert.ok(out.disposed < 100e6, `after dispose: ${out.disposed} bytes`);
   assert.ok(out.collected < 100e6, `after collection: ${out.collected} bytes`);
+});
+
+test('init({ wasmBinary }): the bytes from elsewhere (here the exported crspline/crspline.wasm)', () => {
+  const out = runChild(`
+    import fs from 'node:fs';
+    import { createRequire } from 'node:module';
+    import { init, catmullRom } from 'crspline';
+    const bytes = fs.readFileSync(createRequire(import.meta.url).resolve('crspline/crspline.wasm'));
+    const api = await init({ wasmBinary: bytes });
+    const c = catmullRom([[0, 0], [3, 4]]);
+    console.log(JSON.stringify({ version: api.version(), length: c.arcLength() }));
+  `);
+  assert.match(out.version, /^\d+\.\d+\.\d+/);
+  assert.equal(out.length, 5);
 });
