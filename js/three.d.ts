@@ -6,8 +6,8 @@ export type CurveType = 'centripetal' | 'chordal' | 'catmullrom';
 /**
  * A drop-in for THREE.CatmullRomCurve3 (same constructor arguments), computed
  * by crspline: exact getPoint and getTangent, getPointAt through crspline's
- * arc length. Call updateArcLengths() after changing points; dispose() frees
- * the WebAssembly memory now.
+ * arc length. A new points array is picked up; after moving points in place
+ * call updateArcLengths(). dispose() frees the WebAssembly memory now.
  */
 export class CRSplineCurve3 extends Curve<Vector3> {
   constructor(points?: Vector3[], closed?: boolean, curveType?: CurveType, tension?: number);

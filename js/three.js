@@ -16,8 +16,9 @@
 //    arc length (relative error 1e-12, not a 200-chord table);
 //  - coincident points are handled by the core's rules, not replaced by a
 //    1e-4 constant knot interval.
-// After changing `points`, call updateArcLengths() (as three.js asks for
-// getPointAt) to rebuild the curve. dispose() frees the WASM memory now.
+// The curve is rebuilt when `points` is a new array or changes length; after
+// moving points in place, call updateArcLengths() (as three.js asks for
+// getPointAt). dispose() frees the WASM memory now.
 import { Curve, Vector3 } from 'three';
 import { catmullRom } from './index.js';
 
@@ -38,7 +39,7 @@ export class CRSplineCurve3 extends Curve {
   // The crspline curve for the current points, built on first use.
   _data() {
     const pts = this.points;
-    if (this._c && !this.needsUpdate && this._c.n === pts.length) return this._c;
+    if (this._c && !this.needsUpdate && this._c.points === pts && this._c.n === pts.length) return this._c;
     this._free();
     this.needsUpdate = false;
     const alpha = ALPHA[this.curveType];
@@ -58,7 +59,8 @@ export class CRSplineCurve3 extends Curve {
     const flat = new Float64Array(3 * pts.length);
     pts.forEach((p, i) => { flat[3 * i] = p.x; flat[3 * i + 1] = p.y; flat[3 * i + 2] = p.z; });
     const curve = catmullRom(flat, { ...options, dimension: 3 });
-    this._c = { curve, bez: curve.bezier(), grid: curve.grid, nseg: curve.segmentCount, length: curve.arcLength(), n: pts.length };
+    this._c = { curve, bez: curve.bezier(), grid: curve.grid, nseg: curve.segmentCount, length: curve.arcLength(),
+      points: pts, n: pts.length };
     return this._c;
   }
 

@@ -181,6 +181,10 @@ test('drop-in: constructor defaults, updateArcLengths after moving points, copy,
   b.updateArcLengths();
   assert.ok(a.getPoint(0.5).distanceTo(before) > 0.1);
   assert.ok(a.getPoint(0.5).distanceTo(b.getPoint(0.5)) <= 1e-12 * 4);
+  // A new points array is picked up without a call.
+  a.points = pts.map((p) => p.clone().setZ(p.z + 1));
+  assert.ok(Math.abs(a.getPoint(0.5).z - b.getPoint(0.5).z - 1) <= 1e-12 * 4);
+  a.points = pts;
   const c = a.clone();
   assert.ok(c instanceof CRSplineCurve3);
   assert.deepEqual(c.getPoint(0.7), a.getPoint(0.7));
