@@ -69,6 +69,41 @@ def intersection_scaling(rows, ns, p):
             p(f"\ncertify {n} segments: {t:.3g} s, goal <= {goal} s: {'met' if t <= goal else f'MISSED by {t / goal:.2f}x'}")
 
 
+def dimension_costs(rows, ns, p):
+    """dimension/<op>/<path>/<d> (bench/dimension_bench.cpp): the front ends'
+    run-time dimension path (runtime: exact for 1..4, zero-padded to 16 for
+    5..16) and padding to 8 (pad8, measured only) against catmull_rom<d>."""
+    cases = {}
+    for name in rows:
+        parts = name.split("/")
+        if len(parts) == 4 and parts[0] == "dimension" and ns(name):
+            cases.setdefault(parts[1], {})[(parts[2], int(parts[3]))] = ns(name)
+    if not cases:
+        return
+    dims = sorted({d for v in cases.values() for _, d in v})
+    p("")
+    p("Run-time dimension (issue 14): time per item of the front ends' path / catmull_rom<d> used directly"
+      " (runtime: d exactly for 1..4, zero-padded catmull_rom<16> for 5..16; pad8: padded to 8, not used,"
+      " for comparison). Native time per item in brackets.")
+    p("")
+    p("| operation | " + " | ".join(f"{d}-D runtime" for d in dims) + " | " +
+      " | ".join(f"{d}-D pad8" for d in dims if any(k == ("pad8", d) for v in cases.values() for k in v)) + " |")
+    pad_dims = [d for d in dims if any(k == ("pad8", d) for v in cases.values() for k in v)]
+    p("|---|" + "---:|" * (len(dims) + len(pad_dims)))
+    for op, v in cases.items():
+        cells = []
+        for path, ds in (("runtime", dims), ("pad8", pad_dims)):
+            for d in ds:
+                nat, r = v.get(("native", d)), v.get((path, d))
+                cells.append(f"{r / nat:.2f}x" + (f" ({fmt_ns(nat)})" if path == "runtime" else "") if nat and r else "")
+        p(f"| {op} | " + " | ".join(cells) + " |")
+    worst = max(((v[("runtime", d)] / v[("native", d)], op, d) for op, v in cases.items() for d in dims
+                 if d >= 5 and ("runtime", d) in v and ("native", d) in v), default=None)
+    if worst:
+        p(f"\nLargest padded cost: {worst[1]} at {worst[2]}-D, {worst[0]:.2f}x native"
+          f" ({'over' if worst[0] > 3 else 'within'} 3x).")
+
+
 def main():
     ctx, rows = load_cpp(sys.argv[1])
     js = {}
@@ -97,6 +132,8 @@ def main():
     per = {"construct": "control point", "arc_length": "segment", "tessellate": "segment",
            "nearest": "query", "nearest_scaling": "query", "t_at_arc_length": "query",
            "certify": "segment", "find_intersections": "segment"}
+    per.update({"dimension/construct": "control point", "dimension/arc_length": "segment",
+                "dimension/analyze": "segment", "dimension/intersections": "segment"})
     for name, b in rows.items():
         t = ns(name)
         if t is None:
@@ -194,6 +231,7 @@ def main():
             t, s = ns(k), ctr(k, "solved_per_query")
             p(f"| {n} | {fmt_ns(t)} | {ctr(k, 'nodes_per_query'):.1f} | {s:.2f} | {fmt_ns(t / s)} |")
     intersection_scaling(rows, ns, p)
+    dimension_costs(rows, ns, p)
     print("\n".join(out))
 
 
