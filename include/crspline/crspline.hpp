@@ -14,6 +14,7 @@
 #include "nearest.hpp"
 #include "parameterization.hpp"
 #include "point_traits.hpp"
+#include "report.hpp"
 #include "segment.hpp"
 #include "spec.hpp"
 #include "tessellate.hpp"

@@ -476,54 +476,36 @@ class CatmullRom:
         return {"position": position, "tangent": tangent, "normal": nrm, "binormal": binormal}
 
     def analyze(self, *, intersections=True):
-        """Analysis of the curve as plain dicts and ndarrays.
+        """The analysis report of the curve, as plain dicts, lists, floats,
+        ints, bools, strings and None: the same keys and values as
+        ``crspline analyze`` prints, so ``json.dumps`` writes the CLI's
+        report. The schema, field by field: docs/report.md.
 
-        Returns ``{'segments': [...], 'cusp_t', 'has_cusp',
-        'has_self_intersection', 'intersections'}``:
-
-        * ``segments``: one dict per segment with ``index``, ``rank`` (of its
-          affine span), ``bezier`` (4, dim), ``zero_speed_u``, ``cusp_u`` and
-          ``cusp_t`` (interior zero-speed points, local u and global t),
-          ``self_intersection_u`` (k, 2) (loops, planar segments), ``fold``
-          (a collinear segment that reverses), ``has_cusp``,
-          ``has_self_intersection``, ``projection`` (chord-frame quantities
-          or None for a zero chord), ``bezier_height``, ``bezier_bound``,
-          ``max_chord_line_distance(_u)``, ``max_chord_distance(_u)``,
-          ``overshoot`` and ``bounds`` (the paper's Eq. 5, 6 and 8 for plain
-          interior segments, else None).
-        * ``cusp_t``: every cusp of the curve, in t.
-        * ``intersections``: ``self.intersections()`` (whole curve: also
-          crossings between segments), or None with ``intersections=False``.
-        * ``has_self_intersection``: a loop or fold in a segment, or any
-          meeting found by the whole-curve search.
+        ``{'dimension', 'segments': [...], 'cusp_t', 'has_cusp',
+        'has_self_intersection', 'intersections', 'folds', 'complete',
+        'certificate'}``: one dict per segment (cusps, loops and folds with
+        their local u and global t, chord-frame quantities, measured
+        distances, the paper's bounds), the whole-curve search (crossings
+        between segments, loops inside one, each with its ``distance``;
+        ``complete`` is False if the search ran out of its work budget) and
+        the Section 5 certificate. ``intersections=False`` skips the search
+        (``intersections``, ``folds`` and ``complete`` are then None).
         """
-        segments = self._need("analyze", "analysis.hpp")()
-        for s in segments:
-            s["bezier"] = self._cut(s["bezier"])
-        cusp_t = _np.concatenate([s["cusp_t"] for s in segments]) if segments else _np.empty(0, self.dtype)
-        found = self.intersections() if intersections else None
-        return {
-            "segments": segments,
-            "cusp_t": cusp_t,
-            "has_cusp": any(s["has_cusp"] for s in segments),
-            "has_self_intersection": any(s["has_self_intersection"] for s in segments)
-            or bool(found is not None and found["any"]),
-            "intersections": found,
-        }
+        f = self._need("analyze", "report.hpp")
+        return f(bool(intersections), None, self._dim)
 
     def intersections(self, tolerance=None):
         """Every meeting of the curve with itself closer than ``tolerance`` (a
         distance; default 1e-9 times the size of the Bézier points' box):
         crossings between segments, loops inside segments, folds.
 
-        Returns ``{'segments': (k, 2) int64, 'u': (k, 2), 't': (k, 2),
-        'point': (k, dim), 'distance': (k,), 'folds': int64 array of
-        segments, 'complete': bool, 'any': bool}``. ``complete`` is False if
-        a pair of segments exhausted the search's work budget."""
+        Returns the report's search object (docs/report.md):
+        ``{'intersections': [{'segments': [i, j], 'u': [u_i, u_j], 't': [t_i,
+        t_j], 'point': [...], 'distance': d}, ...], 'folds': [...],
+        'complete': bool, 'any': bool}``. ``complete`` is False if a pair of
+        segments exhausted the search's work budget."""
         f = self._need("intersections", "intersections.hpp")
-        found = f(None if tolerance is None else _real(tolerance, "tolerance"))
-        found["point"] = self._cut(found["point"])
-        return found
+        return f(None if tolerance is None else _real(tolerance, "tolerance"), self._dim)
 
     def certify_intersection_free(self, *, safe_angle=None, search_on_failure=True, tolerance=None):
         """Section 5's certificate that the curve does not intersect itself.
@@ -531,16 +513,15 @@ class CatmullRom:
         Rules: (1) centripetal knots and plain interior segments, end segments
         without cusp or loop; (2) every polygon angle above ``safe_angle``
         (default pi/3, radians); (3) disjoint bounding boxes of non-adjacent
-        segments. Returns ``{'certified', 'failed_rule', 'vertex', 'segment',
-        'segments', 'angle', 'detail', 'intersects', 'search'}``; when not
-        certified and ``search_on_failure``, ``intersects`` and ``search``
-        (as ``intersections()``) say whether it really does."""
+        segments. Returns the report's certificate object (docs/report.md):
+        ``{'certified', 'failed_rule' (None when certified), 'detail',
+        'vertex', 'segment', 'segments', 'angle', 'intersects', 'search'}``;
+        when not certified and ``search_on_failure``, ``intersects`` and
+        ``search`` (as ``intersections()``) say whether it really does."""
         f = self._need("certify_intersection_free", "certify.hpp")
         angle = _crspline.safe_adjacent_angle if safe_angle is None else _real(safe_angle, "safe_angle")
-        cert = f(angle, bool(search_on_failure), None if tolerance is None else _real(tolerance, "tolerance"))
-        if cert.get("search") is not None:
-            cert["search"]["point"] = self._cut(cert["search"]["point"])
-        return cert
+        return f(angle, bool(search_on_failure), None if tolerance is None else _real(tolerance, "tolerance"),
+                 self._dim)
 
 
 class KochanekBartels(CatmullRom):

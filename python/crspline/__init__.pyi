@@ -54,33 +54,87 @@ class Frames(TypedDict):
     normal: _Array
     binormal: _Array
 
+# The analysis report: docs/report.md (the same keys and values as
+# `crspline analyze` prints; plain lists, not arrays).
+_Pair = list[float]
+
+class Intersection(TypedDict):
+    segments: list[int]
+    u: _Pair
+    t: _Pair
+    point: list[float]
+    distance: float
+
 class Intersections(TypedDict):
-    segments: npt.NDArray[np.int64]
-    u: _Array
-    t: _Array
-    point: _Array
-    distance: _Array
-    folds: npt.NDArray[np.int64]
+    intersections: list[Intersection]
+    folds: list[int]
     complete: bool
     any: bool
 
-class Analysis(TypedDict):
-    segments: list[dict[str, Any]]
-    cusp_t: _Array
+class ChordProjection(TypedDict):
+    bezier: _Pair
+    theorem2: bool
+    derivative_min: float
+    derivative_min_u: float
+    range: _Pair
+
+class PaperBounds(TypedDict):
+    d1: float
+    d2: float
+    d3: float
+    theta1: float
+    theta2: float
+    h1: float
+    h2: float
+    eq6_one_sided: float
+    eq6: float
+    eq8_start: float
+    eq8_end: float
+
+class SegmentReport(TypedDict):
+    index: int
+    rank: int
+    bezier: list[list[float]]
+    zero_speed_u: list[float]
+    cusp_u: list[float]
+    cusp_t: list[float]
+    self_intersection_u: list[_Pair]
+    self_intersection_t: list[_Pair]
+    fold: bool
     has_cusp: bool
     has_self_intersection: bool
-    intersections: Union[Intersections, None]
+    projection: Union[ChordProjection, None]
+    bezier_height: _Pair
+    bezier_bound: float
+    max_chord_line_distance: float
+    max_chord_line_distance_u: float
+    max_chord_distance: float
+    max_chord_distance_u: float
+    overshoot: _Pair
+    distance_bound: Union[float, None]
+    bounds: Union[PaperBounds, None]
 
 class Certificate(TypedDict):
     certified: bool
-    failed_rule: Literal["none", "not_centripetal", "coincident_points", "adjacent_angle", "overlapping_boxes", "adjacent_pair"]
+    failed_rule: Union[Literal["not_centripetal", "coincident_points", "adjacent_angle", "overlapping_boxes", "adjacent_pair"], None]
+    detail: str
     vertex: Union[int, None]
     segment: Union[int, None]
-    segments: Union[tuple[int, int], None]
-    angle: float
-    detail: str
+    segments: Union[list[int], None]
+    angle: Union[float, None]
     intersects: Union[bool, None]
     search: Union[Intersections, None]
+
+class Analysis(TypedDict):
+    dimension: int
+    segments: list[SegmentReport]
+    cusp_t: list[float]
+    has_cusp: bool
+    has_self_intersection: bool
+    intersections: Union[list[Intersection], None]
+    folds: Union[list[int], None]
+    complete: Union[bool, None]
+    certificate: Union[Certificate, None]
 
 class CatmullRom:
     """A cubic Catmull-Rom curve. Default alpha = 0.5 (centripetal), NOT uniform as in `splines`."""

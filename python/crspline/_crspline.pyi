@@ -117,9 +117,9 @@ class _Curve:
         """Torsion (3-D)."""
     def frames(self, t: _A, kind: str = "rotation_minimizing", initial_normal: Union[list[float], None] = None) -> tuple[_A, _A, _A, _A]:
         """(position, tangent, normal, binormal)."""
-    def analyze(self) -> list[dict[str, Any]]:
-        """Per-segment analysis."""
-    def intersections(self, tolerance: Union[float, None] = None) -> dict[str, Any]:
-        """Whole-curve self-intersections."""
-    def certify_intersection_free(self, safe_angle: float = ..., search_on_failure: bool = True, tolerance: Union[float, None] = None) -> dict[str, Any]:
+    def analyze(self, search: bool = True, tolerance: Union[float, None] = None, dimension: Union[int, None] = None) -> dict[str, Any]:
+        """The analysis report (docs/report.md)."""
+    def intersections(self, tolerance: Union[float, None] = None, dimension: Union[int, None] = None) -> dict[str, Any]:
+        """Whole-curve self-intersections (the report's search object)."""
+    def certify_intersection_free(self, safe_angle: float = ..., search_on_failure: bool = True, tolerance: Union[float, None] = None, dimension: Union[int, None] = None) -> dict[str, Any]:
         """Section 5's certificate."""

@@ -31,8 +31,8 @@ def test_every_oracle_case():
         for got, want in zip(seg["cusp_u"], case["cusp_u"]):
             assert abs(got - want) <= 1e-12, (name, got, want)
         checked["cusp"] += bool(case["cusp_u"])
-        assert len(seg["self_intersection"]) == len(case["self_intersection_uv"]), name
-        for got, want in zip(seg["self_intersection"], case["self_intersection_uv"]):
+        assert len(seg["self_intersection_u"]) == len(case["self_intersection_uv"]), name
+        for got, want in zip(seg["self_intersection_u"], case["self_intersection_uv"]):
             assert abs(got[0] - want[0]) <= 1e-12 and abs(got[1] - want[1]) <= 1e-12, (name, got, want)
         checked["loop"] += bool(case["self_intersection_uv"])
         assert seg["fold"] == case["fold_1d"], name
@@ -61,19 +61,24 @@ LOOP = [[0, 0], [1, 1], [1.1, 1], [2, 0]]
 
 def test_uniform_loop_and_centripetal_certificate():
     uniform = run_json("analyze", {"points": LOOP, "alpha": 0})
-    assert list(uniform) == ["segments", "intersections", "folds", "complete", "intersection_free"]
+    # The keys of docs/report.md, in its order.
+    assert list(uniform) == ["dimension", "segments", "cusp_t", "has_cusp", "has_self_intersection",
+                             "intersections", "folds", "complete", "certificate"]
     assert uniform["complete"] is True
-    loops = [s for s in uniform["segments"] if s["self_intersection"]]
+    loops = [s for s in uniform["segments"] if s["self_intersection_u"]]
     assert [s["index"] for s in loops] == [1]
-    u, v = loops[0]["self_intersection"][0]
+    u, v = loops[0]["self_intersection_u"][0]
     assert 0 < u < v < 1
     # The loop is reported among the curve's intersections as segments [1, 1].
     assert any(x["segments"] == [1, 1] for x in uniform["intersections"])
-    assert uniform["intersection_free"]["certified"] is False
-    assert uniform["intersection_free"]["failed_rule"] == "not_centripetal"
+    assert uniform["has_self_intersection"] is True
+    assert uniform["certificate"]["certified"] is False
+    assert uniform["certificate"]["failed_rule"] == "not_centripetal"
+    # The certificate ran without its own search; the report's found the loop.
+    assert uniform["certificate"]["intersects"] is True and uniform["certificate"]["search"] is None
 
     centripetal = run_json("analyze", {"points": LOOP, "alpha": 0.5})
-    assert all(not s["self_intersection"] and not s["cusp_u"] for s in centripetal["segments"])
+    assert all(not s["self_intersection_u"] and not s["cusp_u"] for s in centripetal["segments"])
 
 
 def test_crossing_between_segments_and_certified_curve():
@@ -91,7 +96,9 @@ def test_crossing_between_segments_and_certified_curve():
     # A gentle centripetal arc is certified intersection-free.
     arc = [[math.cos(a / 10), math.sin(a / 10)] for a in range(0, 20)]
     out = run_json("analyze", {"points": arc})
-    assert out["intersection_free"] == {"certified": True, "failed_rule": None, "detail": ""}
+    assert out["certificate"] == {"certified": True, "failed_rule": None, "detail": "", "vertex": None,
+                                  "segment": None, "segments": None, "angle": None, "intersects": None,
+                                  "search": None}
     assert out["intersections"] == []
 
 
@@ -100,7 +107,7 @@ def test_analyze_from_csv_with_options(tmp_path):
     path.write_text("x,y\n" + "".join(f"{x},{y}\n" for x, y in LOOP))
     p = run(["analyze", "--uniform", str(path)])
     assert p.returncode == 0, p.stderr
-    assert '"self_intersection":[[' in p.stdout
+    assert '"self_intersection_u":[[' in p.stdout
 
 
 def test_given_start_tangent_that_crosses_is_not_certified():
@@ -112,7 +119,7 @@ def test_given_start_tangent_that_crosses_is_not_certified():
     cross = sorted(x["u"] for x in out["intersections"] if x["segments"] == [0, 1])
     assert len(cross) == 2
     assert math.isclose(cross[0][0], 0.1274, abs_tol=1e-4) and math.isclose(cross[1][0], 0.8523, abs_tol=1e-4)
-    free = out["intersection_free"]
+    free = out["certificate"]
     assert free["certified"] is False and free["failed_rule"] == "adjacent_pair"
     assert "segments 0 and 1" in free["detail"] and "end condition" in free["detail"]
     # The same with the command-line tangent.

@@ -45,7 +45,8 @@ def test_every_dimension_matches_one_coordinate_at_a_time(dim):
     near = c.nearest(pts[2] + 0.01)
     # The curve passes through pts[2], 0.01 * sqrt(dim) from the query.
     assert near["point"].shape == (dim,) and near["distance_sq"] <= dim * 1e-4 * (1 + 1e-9)
-    assert c.intersections()["point"].shape[1] == dim
+    report = c.analyze()
+    assert report["dimension"] == dim and all(len(b) == dim for s in report["segments"] for b in s["bezier"])
 
 
 def test_wide_curve_refuses_what_depends_on_the_dimension():

@@ -191,15 +191,18 @@ def test_analysis_finds_the_uniform_cusp_and_none_for_centripetal():
     assert uni["has_cusp"] and len(uni["segments"]) == 3
     mid = uni["segments"][1]
     assert np.allclose(mid["cusp_u"], [0.5], atol=1e-6) and np.allclose(uni["cusp_t"], [1.5], atol=1e-6)
+    assert mid["cusp_t"] == uni["cusp_t"]
     assert mid["bounds"] is not None and uni["segments"][0]["bounds"] is None  # end segments: no Eq. 5-8
+    assert mid["distance_bound"] == mid["bounds"]["eq6"]
     cen = crspline.CatmullRom(p).analyze()
     assert not cen["has_cusp"] and not cen["has_self_intersection"]
-    assert cen["intersections"]["any"] is False and cen["intersections"]["complete"]
+    assert cen["intersections"] == [] and cen["folds"] == [] and cen["complete"] is True
     for s in cen["segments"]:
         assert s["max_chord_line_distance"] <= s["bezier_bound"] * (1 + 1e-12)
         if s["bounds"] is not None:
             assert s["max_chord_line_distance"] <= s["bounds"]["eq6"] * (1 + 1e-12)
-    assert crspline.CatmullRom(p).analyze(intersections=False)["intersections"] is None
+    quick = crspline.CatmullRom(p).analyze(intersections=False)
+    assert quick["intersections"] is None and quick["complete"] is None and quick["certificate"]["certified"]
 
 
 def test_intersections_and_certificate():
@@ -207,16 +210,18 @@ def test_intersections_and_certificate():
     eight = [(0, 0), (1, 1), (2, 0), (1, -1), (0, 0.2), (-1, 1), (-2, 0), (-1, -1)]
     c = crspline.CatmullRom(eight, endconditions="closed")
     r = c.intersections()
-    assert r["any"] and r["segments"].shape[1] == 2 and r["t"].shape == r["u"].shape
-    for (ta, tb), pt in zip(r["t"], r["point"]):
-        assert np.allclose(c.evaluate(ta), pt, atol=1e-9) and np.allclose(c.evaluate(tb), pt, atol=1e-9)
+    assert r["any"] and r["intersections"] and r["complete"]
+    for x in r["intersections"]:
+        assert len(x["segments"]) == len(x["u"]) == len(x["t"]) == 2 and x["distance"] <= 1e-9
+        ta, tb = x["t"]
+        assert np.allclose(c.evaluate(ta), x["point"], atol=1e-9) and np.allclose(c.evaluate(tb), x["point"], atol=1e-9)
     cert = c.certify_intersection_free()
-    assert not cert["certified"] and cert["intersects"] is True and cert["failed_rule"] != "none"
-    assert cert["detail"]
+    assert not cert["certified"] and cert["intersects"] is True and cert["failed_rule"] is not None
+    assert cert["detail"] and cert["search"] == r
     a = np.linspace(0, 2 * np.pi, 12, endpoint=False)
     circle = crspline.CatmullRom(np.c_[np.cos(a), np.sin(a)], endconditions="closed")
     ok = circle.certify_intersection_free()
-    assert ok["certified"] and ok["failed_rule"] == "none" and ok["search"] is None
+    assert ok["certified"] and ok["failed_rule"] is None and ok["search"] is None
     # Uniform knots break rule 1.
     no = crspline.CatmullRom(np.c_[np.cos(a), np.sin(a)], endconditions="closed", alpha=0)
     r = no.certify_intersection_free(search_on_failure=False)

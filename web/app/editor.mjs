@@ -773,7 +773,7 @@ function updateStatus(ms) {
     const c = global.cert;
     const k = global.intersections.length / 2 + global.folds.length;
     const found = c.intersects === null ? '' : c.intersects ? `; ${k} self-intersection${k === 1 ? '' : 's'}${c.complete ? '' : ' (search incomplete)'}` : '; no self-intersection found';
-    text = `not certified (${c.failedRule.replace(/_/g, ' ')}: ${c.detail})${found}`;
+    text = `not certified (${c.failed_rule.replace(/_/g, ' ')}: ${c.detail})${found}`;
     cls = c.intersects ? 'bad' : '';
   }
   const cert = $('status-cert');

@@ -20,7 +20,7 @@ export function computeGlobal(M, req) {
     const cert = spline.certify({ searchOnFailure: true });
     out.cert = {
       certified: cert.certified,
-      failedRule: cert.failedRule,
+      failed_rule: cert.failed_rule,
       detail: cert.detail,
       vertex: cert.vertex,
       segment: cert.segment,

@@ -25,6 +25,7 @@
 #include <crspline/analysis.hpp>
 #include <crspline/certify.hpp>
 #include <crspline/intersections.hpp>
+#include <crspline/report.hpp>
 
 #include <cmath>
 #include <limits>
@@ -222,107 +223,23 @@ cr::curve_spec spec_from(std::vector<double> flat, int dimension, const val& o) 
 }
 
 // ---------------------------------------------------------------------------
-// Reports as plain JavaScript objects.
+// The analysis report (crspline/report.hpp) as plain JavaScript objects: the
+// same snake_case keys and values as `crspline analyze` prints and Python's
+// dicts hold (docs/report.md); numbers as numbers, lists as arrays.
 // ---------------------------------------------------------------------------
 
-template <std::size_t D>
-val segment_report(const cr::segment_analysis<D>& a) {
-    val r = val::object();
-    r.set("index", double(a.index));
-    r.set("rank", double(a.rank));
-    r.set("bezier", points_array(std::vector<cr::vec<D>>(a.bezier.begin(), a.bezier.end())));
-    r.set("zeroSpeedU", float64_array(a.zero_speed_u));
-    r.set("cuspU", float64_array(a.cusp_u));
-    val loops = val::array();
-    for (const auto& uv : a.self_intersection) loops.call<void>("push", float64_array(uv.data(), 2));
-    r.set("selfIntersections", loops);
-    r.set("fold", a.fold);
-    r.set("hasCusp", a.has_cusp());
-    r.set("hasSelfIntersection", a.has_self_intersection());
-    r.set("bezierHeight", float64_array(a.bezier_height.data(), 2));
-    r.set("bezierBound", a.bezier_bound);
-    r.set("maxChordLineDistance", a.max_chord_line_distance);
-    r.set("maxChordLineDistanceU", a.max_chord_line_distance_u);
-    r.set("maxChordDistance", a.max_chord_distance);
-    r.set("maxChordDistanceU", a.max_chord_distance_u);
-    r.set("overshoot", float64_array(a.overshoot.data(), 2));
-    if (a.projection) {
-        val p = val::object();
-        p.set("bezier", float64_array(a.projection->bezier.data(), 2));
-        p.set("theorem2", a.projection->theorem2);
-        p.set("derivativeMin", a.projection->derivative_min);
-        p.set("derivativeMinU", a.projection->derivative_min_u);
-        p.set("range", float64_array(a.projection->range.data(), 2));
-        r.set("projection", p);
-    } else {
-        r.set("projection", val::null());
-    }
-    if (a.bounds) {
-        const auto& b = *a.bounds;
-        val p = val::object();
-        p.set("d1", b.d1);
-        p.set("d2", b.d2);
-        p.set("d3", b.d3);
-        p.set("theta1", b.theta1);
-        p.set("theta2", b.theta2);
-        p.set("h1", b.h1);
-        p.set("h2", b.h2);
-        p.set("eq6OneSided", b.eq6_one_sided);
-        p.set("eq6", b.eq6);
-        p.set("eq8Start", b.eq8_start);
-        p.set("eq8End", b.eq8_end);
-        r.set("bounds", p);
-    } else {
-        r.set("bounds", val::null());
-    }
-    return r;
-}
-
-template <std::size_t D>
-val intersections_report(const cr::intersection_result<D>& res) {
-    val r = val::object();
-    val items = val::array();
-    for (const auto& x : res.intersections) {
-        val item = val::object();
-        val seg = val::array();
-        seg.call<void>("push", double(x.segments[0]));
-        seg.call<void>("push", double(x.segments[1]));
-        item.set("segments", seg);
-        item.set("u", float64_array(x.u.data(), 2));
-        item.set("point", float64_array(x.point.data(), D));
-        item.set("distance", x.distance);
-        items.call<void>("push", item);
-    }
-    r.set("intersections", items);
-    val folds = val::array();
-    for (std::size_t f : res.folds) folds.call<void>("push", double(f));
-    r.set("folds", folds);
-    r.set("complete", res.complete);
-    r.set("any", res.any());
-    return r;
-}
-
-template <std::size_t D>
-val certificate_report(const cr::certificate<D>& c) {
-    val r = val::object();
-    r.set("certified", c.certified);
-    r.set("failedRule", std::string(cr::to_string(c.failed_rule)));
-    r.set("detail", c.detail);
-    r.set("vertex", c.vertex ? val(double(*c.vertex)) : val::null());
-    r.set("segment", c.segment ? val(double(*c.segment)) : val::null());
-    if (c.segments) {
-        val s = val::array();
-        s.call<void>("push", double((*c.segments)[0]));
-        s.call<void>("push", double((*c.segments)[1]));
-        r.set("segments", s);
-    } else {
-        r.set("segments", val::null());
-    }
-    r.set("angle", c.angle);
-    r.set("intersects", c.intersects ? val(*c.intersects) : val::null());
-    r.set("search", c.intersects ? intersections_report(c.search) : val::null());
-    return r;
-}
+struct js_builder {
+    using value = val;
+    value object() { return val::object(); }
+    value array() { return val::array(); }
+    void set(value& o, std::string_view key, value v) { o.set(std::string(key), v); }
+    void push(value& a, value v) { a.call<void>("push", v); }
+    value number(double x) { return val(x); }
+    value integer(std::size_t i) { return val(double(i)); }
+    value boolean(bool f) { return val(f); }
+    value string(std::string_view s) { return val(std::string(s)); }
+    value null() { return val::null(); }
+};
 
 // ---------------------------------------------------------------------------
 // The curve, any dimension 1-4.
@@ -649,21 +566,38 @@ public:
             });
         });
     }
-    val analyze() const {
+    // The analysis report (docs/report.md): { dimension, segments, cusp_t,
+    // has_cusp, has_self_intersection, intersections, folds, complete,
+    // certificate }. o: { intersections: false } skips the search,
+    // tolerance: its tolerance.
+    val analyze(val o) const {
         return guarded([&] {
-            return visit([](const auto& c) {
-                val list = val::array();
-                for (const auto& a : cr::analyze(c.curve)) list.call<void>("push", segment_report(a));
-                return list;
+            cr::report_options opt;
+            if (!is_nullish(o)) {
+                if (!is_nullish(o["intersections"])) opt.search = o["intersections"].as<bool>();
+                if (!is_nullish(o["tolerance"])) opt.tolerance = o["tolerance"].as<double>();
+            }
+            const std::size_t dim = std::size_t(dimension());
+            return visit([&](const auto& c) {
+                js_builder b;
+                return cr::report(b, cr::make_report(c.curve, opt, dim));
             });
         });
     }
+    val analyze0() const { return analyze(val::undefined()); }
+    // The report's search object: { intersections, folds, complete, any }.
     val intersections(double tolerance) const {
         return guarded([&] {
-            return visit([&](const auto& c) { return intersections_report(cr::find_intersections(c.curve, tolerance)); });
+            const std::size_t dim = std::size_t(dimension());
+            return visit([&](const auto& c) {
+                js_builder b;
+                return cr::report_search(b, cr::find_intersections(c.curve, tolerance), c.curve.grid(), dim);
+            });
         });
     }
     val intersections0() const { return intersections(0); }
+    // The report's certificate object. o: { safeAngle, searchOnFailure,
+    // tolerance } (the options of certify_intersection_free).
     val certify(val o) const {
         return guarded([&] {
             cr::certify_options opt;
@@ -672,7 +606,11 @@ public:
                 if (!is_nullish(o["searchOnFailure"])) opt.search_on_failure = o["searchOnFailure"].as<bool>();
                 if (!is_nullish(o["tolerance"])) opt.tolerance = o["tolerance"].as<double>();
             }
-            return visit([&](const auto& c) { return certificate_report(cr::certify_intersection_free(c.curve, opt)); });
+            const std::size_t dim = std::size_t(dimension());
+            return visit([&](const auto& c) {
+                js_builder b;
+                return cr::report_certificate(b, cr::certify_intersection_free(c.curve, opt), c.curve.grid(), dim);
+            });
         });
     }
     val certify0() const { return certify(val::undefined()); }
@@ -718,7 +656,9 @@ template <std::size_t D>
 val analyze_segment_d(const std::vector<double>& flat, std::size_t dim, double alpha, double tension) {
     const auto p = to_points<D>(flat, "points", dim);
     if (p.size() != 4) throw cr::invalid_input("a segment needs 4 points, got " + std::to_string(p.size()));
-    return segment_report(cr::analyze_segment(std::array<cr::vec<D>, 4>{p[0], p[1], p[2], p[3]}, alpha, tension));
+    const auto a = cr::analyze_segment(std::array<cr::vec<D>, 4>{p[0], p[1], p[2], p[3]}, alpha, tension);
+    js_builder b;
+    return cr::report_segment(b, a, a.segment.t0, a.segment.t0 + a.segment.h);
 }
 
 val analyzeSegment(val points, int dimension, double alpha, double tension) {
@@ -778,6 +718,7 @@ EMSCRIPTEN_BINDINGS(crspline) {
         .function("cusps", &Spline::cusps)
         .function("segmentLengths", &Spline::segmentLengths)
         .function("analyze", &Spline::analyze)
+        .function("analyze", &Spline::analyze0)
         .function("intersections", &Spline::intersections)
         .function("intersections", &Spline::intersections0)
         .function("certify", &Spline::certify)

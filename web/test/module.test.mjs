@@ -122,16 +122,16 @@ test('oracle: one segment at 50 digits: positions, Bézier points, classificatio
     });
     // The analysis report of the segment: exact classification.
     const a = M.analyzeSegment(p, c.dim, c.alpha, c.tension);
-    assert.equal(a.hasCusp, c.has_cusp, `${c.name}: has_cusp`);
-    assert.equal(a.hasSelfIntersection, c.has_self_intersection, `${c.name}: has_self_intersection`);
+    assert.equal(a.has_cusp, c.has_cusp, `${c.name}: has_cusp`);
+    assert.equal(a.has_self_intersection, c.has_self_intersection, `${c.name}: has_self_intersection`);
     assert.equal(a.fold, c.fold_1d, `${c.name}: fold`);
     assert.equal(a.rank, c.rank, `${c.name}: rank`);
-    assert.equal(a.cuspU.length, c.cusp_u.length, `${c.name}: cusp count`);
-    c.cusp_u.forEach((u, k) => assert.ok(Math.abs(a.cuspU[k] - u) <= 1e-12, `${c.name}: cusp ${k}`));
-    assert.equal(a.zeroSpeedU.length, c.zero_speed_u.length, `${c.name}: zero-speed count`);
-    assert.equal(a.selfIntersections.length, c.self_intersection_uv.length, `${c.name}: loops`);
+    assert.equal(a.cusp_u.length, c.cusp_u.length, `${c.name}: cusp count`);
+    c.cusp_u.forEach((u, k) => assert.ok(Math.abs(a.cusp_u[k] - u) <= 1e-12, `${c.name}: cusp ${k}`));
+    assert.equal(a.zero_speed_u.length, c.zero_speed_u.length, `${c.name}: zero-speed count`);
+    assert.equal(a.self_intersection_u.length, c.self_intersection_uv.length, `${c.name}: loops`);
     const segTol = 1e-13 * Math.max(local, 1e-300);
-    assert.ok(Math.abs(a.maxChordLineDistance - c.max_dist_to_chord_line) <= segTol, `${c.name}: chord line distance`);
+    assert.ok(Math.abs(a.max_chord_line_distance - c.max_dist_to_chord_line) <= segTol, `${c.name}: chord line distance`);
     nClassified++;
     nCases++;
   }
@@ -219,15 +219,16 @@ test('analysis: the uniform cusp, centripetal certificate, a crossing found exac
     assert.ok(maxAbs(c.subarray(3), s.evaluate(1.5)) <= 1e-12, `cusp at ${c[3]}, ${c[4]}`);
     assert.ok(Math.abs(c[3] - 0.5) <= 1e-12, 'x = 1/2 by symmetry');
     const report = s.analyze();
-    assert.equal(report.length, 3);
-    assert.equal(report[1].hasCusp, true);
+    assert.equal(report.segments.length, 3);
+    assert.equal(report.segments[1].has_cusp, true);
+    assert.ok(Math.abs(report.cusp_t[0] - 1.5) <= 1e-12, 'the report\'s cusp at t = 1.5');
   });
   // The same points centripetal: no cusp (Theorem), and certified.
   withSpline([[-5, 1], [0, 0], [1, 0], [6, 1]], 2, { alpha: 0.5 }, (s) => {
     assert.equal(s.cusps().length, 0);
     const cert = s.certify();
     assert.equal(cert.certified, true);
-    assert.equal(cert.failedRule, 'none');
+    assert.equal(cert.failed_rule, null);
   });
   // A figure eight, symmetric under a half turn: it crosses itself once,
   // at the origin.
