@@ -93,6 +93,12 @@ def _numeric_array(x, name):
 
 def _as_points(points):
     """(N, dim) C-contiguous float32 or float64 array of the points."""
+    if isinstance(points, (list, tuple)) and points and all(isinstance(p, (list, tuple)) for p in points):
+        # Nested lists: a point with another number of coordinates is named
+        # (NumPy would say only "inhomogeneous shape").
+        for i, p in enumerate(points):
+            if len(p) != len(points[0]):
+                raise ValueError(f"point {i} has {len(p)} coordinates, expected {len(points[0])} like point 0")
     a = _numeric_array(points, "points")
     dtype = _np.float32 if a.dtype in (_np.float32, _np.float16) else _np.float64
     if a.ndim == 1:
@@ -100,7 +106,7 @@ def _as_points(points):
     elif a.ndim != 2:
         raise ValueError(f"points must be an N x dim array (one row per point), got shape {a.shape}")
     if a.shape[1] == 0:
-        raise ValueError("points must have at least 1 coordinate each, got 0")
+        raise ValueError(f"points must have 1 to {max_dimension} coordinates each, got 0")
     return _np.ascontiguousarray(a, dtype=dtype)
 
 

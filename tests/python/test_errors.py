@@ -27,7 +27,7 @@ P = [[0, 0], [1, 2], [3, 2], [4, 0]]
      "start tangent coordinate 0 is not finite (nan)"),
     ((np.zeros((3, 17)),), {}, crspline.InvalidInput, "points must have 1 to 16 coordinates each, got 17"),
     ((np.zeros((2, 2, 2)),), {}, ValueError, "points must be an N x dim array"),
-    ((np.zeros((3, 0)),), {}, ValueError, "at least 1 coordinate"),
+    ((np.zeros((3, 0)),), {}, ValueError, "1 to 16 coordinates each, got 0"),
     ((P,), {"endconditions": "periodic"}, ValueError, "endconditions must be 'natural', 'closed', 'reflect'"),
     ((P,), {"endconditions": ("natural", "closed")}, ValueError, "end end condition must be"),
     ((P,), {"endconditions": ([1, 2, 3], "natural")}, ValueError, "start tangent must have 2 coordinates"),
