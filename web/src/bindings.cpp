@@ -126,8 +126,14 @@ std::vector<double> numbers(const val& a, const char* what) {
     if (n > 0 && !a[0].isNumber() && !is_nullish(a[0]["length"])) {
         // Nested [[x, y], ...]: flatten.
         std::vector<double> out;
+        std::size_t first = 0;
         for (std::size_t i = 0; i < n; ++i) {
             const std::vector<double> p = emscripten::convertJSArrayToNumberVector<double>(a[i]);
+            if (i == 0) first = p.size();
+            if (p.size() != first)
+                throw cr::spec_error(what, i, std::nullopt, std::to_string(p.size()),
+                                     "point " + std::to_string(i) + " has " + std::to_string(p.size()) +
+                                         " coordinates, expected " + std::to_string(first) + " like point 0");
             out.insert(out.end(), p.begin(), p.end());
         }
         return out;
@@ -188,6 +194,17 @@ cr::curve_spec spec_from(std::vector<double> flat, int dimension, const val& o) 
     s.dimension = dimension > 0 ? std::size_t(dimension) : 0;
     s.points = std::move(flat);
     if (is_nullish(o)) return s;
+    // An option this reader does not know is an error naming it, never
+    // silently dropped (tangents and tangentsIn are read with the points).
+    const val keys = val::global("Object").call<val>("keys", o);
+    for (std::size_t i = 0, n = keys["length"].as<std::size_t>(); i < n; ++i) {
+        const std::string k = keys[i].as<std::string>();
+        if (k != "alpha" && k != "grid" && k != "closed" && k != "strict" && k != "tension" && k != "start" &&
+            k != "end" && k != "kb" && k != "tangents" && k != "tangentsIn")
+            cr::detail::spec_fail(k, std::nullopt, std::nullopt, "",
+                                  "unknown option '" + k + "' (known: alpha, grid, closed, strict, tension, start, "
+                                  "end, kb, tangents, tangentsIn)");
+    }
     auto number = [&](const char* key) -> std::optional<double> {
         const val v = o[key];
         if (is_nullish(v)) return std::nullopt;
