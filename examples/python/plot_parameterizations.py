@@ -51,8 +51,8 @@ def main(out):
             a_.plot(*x.T, color=color, lw=2, label=label, zorder=2)
             # Mark where the curve meets itself (loops inside segments and
             # crossings between them).
-            for p in a["intersections"]["point"]:
-                a_.plot(*p, marker="x", color=color, ms=9, mew=2, zorder=3)
+            for meeting in a["intersections"]:  # docs/report.md
+                a_.plot(*meeting["point"], marker="x", color=color, ms=9, mew=2, zorder=3)
     zoom.set_xlim(3.35, 3.85)
     zoom.set_ylim(2.9, 3.3)
     zoom.set_aspect("equal")
