@@ -199,6 +199,7 @@ cr::curve_spec spec_from(std::vector<double> flat, int dimension, const val& o) 
     const val keys = val::global("Object").call<val>("keys", o);
     for (std::size_t i = 0, n = keys["length"].as<std::size_t>(); i < n; ++i) {
         const std::string k = keys[i].as<std::string>();
+        if (o[k].isUndefined()) continue;  // as if absent (JavaScript's own reading)
         if (k != "alpha" && k != "grid" && k != "closed" && k != "strict" && k != "tension" && k != "start" &&
             k != "end" && k != "kb" && k != "tangents" && k != "tangentsIn")
             cr::detail::spec_fail(k, std::nullopt, std::nullopt, "",

@@ -41,19 +41,8 @@ function options(curve) {
 test('Spline.analyze() is the CLI\'s report, key for key and value for value', () => {
   assert.equal(cases.length, 9);
   let compared = 0;
-  const refused = [];
   for (const c of cases) {
-    const dim = c.report.dimension;
-    let s;
-    try {
-      s = new M.Spline(c.curve.points, dim, options(c.curve));
-    } catch (e) {
-      // The module takes dimensions 1 to 4 until the WASM part of issue 14
-      // lands; a wider curve must be refused by name, never cut.
-      assert.match(e.message, /dimension/, c.name);
-      refused.push(c.name);
-      continue;
-    }
+    const s = new M.Spline(c.curve.points, c.report.dimension, options(c.curve));
     try {
       // 1e-12 relative: the fixture was written by the CLI, built by g++
       // against glibc; emscripten's clang and musl libm may round pow, sin
@@ -72,9 +61,7 @@ test('Spline.analyze() is the CLI\'s report, key for key and value for value', (
       s.delete();
     }
   }
-  assert.ok(refused.every((n) => n === 'seven_d'), `refused: ${refused}`);
-  assert.equal(compared + refused.length, cases.length);
-  assert.ok(compared >= 8, `compared ${compared}`);
+  assert.equal(compared, cases.length);
 });
 
 test('analyzeSegment() writes the report\'s segment object', () => {
