@@ -421,3 +421,227 @@ def test_unit_speed_adapter_has_unit_speed_on_the_docs_curve():
     s5 = compat.UnitSpeedAdapter(lifted)
     np.testing.assert_allclose(s5.grid, s2.grid, rtol=1e-11)
     np.testing.assert_allclose(s5.evaluate(s)[:, :2], s2.evaluate(s), atol=1e-9)
+
+
+# ------------------------------------------- monotone cubics and NewGridAdapter
+# The expected values come from the algorithm as the `splines` 0.3
+# documentation states it (doc/euclidean/piecewise-monotone.ipynb): the
+# three-point (Catmull-Rom) slope at interior values, limited by Dougherty et
+# al. (1989) eq. 4.2, and the end condition printed there as
+# `monotone_end_condition`. It is re-derived here in exact rational
+# arithmetic (Fraction), independent of crspline's floating-point code.
+from fractions import Fraction as F  # noqa: E402
+
+
+def doc_fix_slope(slope, left, right):
+    if left * right <= 0:
+        return F(0)
+    if right > 0:
+        return min(max(F(0), slope), 3 * min(abs(left), abs(right)))
+    return max(min(F(0), slope), -3 * min(abs(left), abs(right)))
+
+
+def doc_end(inner, secant):
+    if secant < 0:
+        return -doc_end(-inner, -secant)
+    assert 0 <= inner <= 3 * secant
+    return 3 * secant - 2 * inner if inner <= secant else (3 * secant - inner) / 2
+
+
+def doc_slopes(x, t):
+    """Exact slopes at every value of an open piecewise monotone cubic."""
+    x, t = [F(v) for v in x], [F(v) for v in t]
+    secant = [(x[i + 1] - x[i]) / (t[i + 1] - t[i]) for i in range(len(x) - 1)]
+    if len(x) == 2:
+        return [secant[0]] * 2
+    inner = []
+    for i in range(1, len(x) - 1):
+        h0, h1 = t[i] - t[i - 1], t[i + 1] - t[i]
+        three_point = (h1**2 * (x[i] - x[i - 1]) + h0**2 * (x[i + 1] - x[i])) / (h0 * h1 * (h0 + h1))
+        inner.append(doc_fix_slope(three_point, secant[i - 1], secant[i]))
+    return [doc_end(inner[0], secant[0])] + inner + [doc_end(inner[-1], secant[-1])]
+
+
+def test_monotone_cubic_by_hand():
+    # values 0, 1, 5 on 0, 1, 2: secants 1 and 4, three-point slope 5/2
+    # (within 3 * 1), end slopes (3 - 5/2) / 2 = 1/4 and 12 - 5 = 7. At
+    # t = 1/2 the Hermite form gives 1/8 * 1/4 + 1/2 - 1/8 * 5/2 = 7/32.
+    s = compat.MonotoneCubic([0, 1, 5])
+    assert doc_slopes([0, 1, 5], [0, 1, 2]) == [F(1, 4), F(5, 2), F(7)]
+    assert s.grid == [0, 1, 2]
+    np.testing.assert_allclose(s.evaluate([0, 1, 2], 1), [0.25, 2.5, 7], rtol=0, atol=1e-15)
+    assert s.evaluate(0.5) == pytest.approx(7 / 32, abs=1e-16)
+    assert s.get_time(7 / 32) == pytest.approx(0.5, abs=1e-15)
+
+
+def _monotone_data(rng, n, kind):
+    t = np.cumsum(rng.uniform(0.2, 3, n))
+    if kind == "increasing":
+        x = np.cumsum(rng.uniform(0, 2, n) * (rng.random(n) > 0.2))  # plateaus too
+    elif kind == "decreasing":
+        x = -np.cumsum(rng.uniform(0, 2, n) * (rng.random(n) > 0.2))
+    else:
+        x = rng.uniform(-3, 3, n)
+    return x, t
+
+
+@pytest.mark.parametrize("kind", ["increasing", "decreasing", "any"])
+def test_piecewise_monotone_against_the_documented_algorithm(kind):
+    seed = int(np.random.SeedSequence().entropy % 2**32)
+    rng = np.random.default_rng(seed)
+    for trial in range(40):
+        n = int(rng.integers(2, 9))
+        x, t = _monotone_data(rng, n, kind)
+        cls = compat.PiecewiseMonotoneCubic if kind == "any" else compat.MonotoneCubic
+        s = cls(list(x), list(t))
+        slopes = np.array([float(v) for v in doc_slopes(x, t)])
+        tt = sample_t(t, 9)
+        # Slopes are ratios of differences of inputs of size ~10: 1e-12 of scale.
+        for order in (0, 1):
+            np.testing.assert_allclose(s.evaluate(tt, order), hermite_eval(x[:, None], slopes[:-1, None],
+                                                                           slopes[1:, None], t, tt, order)[:, 0],
+                                       rtol=0, atol=1e-12 * 20, err_msg=f"seed {seed}, trial {trial}")
+        # No segment leaves the range of its two values (rounding aside).
+        dense = np.linspace(t[0], t[-1], 2001)
+        v = s.evaluate(dense)
+        i = np.clip(np.searchsorted(t, dense, side="right") - 1, 0, n - 2)
+        lo, hi = np.minimum(x[i], x[i + 1]), np.maximum(x[i], x[i + 1])
+        assert np.all(v >= lo - 1e-12) and np.all(v <= hi + 1e-12), f"seed {seed}, trial {trial}"
+        if kind != "any":
+            # Monotone data: get_time inverts the curve (away from plateaus).
+            sign = 1 if kind == "increasing" else -1
+            assert np.all(sign * np.diff(v) >= -1e-12), f"seed {seed}, trial {trial}"
+            for u in dense[::97]:
+                value = float(s.evaluate(u))
+                back = s.get_time(value)
+                if back is None:
+                    assert np.sum(x == value) > 1  # a plateau: not unique
+                    continue
+                assert float(s.evaluate(back)) == pytest.approx(value, abs=1e-12), f"seed {seed}"
+
+
+def test_piecewise_monotone_closed_and_given_slopes():
+    # The docs' example: closed, and slopes given with None for the computed ones.
+    values, times = [0, 3, 3, 7], [0, 3, 8, 10, 11]
+    s = compat.PiecewiseMonotoneCubic(values, times, closed=True)
+    x = values + [values[0]]
+    # Closed: interior slopes at every value, the seam using x[-2] and x[1].
+    ext_x = [x[-2] - 0] + x + [x[1]]  # the value before the seam is x[N-1] itself
+    ext_t = [times[0] - (times[-1] - times[-2])] + times + [times[-1] + times[1] - times[0]]
+    slopes = []
+    for i in range(1, len(ext_x) - 1):
+        h0, h1 = F(ext_t[i] - ext_t[i - 1]), F(ext_t[i + 1] - ext_t[i])
+        left, right = (ext_x[i] - ext_x[i - 1]) / h0, (ext_x[i + 1] - ext_x[i]) / h1
+        tp = (h1**2 * (ext_x[i] - ext_x[i - 1]) + h0**2 * (ext_x[i + 1] - ext_x[i])) / (h0 * h1 * (h0 + h1))
+        slopes.append(float(doc_fix_slope(tp, left, right)))
+    tt = sample_t(times, 5)
+    np.testing.assert_allclose(s.evaluate(tt), hermite_eval(np.array(x, float)[:, None], np.array(slopes[:-1])[:, None],
+                                                            np.array(slopes[1:])[:, None], times, tt)[:, 0],
+                               rtol=0, atol=1e-13)
+    g = compat.PiecewiseMonotoneCubic([0, 1, 3, 2, 1], slopes=[None, 0, None, -3, -1.5])
+    np.testing.assert_allclose(g.evaluate([1, 3, 4], 1), [0, -3, -1.5], rtol=0, atol=0)
+
+
+def test_monotone_cubic_errors_of_the_docs():
+    # The assertions of the splines docs' piecewise-monotone notebook.
+    s = compat.MonotoneCubic([0, 2, 2, 6, 6], grid=[0, 2, 3, 6, 8])
+    assert s.get_time(2) is None
+    times = s.get_time([1, 3, 5])
+    np.testing.assert_allclose(s.evaluate(times.astype(float)), [1, 3, 5], rtol=0, atol=1e-14)
+    with pytest.raises(TypeError, match="closed"):
+        compat.MonotoneCubic([0, 2, 2, 6, 6], closed=True)
+    with pytest.raises(ValueError, match="too steep"):
+        compat.PiecewiseMonotoneCubic([0, 1, 3, 2, 1], slopes=[None, 4, None, None, None])
+    with pytest.raises(ValueError, match="cyclic"):
+        compat.MonotoneCubic([0, 1, 5], slopes=[1, None, None], cyclic=True)
+    with pytest.raises(ValueError, match="Only monotone values are allowed"):
+        compat.MonotoneCubic([0, 2, 1])
+    with pytest.raises(ValueError, match="value outside allowed range: 7"):
+        s.get_time(7)
+
+
+def test_monotone_cubic_cyclic_has_one_slope_at_both_ends():
+    # cyclic: crspline's definition (the docs show the flag, not its numbers):
+    # the limited three-point slope at the first value with the data
+    # continued periodically. [0, 1, 5] on 0, 1, 2: the value before is
+    # 1 - 5 = -4 at t = -1, secants 4 and 1, three-point slope 5/2.
+    s = compat.MonotoneCubic([0, 1, 5], cyclic=True)
+    np.testing.assert_allclose(s.evaluate([0, 1, 2], 1), [2.5, 2.5, 2.5], rtol=0, atol=1e-15)
+
+
+def test_new_grid_adapter_scalar_and_partial_grids_in_closed_form():
+    # A map through two points is a straight line (both end slopes are the
+    # secant), and collinear (new, old) pairs keep it one: the new knots are
+    # then exact multiples of the old ones.
+    cr = compat.CatmullRom([(0, 0), (1, 0), (3, 1), (4, 4)])  # grid 0, 1, 2, 3
+    a = compat.NewGridAdapter(cr, 6)
+    assert a.grid == pytest.approx([0, 2, 4, 6], abs=1e-15)
+    assert a.grid[0] == 0 and a.grid[-1] == 6
+    u = np.linspace(0, 6, 25)
+    np.testing.assert_allclose(a.evaluate(u), cr.evaluate(u / 2), rtol=0, atol=1e-14)
+    cr2 = compat.CatmullRom([(0, 0), (1, 0), (3, 1), (4, 4)], grid=[0, 1, 3, 4])
+    b = compat.NewGridAdapter(cr2, [0, None, 6, 8])
+    assert b.grid == pytest.approx([0, 2, 6, 8], abs=1e-14)
+    np.testing.assert_allclose(b.evaluate([0, 2, 6, 8]), cr2.evaluate([0, 1, 3, 4]), rtol=0, atol=1e-14)
+    assert compat.NewGridAdapter(cr).grid[-1] == 1  # default: 0 .. 1
+
+
+def test_new_grid_adapter_nonlinear_map():
+    # Old grid 0, 1, 2, 3; new values 0, None, 5, 6: the map through (0, 0),
+    # (5, 2), (6, 3) has slopes 3/20, 9/10, 6/5 (doc_slopes); the None knot
+    # (old t = 1) is where the first segment's cubic reaches 1: with h = 5,
+    # m0 = 3/4, m1 = 9/2 the cubic is 5/4 u^3 + 3/4 u, so 5 u^3 + 3 u - 4 = 0.
+    assert doc_slopes([0, 2, 3], [0, 5, 6]) == [F(3, 20), F(9, 10), F(6, 5)]
+    roots = np.roots([5, 0, 3, -4])
+    u1 = float(roots[np.abs(roots.imag) < 1e-12].real[0])
+    cr = compat.CatmullRom([(0, 0), (1, 2), (3, 2.5), (4, 0)])
+    a = compat.NewGridAdapter(cr, [0, None, 5, 6])
+    assert a.grid[0] == 0 and a.grid[2:] == [5, 6]
+    assert a.grid[1] == pytest.approx(5 * u1, abs=1e-14)
+    u = np.linspace(0, 6, 31)
+    slopes = np.array([0.15, 0.9, 1.2])
+    t = hermite_eval(np.array([[0.0], [2], [3]]), slopes[:-1, None], slopes[1:, None], [0, 5, 6], u)[:, 0]
+    np.testing.assert_allclose(a.evaluate(u), cr.evaluate(t), rtol=0, atol=1e-13)
+    np.testing.assert_allclose(a.evaluate(a.grid), cr.evaluate(cr.grid), rtol=0, atol=1e-13)
+    assert a.evaluate(2.5).shape == (2,)
+
+
+def test_new_grid_adapter_errors():
+    cr = compat.CatmullRom([(0, 0), (1, 0), (3, 1), (4, 4)])
+    with pytest.raises(ValueError, match="^new_grid must have same length as curve.grid$"):
+        compat.NewGridAdapter(cr, [0, 1, 2])
+    with pytest.raises(TypeError, match="^first/last element of new_grid cannot be None$"):
+        compat.NewGridAdapter(cr, [None, 1, 2, 3])
+    with pytest.raises(TypeError, match="^first/last element of new_grid cannot be None$"):
+        compat.NewGridAdapter(cr, [0, 1, 2, None])
+    with pytest.raises(ValueError, match=r"new_grid\[2\] = 1 is not greater than new_grid\[1\] = 2"):
+        compat.NewGridAdapter(cr, [0, 2, 1, 3])
+    a = compat.NewGridAdapter(cr, [0, None, 2, 3])
+    with pytest.raises(ValueError, match="^u too big: 3.5$"):
+        a.evaluate(3.5)
+    with pytest.raises(ValueError, match="^u too small: -1.0$"):
+        a.evaluate([0, -1.0])
+    with pytest.raises(NotImplementedError):
+        a.evaluate(1, 1)
+
+
+def test_new_grid_adapter_on_unit_speed_and_crspline_curves():
+    # The docs' re-parameterization example: a closed centripetal curve, its
+    # unit-speed form, then new values at some knots. Every knot keeps its
+    # point, and the new parameter never runs backwards.
+    points4 = [(0, 0), (0, 0.5), (1.5, 1.5), (1.6, 1.5), (3, 0.2), (3, 0)]
+    s1 = compat.CatmullRom(points4, alpha=0.5, endconditions="closed")
+    s2 = compat.UnitSpeedAdapter(s1)
+    new_grid = [-1, -0.5, None, None, 2, None, 3]
+    for cyclic in (False, True):
+        s3 = compat.NewGridAdapter(s2, new_grid, cyclic=cyclic)
+        assert [g for g, n in zip(s3.grid, new_grid) if n is not None] == [-1, -0.5, 2, 3]
+        assert all(b > a for a, b in zip(s3.grid, s3.grid[1:]))
+        np.testing.assert_allclose(s3.evaluate(s3.grid), s1.evaluate(s1.grid), rtol=0, atol=1e-9)
+        t = s3._new2old.evaluate(np.linspace(-1, 3, 400))
+        assert np.all(np.diff(t) >= 0)
+    # A crspline curve (ndarray grid, vectorized evaluate) works the same.
+    import crspline
+    c = crspline.CatmullRom(points4, endconditions="closed")
+    a = compat.NewGridAdapter(c, 10)
+    np.testing.assert_allclose(a.evaluate(a.grid), c.evaluate(c.grid), rtol=0, atol=1e-12)
