@@ -153,4 +153,30 @@ curve_spec to_spec(std::span<const vec<D, T>> points, const options<D, T>& opt) 
     return s;
 }
 
+/// One end condition by its name, as every front end spells it: "natural"
+/// or "reflect" (a tangent is given by its numbers, not by name). `field` is
+/// "start" or "end"; any other name is a spec_error naming that field.
+inline end_spec end_from_name(const std::string& field, const std::string& name) {
+    if (name == "natural") return {};
+    if (name == "reflect") return {end_spec::kind::reflect, {}};
+    detail::spec_fail(field, std::nullopt, std::nullopt, name,
+                      field + " condition must be 'natural', 'reflect' or a tangent, got '" + name + "'");
+}
+
+/// Both ends by one name, as the curve file's "end" and Python's
+/// `endconditions` spell them: "natural", "reflect" or "closed" (periodic).
+inline void set_ends(curve_spec& s, const std::string& name) {
+    if (name == "closed") {
+        s.closed = true;
+        s.start = s.end = {};
+        return;
+    }
+    if (name != "natural" && name != "reflect")
+        detail::spec_fail("end", std::nullopt, std::nullopt, name,
+                          "end conditions must be 'natural', 'reflect', 'closed' or one for each end, got '" + name +
+                              "'");
+    s.closed = false;
+    s.start = s.end = end_from_name("end", name);
+}
+
 }  // namespace crspline

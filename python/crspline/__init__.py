@@ -28,19 +28,25 @@ Conventions (those of the C++ library and of the ``splines`` package):
   C++ with the GIL released.
 """
 from collections.abc import Mapping as _Mapping
+import json as _json
 import numbers as _numbers
 import operator as _operator
+import os as _os
 
 import numpy as _np
 
 from . import _crspline
-from ._crspline import InvalidInput, OutOfDomain, __version__
+from ._crspline import InvalidInput, OutOfDomain, SpecError, __version__
 
 __all__ = [
     "CatmullRom",
     "KochanekBartels",
     "InvalidInput",
+    "SpecError",
     "OutOfDomain",
+    "load",
+    "save",
+    "from_spec",
     "uniform",
     "centripetal",
     "chordal",
@@ -59,7 +65,6 @@ chordal = 1.0
 default_accuracy = float(_crspline.default_accuracy)
 #: Largest dimension compiled into the module.
 max_dimension = int(_crspline.max_dimension)
-_MAX_EXACT_DIMENSION = 4  # 1..4 are curves of exactly that dimension; 5..max_dimension one wide, padded one
 
 
 class _DefaultAlpha(float):
@@ -117,29 +122,24 @@ def _as_vector(x, name):
     return [float(v) for v in a]
 
 
-def _end(spec, dim, which):
-    """One end condition: ('natural' | 'reflect' | 'tangent', tangent or None)."""
+def _end(spec, which):
+    """One end as the core takes it: a name (the core checks it) or a tangent
+    as a flat list of floats (the core checks its length and values)."""
     if isinstance(spec, str):
-        if spec in ("natural", "reflect"):
-            return spec, None
-        raise ValueError(f"{which} end condition must be 'natural', 'reflect' or a tangent vector, got {spec!r}")
+        return spec
     v = _numeric_array(spec, f"{which} tangent")
-    if v.ndim == 0:
-        v = v.reshape(1)
-    if v.shape != (dim,):
-        raise ValueError(f"{which} tangent must have {dim} coordinates, got shape {v.shape}")
-    return "tangent", [float(x) for x in v]
+    if v.ndim > 1:
+        raise ValueError(f"{which} tangent must be one vector dx/dt, got shape {v.shape}")
+    return [float(x) for x in v.reshape(-1)]
 
 
-def _parse_endconditions(endconditions, dim):
-    """(closed, start, end) from the splines package's forms plus 'reflect'."""
+def _parse_endconditions(endconditions):
+    """The ends in the core's form: one name for both ('natural', 'reflect',
+    'closed') or a pair (start, end), each a name or a tangent. Only the
+    Python forms are checked here (a string, a pair, a mapping); the names
+    and tangents are checked by the core's specification (spec.hpp)."""
     if isinstance(endconditions, str):
-        if endconditions == "closed":
-            return True, ("natural", None), ("natural", None)
-        if endconditions in ("natural", "reflect"):
-            return False, (endconditions, None), (endconditions, None)
-        raise ValueError("endconditions must be 'natural', 'closed', 'reflect' or a pair (start, end), "
-                         f"got {endconditions!r}")
+        return endconditions
     if isinstance(endconditions, _Mapping):
         if set(endconditions) != {"start", "end"}:
             raise ValueError(f"endconditions as a mapping needs exactly the keys 'start' and 'end', "
@@ -151,7 +151,7 @@ def _parse_endconditions(endconditions, dim):
         except (TypeError, ValueError):
             raise TypeError("endconditions must be a string or a pair (start, end), "
                             f"got {type(endconditions).__name__}") from None
-    return False, _end(start, dim, "start"), _end(end, dim, "end")
+    return _end(start, "start"), _end(end, "end")
 
 
 def _scalar_or_array(a):
@@ -224,23 +224,13 @@ class CatmullRom:
         self._build(pts, alpha, grid, endconditions, _real(tension, "tension"), ([], [], []), bool(strict))
 
     def _build(self, pts, alpha, grid, endconditions, tension, kb, strict):
-        dim = pts.shape[1]
-        closed, start, end = _parse_endconditions(endconditions, dim)
+        # The core validates the whole specification once (spec.hpp) and
+        # builds 5 to 16 coordinates as its wide, zero-padded curve; results
+        # are cut back to the points' own coordinates (_cut).
+        ends = _parse_endconditions(endconditions)
         grid = None if grid is None else _as_vector(grid, "grid")
-        if _MAX_EXACT_DIMENSION < dim <= max_dimension:
-            # 5 to 16 coordinates: one wide curve of 16, zero-padded; each
-            # coordinate is computed on its own and the zeros add exact zeros
-            # to norms, so the first dim coordinates of every result are the
-            # ones a curve of dimension dim has (results are cut back to them).
-            wide = _np.zeros((len(pts), max_dimension), dtype=pts.dtype)
-            wide[:, :dim] = pts
-            pts = wide
-            pad = [0.0] * (max_dimension - dim)
-            start = (start[0], None if start[1] is None else start[1] + pad)
-            end = (end[0], None if end[1] is None else end[1] + pad)
-        self._dim = dim
-        self._c = _crspline._make_curve(pts, alpha, grid, start[0], start[1], end[0], end[1], closed, tension,
-                                        kb[0], kb[1], kb[2], strict)
+        self._dim = pts.shape[1]
+        self._c = _crspline._make_curve(pts, alpha, grid, ends, tension, kb[0], kb[1], kb[2], strict)
         self._grid = _readonly(self._c.grid)
         self._points = _readonly(self._cut(self._c.points))
         self._tables = {}
@@ -295,6 +285,43 @@ class CatmullRom:
     def __repr__(self):
         return (f"{type(self).__name__}(dim={self.dim}, points={len(self._points)}, closed={self.closed}, "
                 f"dtype={_np.dtype(self.dtype).name}, domain=({self.domain[0]:g}, {self.domain[1]:g}))")
+
+    def spec(self):
+        """How the curve was built, as the curve file holds it (docs/spec.md):
+        a dict with ``points`` (lists), ``alpha`` or ``grid``, ``end``
+        (``'natural'``, ``'reflect'``, ``'closed'`` or ``{'start': ...,
+        'end': ...}`` with names or tangents), ``tension``, and ``kb`` and
+        ``strict`` when set. ``crspline.from_spec(c.spec())`` builds the same
+        curve (in float64); ``crspline.save`` writes it as JSON."""
+        s = self._c.spec()
+        dim = self._dim
+        pts = _np.asarray(s["points"], dtype=_np.float64).reshape(-1, s["dimension"])[:, :dim]
+        out = {"points": pts.tolist()}
+        if s["grid"] is not None:
+            out["grid"] = list(s["grid"])
+        else:
+            out["alpha"] = 0.5 if s["alpha"] is None else s["alpha"]
+
+        def end(e):
+            return e if isinstance(e, str) else list(e[:dim])
+
+        if s["closed"]:
+            out["end"] = "closed"
+        elif isinstance(s["start"], str) and s["start"] == s["end"]:
+            out["end"] = s["start"]
+        else:
+            out["end"] = {"start": end(s["start"]), "end": end(s["end"])}
+        out["tension"] = s["tension"]
+        kb = {k: s["kb_" + k] for k in ("tension", "continuity", "bias") if s["kb_" + k]}
+        if kb:
+            n = len(pts)
+            for k, v in kb.items():
+                # The end values of an open curve are not used; NaN there is null.
+                kb[k] = [None if (x != x and not s["closed"] and i in (0, n - 1)) else x for i, x in enumerate(v)]
+            out["kb"] = kb
+        if s["strict"]:
+            out["strict"] = True
+        return out
 
     # ------------------------------------------------------------ evaluation
     def _t(self, t, name="t"):
@@ -592,3 +619,120 @@ class KochanekBartels(CatmullRom):
     def tcb(self):
         """The (tension, continuity, bias) triples, one per interior vertex (read-only)."""
         return self._tcb
+
+
+# ------------------------------------------------------------ the curve file
+#: The fields of the curve file that crspline.load reads (docs/spec.md).
+_FILE_FIELDS = ("points", "alpha", "grid", "end", "tension", "kb", "strict")
+
+
+def _file_end(e, which):
+    if isinstance(e, str):
+        return e
+    if isinstance(e, list):
+        return e
+    raise TypeError(f"'{which}' must be \"natural\", \"reflect\" or a tangent [dx/dt, ...], got {type(e).__name__}")
+
+
+def _file_kb(values, which):
+    if not isinstance(values, (list, tuple)):
+        raise TypeError(f"'kb.{which}' must be a list of numbers, one per point, got {type(values).__name__}")
+    out = []
+    for i, v in enumerate(values):
+        if v is None:
+            out.append(float("nan"))  # allowed only where the core ignores it (open ends)
+        elif isinstance(v, bool) or not isinstance(v, _numbers.Real):
+            raise TypeError(f"'kb.{which}[{i}]' must be a number or null, got {type(v).__name__}")
+        else:
+            out.append(float(v))
+    return out
+
+
+def from_spec(spec):
+    """The curve a curve-file dict describes (the form ``CatmullRom.spec()``
+    returns and ``crspline.load`` reads; docs/spec.md): a ``CatmullRom``, or
+    a ``KochanekBartels`` when it has ``kb``. Always float64.
+
+    A field that is not part of the curve file raises ``ValueError`` naming it
+    (``unknown field 'foo'``, the command line's words); ``tangents`` (a
+    Hermite curve, which the command line reads) is refused by name. The
+    values are checked by the core (``SpecError``)."""
+    if not isinstance(spec, _Mapping):
+        raise TypeError(f"a curve file holds a JSON object {{\"points\": ...}}, got {type(spec).__name__}")
+    for key in spec:
+        if key == "tangents":
+            raise ValueError("field 'tangents' (a Hermite curve) is not supported by crspline.load; "
+                             "crspline.splines.CubicHermite builds one from tangents")
+        if key not in _FILE_FIELDS:
+            raise ValueError(f"unknown field '{key}'")
+    if "points" not in spec:
+        raise ValueError("missing field 'points'")
+    pts = _as_points(spec["points"]).astype(_np.float64)
+    alpha = spec.get("alpha")
+    if alpha is not None:
+        alpha = _real(alpha, "alpha")
+    grid = spec.get("grid")
+    end = spec.get("end", "natural")
+    if isinstance(end, _Mapping):
+        for key in end:
+            if key not in ("start", "end"):
+                raise ValueError(f"unknown field '{key}' in 'end' (expected \"start\" and \"end\")")
+        end = (_file_end(end.get("start", "natural"), "end.start"), _file_end(end.get("end", "natural"), "end.end"))
+    elif not isinstance(end, str):
+        raise TypeError(f"'end' must be \"natural\", \"reflect\", \"closed\" or {{\"start\": ..., \"end\": ...}}, "
+                        f"got {type(end).__name__}")
+    tension = _real(spec.get("tension", 0.0), "tension")
+    strict = spec.get("strict", False)
+    if not isinstance(strict, bool):
+        raise TypeError(f"'strict' must be true or false, got {type(strict).__name__}")
+    kb = spec.get("kb")
+    if kb is not None:
+        if not isinstance(kb, _Mapping):
+            raise TypeError(f"'kb' must be an object {{\"tension\": [...], \"continuity\": [...], \"bias\": [...]}}, "
+                            f"got {type(kb).__name__}")
+        for key in kb:
+            if key not in ("tension", "continuity", "bias"):
+                raise ValueError(f"unknown field '{key}' in 'kb' (expected \"tension\", \"continuity\", \"bias\")")
+        values = tuple(_file_kb(kb[k], k) if k in kb else [] for k in ("tension", "continuity", "bias"))
+        curve = KochanekBartels.__new__(KochanekBartels)
+        curve._build(pts, alpha, grid, end, tension, values, strict)
+        closed = curve.closed
+        n = len(pts)
+        rows = range(n) if closed else range(1, n - 1)
+        curve._tcb = _readonly(_np.array([[v[i] if v else 0.0 for v in values] for i in rows],
+                                         dtype=_np.float64).reshape(-1, 3))
+        return curve
+    curve = CatmullRom.__new__(CatmullRom)
+    curve._build(pts, alpha, grid, end, tension, ([], [], []), strict)
+    return curve
+
+
+def load(path):
+    """The curve in a curve file (JSON, docs/spec.md; what ``crspline save``
+    and the command line's inputs hold): ``from_spec`` of its object."""
+    with open(path, encoding="utf-8") as f:
+        try:
+            spec = _json.load(f)
+        except _json.JSONDecodeError as e:
+            raise ValueError(f"{path}: not JSON: {e}") from None
+    return from_spec(spec)
+
+
+def save(path, curve):
+    """Writes the curve's specification (``curve.spec()``) to a curve file,
+    as JSON that ``crspline.load`` and the command line read (numbers
+    written to round-trip exactly). The file is replaced whole or not at
+    all (written beside it, then renamed)."""
+    if not isinstance(curve, CatmullRom):
+        raise TypeError(f"save takes a crspline.CatmullRom or KochanekBartels, got {type(curve).__name__}")
+    text = _json.dumps(curve.spec(), allow_nan=False)
+    path = _os.fspath(path)
+    tmp = f"{path}.tmp{_os.getpid()}"
+    try:
+        with open(tmp, "w", encoding="utf-8") as f:
+            f.write(text + "\n")
+        _os.replace(tmp, path)
+    except BaseException:
+        if _os.path.exists(tmp):
+            _os.remove(tmp)
+        raise

@@ -1,4 +1,5 @@
 """Type stubs of the crspline package (the public API)."""
+import os
 from collections.abc import Mapping, Sequence
 from typing import Any, Literal, TypedDict, Union
 
@@ -16,6 +17,14 @@ max_dimension: int
 
 class InvalidInput(ValueError):
     """Bad input: non-finite coordinates, too few points, bad alpha or grid, ... (a ValueError)."""
+
+class SpecError(InvalidInput):
+    """A curve specification the core rejects, with the core's words and its parts."""
+
+    field: str
+    index: Union[int, None]
+    component: Union[int, None]
+    value: str
 
 class OutOfDomain(ValueError):
     """A parameter t or arc length s outside the curve's domain (a ValueError)."""
@@ -149,6 +158,8 @@ class CatmullRom:
         tension: float = 0.0,
         strict: bool = False,
     ) -> None: ...
+    def spec(self) -> dict[str, Any]:
+        """How the curve was built, in the curve file's form (docs/spec.md)."""
     @property
     def grid(self) -> _Array:
         """The knots (read-only)."""
@@ -244,3 +255,12 @@ class KochanekBartels(CatmullRom):
     @property
     def tcb(self) -> _Array:
         """The (tension, continuity, bias) triples, one per interior vertex (read-only)."""
+
+def from_spec(spec: Mapping[str, Any]) -> CatmullRom:
+    """The curve a curve-file dict describes (KochanekBartels when it has 'kb')."""
+
+def load(path: Union[str, os.PathLike[str]]) -> CatmullRom:
+    """The curve in a curve file (JSON, docs/spec.md)."""
+
+def save(path: Union[str, os.PathLike[str]], curve: CatmullRom) -> None:
+    """Writes curve.spec() to a curve file that load and the command line read."""

@@ -14,27 +14,33 @@ safe_adjacent_angle: float
 class InvalidInput(ValueError):
     """Bad input to a constructor or method (a ValueError)."""
 
+class SpecError(InvalidInput):
+    """A curve specification the core rejects (field, index, component, value)."""
+
+    field: str
+    index: Union[int, None]
+    component: Union[int, None]
+    value: str
+
 class OutOfDomain(ValueError):
     """A parameter outside the curve's domain (a ValueError)."""
 
 _A = npt.NDArray[Any]
 
+_EndArg = Union[str, list[float]]
+
 def _make_curve(
     points: _A,
     alpha: Union[float, None],
     grid: Union[list[float], None],
-    start: str,
-    start_tangent: Union[list[float], None],
-    end: str,
-    end_tangent: Union[list[float], None],
-    closed: bool,
+    ends: Union[str, tuple[_EndArg, _EndArg]],
     tension: float,
     kb_tension: list[float],
     kb_continuity: list[float],
     kb_bias: list[float],
     strict: bool,
 ) -> _Curve:
-    """Build a curve from validated, normalized arguments."""
+    """Build a curve from its specification, validated by the core."""
 
 def _make_hermite(
     points: _A,
@@ -67,6 +73,8 @@ class _ArcLengthTable:
 class _Curve:
     """A Catmull-Rom curve of run-time dimension and scalar type."""
 
+    def spec(self) -> dict[str, Any]:
+        """The specification the curve was built from (crspline::to_spec)."""
     @property
     def dim(self) -> int:
         """Dimension."""

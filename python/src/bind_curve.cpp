@@ -2,7 +2,11 @@
 // Bézier form.
 #include <optional>
 #include <string>
+#include <utility>
+#include <variant>
 #include <vector>
+
+#include <crspline/spec.hpp>
 
 
 #include "curve.hpp"
@@ -11,61 +15,104 @@ namespace crspline::python {
 
 namespace {
 
-template <std::size_t D, class T>
-end_condition<D, T> to_end(const std::string& kind, const std::optional<std::vector<double>>& tangent,
-                           const char* which) {
-    if (kind == "natural") return end_condition<D, T>::natural();
-    if (kind == "reflect") return end_condition<D, T>::reflect();
-    if (kind == "tangent") {
-        if (!tangent) throw invalid_input(std::string(which) + " tangent is missing");
-        return end_condition<D, T>::tangent(to_vec<D, T>(*tangent, (std::string(which) + " tangent").c_str()));
-    }
-    throw invalid_input(std::string(which) + " end condition must be 'natural', 'reflect' or a tangent, got '" +
-                        kind + "'");
+// One end as Python passes it: a name ("natural", "reflect") or a tangent
+// dx/dt. The names and the tangent's length and values are the core's to
+// check (crspline::validate in spec.hpp), so every front end says the same.
+using end_arg = std::variant<std::string, std::vector<double>>;
+// Both ends: one name ("natural", "reflect", "closed") or (start, end).
+using ends_arg = std::variant<std::string, std::pair<end_arg, end_arg>>;
+
+end_spec to_end(const end_arg& e, const std::string& field) {
+    if (const auto* name = std::get_if<std::string>(&e)) return end_from_name(field, *name);
+    return end_spec{end_spec::kind::tangent, std::get<std::vector<double>>(e)};
 }
 
-template <class T>
-std::vector<T> cast_all(const std::vector<double>& v) {
-    return std::vector<T>(v.begin(), v.end());
-}
-
-curve make_curve(const py::array& points, std::optional<double> alpha, std::optional<std::vector<double>> grid,
-                 const std::string& start, std::optional<std::vector<double>> start_tangent, const std::string& end,
-                 std::optional<std::vector<double>> end_tangent, bool closed, double tension,
-                 const std::vector<double>& kb_tension, const std::vector<double>& kb_continuity,
-                 const std::vector<double>& kb_bias, bool strict) {
+/// The specification of a curve from Python's normalized arguments; points
+/// (N, dim) of float32 or float64. Validated by the core, once.
+curve_spec to_curve_spec(const py::array& points, std::optional<double> alpha, std::optional<std::vector<double>> grid,
+                         const ends_arg& ends, double tension, std::vector<double> kb_tension,
+                         std::vector<double> kb_continuity, std::vector<double> kb_bias, bool strict) {
     if (points.ndim() != 2)
         throw invalid_input("points must be a 2-D array (one row per point), got " + std::to_string(points.ndim()) +
                             " dimensions");
-    const std::size_t n = std::size_t(points.shape(0)), dim = std::size_t(points.shape(1));
+    curve_spec s;
+    s.dimension = std::size_t(points.shape(1));
+    auto p = contiguous<double>(points);
+    s.points.assign(p.data(), p.data() + p.size());
+    s.alpha = alpha;
+    s.grid = std::move(grid);
+    if (const auto* name = std::get_if<std::string>(&ends)) {
+        set_ends(s, *name);
+    } else {
+        const auto& [start, end] = std::get<std::pair<end_arg, end_arg>>(ends);
+        s.start = to_end(start, "start");
+        s.end = to_end(end, "end");
+    }
+    s.tension = tension;
+    s.kb = {std::move(kb_tension), std::move(kb_continuity), std::move(kb_bias)};
+    s.strict = strict;
+    validate(s);
+    return s;
+}
+
+curve make_curve(const py::array& points, std::optional<double> alpha, std::optional<std::vector<double>> grid,
+                 const ends_arg& ends, double tension, std::vector<double> kb_tension,
+                 std::vector<double> kb_continuity, std::vector<double> kb_bias, bool strict) {
+    const curve_spec s = to_curve_spec(points, alpha, std::move(grid), ends, tension, std::move(kb_tension),
+                                       std::move(kb_continuity), std::move(kb_bias), strict);
     return with_scalar(points, [&](auto scalar) {
         using T = decltype(scalar);
-        return with_dimension(dim, [&](auto d) {
-            constexpr std::size_t D = decltype(d)::value;
-            auto p = contiguous<T>(points);
-            options<D, T> opt;
-            opt.alpha = alpha;
-            if (grid) opt.grid = cast_all<T>(*grid);
-            opt.start = to_end<D, T>(start, start_tangent, "start");
-            opt.end = to_end<D, T>(end, end_tangent, "end");
-            opt.closed = closed;
-            opt.tension = T(tension);
-            opt.kb.tension = cast_all<T>(kb_tension);
-            opt.kb.continuity = cast_all<T>(kb_continuity);
-            opt.kb.bias = cast_all<T>(kb_bias);
-            opt.strict = strict;
-            return curve{catmull_rom<D, T>(std::span<const vec<D, T>>(as_points<D, T>(std::as_const(p)), n), opt)};
-        });
+        // 1..4 exactly, 5..16 as the zero-padded wide curve (make_curve pads).
+        return crspline::with_dimension(
+            s.dimension,
+            [&](auto d) { return curve{crspline::make_curve<decltype(d)::value, T>(s)}; },
+            [](std::size_t) {});
     });
+}
+
+/// The specification a curve was built from (crspline::to_spec), as a dict
+/// of plain Python values; a wide curve gives its padded dimension.
+py::dict spec_dict(const curve& c) {
+    const curve_spec s = c.visit([](const auto& cr) {
+        using T = scalar_t<decltype(cr)>;
+        constexpr std::size_t D = dimension_v<decltype(cr)>;
+        auto o = cr.options();  // the knots are the curve's own when they came from a grid
+        if (!o.alpha) o.grid.emplace(cr.grid().begin(), cr.grid().end());
+        return to_spec<D, T>(cr.points(), o);
+    });
+    const auto end_of = [](const end_spec& e) -> py::object {
+        switch (e.type) {
+            case end_spec::kind::reflect: return py::str("reflect");
+            case end_spec::kind::tangent: return py::cast(e.velocity);
+            case end_spec::kind::natural: break;
+        }
+        return py::str("natural");
+    };
+    py::dict d;
+    d["dimension"] = s.dimension;
+    d["points"] = s.points;
+    d["alpha"] = s.alpha ? py::object(py::float_(*s.alpha)) : py::none();
+    d["grid"] = s.grid ? py::cast(*s.grid) : py::none();
+    d["closed"] = s.closed;
+    d["start"] = end_of(s.start);
+    d["end"] = end_of(s.end);
+    d["tension"] = s.tension;
+    d["kb_tension"] = s.kb.tension;
+    d["kb_continuity"] = s.kb.continuity;
+    d["kb_bias"] = s.kb.bias;
+    d["strict"] = s.strict;
+    return d;
 }
 
 }  // namespace
 
 void bind_curve(py::module_& m, py::class_<curve>& cls) {
-    m.def("_make_curve", &make_curve, py::arg("points"), py::arg("alpha"), py::arg("grid"), py::arg("start"),
-          py::arg("start_tangent"), py::arg("end"), py::arg("end_tangent"), py::arg("closed"), py::arg("tension"),
-          py::arg("kb_tension"), py::arg("kb_continuity"), py::arg("kb_bias"), py::arg("strict"),
-          "Build a curve from validated, normalized arguments (see crspline.CatmullRom).");
+    m.def("_make_curve", &make_curve, py::arg("points"), py::arg("alpha"), py::arg("grid"), py::arg("ends"),
+          py::arg("tension"), py::arg("kb_tension"), py::arg("kb_continuity"), py::arg("kb_bias"), py::arg("strict"),
+          "Build a curve from its specification, validated by the core (crspline::validate): points (N, dim),\n"
+          "alpha or grid, ends ('natural', 'reflect', 'closed' or (start, end), each a name or a tangent),\n"
+          "tension, per-vertex Kochanek-Bartels values (or empty lists) and strict.");
+    cls.def("spec", &spec_dict, "The specification the curve was built from (crspline::to_spec), as a dict.");
 
     cls.def_property_readonly("dim", [](const curve& c) {
         return c.visit([](const auto& cr) { return dimension_v<decltype(cr)>; });

@@ -1,6 +1,9 @@
 // crspline Python module `crspline._crspline`: the compiled part of the
 // `crspline` package. The public API (CatmullRom, KochanekBartels) is the
 // pure-Python layer in crspline/__init__.py; this module is private.
+#include <exception>
+#include <optional>
+
 #include <crspline/version.hpp>
 
 #include "curve.hpp"
@@ -21,6 +24,33 @@ PYBIND11_MODULE(_crspline, m) {
         "Bad input to a constructor or method (a ValueError): non-finite coordinates, too few points,\n"
         "alpha outside [0, 1], a bad grid, coincident points in strict mode, ... The message names the\n"
         "index and the value.";
+    // A bad curve specification (crspline::spec_error): an InvalidInput with
+    // the core's words and the pieces a caller may want, as attributes:
+    // field ('points', 'alpha', 'grid', 'start', 'end', 'tension',
+    // 'kb.tension', ...), index and component (int or None) and value (the
+    // offending value as text, '' when there is none).
+    static PyObject* spec_error_type = nullptr;
+    auto& spec = py::register_exception<crspline::spec_error>(m, "SpecError", invalid.ptr());
+    spec.attr("__doc__") =
+        "A curve specification the core rejects (an InvalidInput, so a ValueError), with the core's message\n"
+        "and its parts: field, index, component (int or None) and value (text).";
+    spec_error_type = spec.ptr();
+    py::register_exception_translator([](std::exception_ptr p) {  // tried before the plain translator
+        if (!p) return;
+        try {
+            std::rethrow_exception(p);
+        } catch (const crspline::spec_error& e) {
+            const auto optional_int = [](std::optional<std::size_t> v) {
+                return v ? py::object(py::int_(*v)) : py::object(py::none());
+            };
+            py::object err = py::reinterpret_borrow<py::object>(spec_error_type)(e.what());
+            err.attr("field") = e.field();
+            err.attr("index") = optional_int(e.index());
+            err.attr("component") = optional_int(e.component());
+            err.attr("value") = e.value();
+            PyErr_SetObject(spec_error_type, err.ptr());
+        }
+    });
     auto& domain = py::register_exception<crspline::out_of_domain>(m, "OutOfDomain", PyExc_ValueError);
     domain.attr("__doc__") =
         "A parameter t (or arc length s) outside the curve's domain (a ValueError). For arrays the\n"
