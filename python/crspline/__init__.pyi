@@ -264,3 +264,27 @@ def load(path: Union[str, os.PathLike[str]]) -> CatmullRom:
 
 def save(path: Union[str, os.PathLike[str]], curve: CatmullRom) -> None:
     """Writes curve.spec() to a curve file that load and the command line read."""
+
+def arc_lengths(
+    curves: Union[Sequence[_ArrayLike], npt.NDArray[Any]],
+    *,
+    alpha: Union[float, None] = 0.5,
+    endconditions: _EndConditions = "natural",
+    tension: float = 0.0,
+    strict: bool = False,
+    accuracy: float = 1e-12,
+    workers: Union[int, None] = None,
+) -> _Array:
+    """Arc length of every curve, in one call on many threads (GIL released)."""
+
+def tessellate_many(
+    curves: Union[Sequence[_ArrayLike], npt.NDArray[Any]],
+    tolerance: Union[float, None] = None,
+    *,
+    alpha: Union[float, None] = 0.5,
+    endconditions: _EndConditions = "natural",
+    tension: float = 0.0,
+    strict: bool = False,
+    workers: Union[int, None] = None,
+) -> list[Polyline]:
+    """Tessellation of every curve, in one call on many threads (GIL released)."""

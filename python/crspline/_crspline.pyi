@@ -131,3 +131,22 @@ class _Curve:
         """Whole-curve self-intersections (the report's search object)."""
     def certify_intersection_free(self, safe_angle: float = ..., search_on_failure: bool = True, tolerance: Union[float, None] = None, dimension: Union[int, None] = None) -> dict[str, Any]:
         """Section 5's certificate."""
+
+def _arc_lengths(
+    curves: list[_A],
+    alpha: Union[float, None],
+    ends: Union[str, tuple[_EndArg, _EndArg]],
+    tension: float,
+    strict: bool,
+    accuracy: float,
+    workers: int,
+) -> _A: ...
+def _tessellate_many(
+    curves: list[_A],
+    alpha: Union[float, None],
+    ends: Union[str, tuple[_EndArg, _EndArg]],
+    tension: float,
+    strict: bool,
+    tolerance: Union[float, None],
+    workers: int,
+) -> list[tuple[_A, _A]]: ...

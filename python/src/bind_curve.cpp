@@ -15,18 +15,6 @@ namespace crspline::python {
 
 namespace {
 
-// One end as Python passes it: a name ("natural", "reflect") or a tangent
-// dx/dt. The names and the tangent's length and values are the core's to
-// check (crspline::validate in spec.hpp), so every front end says the same.
-using end_arg = std::variant<std::string, std::vector<double>>;
-// Both ends: one name ("natural", "reflect", "closed") or (start, end).
-using ends_arg = std::variant<std::string, std::pair<end_arg, end_arg>>;
-
-end_spec to_end(const end_arg& e, const std::string& field) {
-    if (const auto* name = std::get_if<std::string>(&e)) return end_from_name(field, *name);
-    return end_spec{end_spec::kind::tangent, std::get<std::vector<double>>(e)};
-}
-
 /// The specification of a curve from Python's normalized arguments; points
 /// (N, dim) of float32 or float64. Validated by the core, once.
 curve_spec to_curve_spec(const py::array& points, std::optional<double> alpha, std::optional<std::vector<double>> grid,
@@ -41,13 +29,7 @@ curve_spec to_curve_spec(const py::array& points, std::optional<double> alpha, s
     s.points.assign(p.data(), p.data() + p.size());
     s.alpha = alpha;
     s.grid = std::move(grid);
-    if (const auto* name = std::get_if<std::string>(&ends)) {
-        set_ends(s, *name);
-    } else {
-        const auto& [start, end] = std::get<std::pair<end_arg, end_arg>>(ends);
-        s.start = to_end(start, "start");
-        s.end = to_end(end, "end");
-    }
+    apply_ends(s, ends);
     s.tension = tension;
     s.kb = {std::move(kb_tension), std::move(kb_continuity), std::move(kb_bias)};
     s.strict = strict;

@@ -11,6 +11,7 @@
 #include <span>
 #include <string>
 #include <type_traits>
+#include <optional>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -22,6 +23,7 @@
 #include <crspline/catmull_rom.hpp>
 #include <crspline/dispatch.hpp>
 #include <crspline/error.hpp>
+#include <crspline/spec.hpp>
 
 namespace crspline::python {
 
@@ -151,6 +153,28 @@ vec<D, T> to_vec(const std::vector<double>& c, const char* what) {
     return p;
 }
 
+/// One end as Python passes it: a name ("natural", "reflect") or a tangent
+/// dx/dt. The names and the tangent's length and values are the core's to
+/// check (crspline::validate in spec.hpp), so every front end says the same.
+using end_arg = std::variant<std::string, std::vector<double>>;
+/// Both ends: one name ("natural", "reflect", "closed") or (start, end).
+using ends_arg = std::variant<std::string, std::pair<end_arg, end_arg>>;
+
+/// Sets the ends of a specification from Python's form (names checked by the core).
+inline void apply_ends(curve_spec& s, const ends_arg& ends) {
+    const auto one = [](const end_arg& e, const std::string& field) {
+        if (const auto* name = std::get_if<std::string>(&e)) return end_from_name(field, *name);
+        return end_spec{end_spec::kind::tangent, std::get<std::vector<double>>(e)};
+    };
+    if (const auto* name = std::get_if<std::string>(&ends)) {
+        set_ends(s, *name);
+        return;
+    }
+    const auto& [start, end] = std::get<std::pair<end_arg, end_arg>>(ends);
+    s.start = one(start, "start");
+    s.end = one(end, "end");
+}
+
 // Each binding file adds its part of the module.
 void bind_curve(py::module_& m, py::class_<curve>& cls);
 void bind_arc_length(py::module_& m, py::class_<curve>& cls);
@@ -158,5 +182,6 @@ void bind_geometry(py::module_& m, py::class_<curve>& cls);
 void bind_frames(py::module_& m, py::class_<curve>& cls);
 void bind_analysis(py::module_& m, py::class_<curve>& cls);
 void bind_hermite(py::module_& m, py::class_<curve>& cls);
+void bind_batch(py::module_& m);
 
 }  // namespace crspline::python

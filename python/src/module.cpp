@@ -60,6 +60,7 @@ PYBIND11_MODULE(_crspline, m) {
     bind_curve(m, cls);
     bind_arc_length(m, cls);
     bind_hermite(m, cls);
+    bind_batch(m);
 #ifdef CRSPLINE_PY_GEOMETRY
     bind_geometry(m, cls);
 #endif
