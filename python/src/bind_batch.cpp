@@ -92,11 +92,11 @@ std::vector<R> for_each_curve(const point_arrays& arrays, const shared_options& 
         apply_ends(s, shared.ends);
         s.tension = shared.tension;
         s.strict = shared.strict;
-        validate(s);  // before the dimension switch: its words for a bad dimension
+        // make_curve validates; a dimension outside 1..16 gets validate()'s words.
         results[i] = crspline::with_dimension(
             s.dimension,
             [&](auto d) -> R { return work(crspline::make_curve<decltype(d)::value, double>(s), s.dimension); },
-            [](std::size_t) {});
+            [&](std::size_t) { validate(s); });
     };
     // Indices are handed out in increasing order and a worker skips those
     // above the lowest failure so far, so every curve below the first

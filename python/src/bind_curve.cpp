@@ -16,7 +16,7 @@ namespace crspline::python {
 namespace {
 
 /// The specification of a curve from Python's normalized arguments; points
-/// (N, dim) of float32 or float64. Validated by the core, once.
+/// (N, dim) of float32 or float64. make_curve validates it (crspline::validate).
 curve_spec to_curve_spec(const py::array& points, std::optional<double> alpha, std::optional<std::vector<double>> grid,
                          const ends_arg& ends, double tension, std::vector<double> kb_tension,
                          std::vector<double> kb_continuity, std::vector<double> kb_bias, bool strict) {
@@ -33,7 +33,6 @@ curve_spec to_curve_spec(const py::array& points, std::optional<double> alpha, s
     s.tension = tension;
     s.kb = {std::move(kb_tension), std::move(kb_continuity), std::move(kb_bias)};
     s.strict = strict;
-    validate(s);
     return s;
 }
 
@@ -44,11 +43,12 @@ curve make_curve(const py::array& points, std::optional<double> alpha, std::opti
                                        std::move(kb_continuity), std::move(kb_bias), strict);
     return with_scalar(points, [&](auto scalar) {
         using T = decltype(scalar);
-        // 1..4 exactly, 5..16 as the zero-padded wide curve (make_curve pads).
+        // 1..4 exactly, 5..16 as the zero-padded wide curve (make_curve pads
+        // and validates); any other dimension gets validate()'s words.
         return crspline::with_dimension(
             s.dimension,
             [&](auto d) { return curve{crspline::make_curve<decltype(d)::value, T>(s)}; },
-            [](std::size_t) {});
+            [&](std::size_t) { validate(s); });
     });
 }
 
