@@ -31,10 +31,10 @@ namespace py = pybind11;
 
 /// The dimensions the module accepts: 1 to 4 as curves of exactly that
 /// dimension, 5 to 16 as the one wide curve of crspline::with_dimension
-/// (16 coordinates, zero-padded; see crspline/dispatch.hpp). The padding and
-/// the cutting of results back to the input's dimension are done by the
-/// Python layer (crspline/__init__.py), which hands this module only 1 to 4
-/// or 16 columns.
+/// (16 coordinates, zero-padded; see crspline/dispatch.hpp). _make_curve and
+/// the many-curve calls pad through crspline::make_curve; the Python layer
+/// (crspline/__init__.py) cuts results back to the input's dimension, and
+/// hands _make_hermite only 1 to 4 columns.
 inline constexpr std::size_t max_dimension = max_runtime_dimension;
 
 /// f(std::integral_constant<std::size_t, D>{}) for D = 1..4 and 16, else the
