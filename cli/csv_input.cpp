@@ -185,6 +185,7 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
                                   shown(fields[k].text));
             out.coords.push_back(*x);
         }
+        out.lines.push_back(line_no);
     }
     return out;
 }

@@ -16,7 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "json_input.hpp"
+#include "json_parser.hpp"
 
 namespace crspline::cli {
 

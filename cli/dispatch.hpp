@@ -80,7 +80,11 @@ catmull_rom<D, double> make_curve(const curve_spec& c) {
         const std::vector<double> grid = c.grid ? *c.grid : knots(p, c.alpha.value_or(centripetal), c.closed);
         return catmull_rom<D, double>::hermite(p, out, in, grid, c.closed);
     }
-    return crspline::make_curve<D, double>(to_core_spec(c));
+    try {
+        return crspline::make_curve<D, double>(to_core_spec(c));
+    } catch (const crspline::spec_error& e) {  // coincident points in strict mode
+        throw input_error(describe_spec_error(e, c));
+    }
 }
 
 /// The first `dimension` coordinates of a point: the input's own, without the

@@ -35,7 +35,7 @@ output_json run_eval(const document& input) {
             const arc_length_table<D, double> table(curve, spec.accuracy);
             for (std::size_t i = 0; i < spec.s->size(); ++i)
                 if (!((*spec.s)[i] >= 0 && (*spec.s)[i] <= table.total()))
-                    throw input_error("s[" + std::to_string(i) + "]: s = " + format_number((*spec.s)[i]) +
+                    throw input_error(spec.s_name + "[" + std::to_string(i) + "]: s = " + format_number((*spec.s)[i]) +
                                       " is outside the arc-length range [0, " + format_number(table.total()) + "]");
             t_of_s = table.t_at(std::span<const double>(*spec.s));
         }
@@ -45,7 +45,7 @@ output_json run_eval(const document& input) {
         const double lo = curve.t_min(), hi = curve.t_max();
         for (std::size_t i = 0; i < spec.t.size(); ++i)
             if (!(spec.t[i] >= lo && spec.t[i] <= hi))
-                throw input_error("t[" + std::to_string(i) + "]: t = " + format_number(spec.t[i]) +
+                throw input_error(spec.t_name + "[" + std::to_string(i) + "]: t = " + format_number(spec.t[i]) +
                                   " is outside the domain [" + format_number(lo) + ", " + format_number(hi) + "]");
 
         // 2. One array of points per requested order, in the order requested.

@@ -1,285 +1,23 @@
-// crspline command line: input reading, JSON parsing with positions, and
-// validation of the JSON contract. See json_input.hpp.
+// crspline command line: the input contract. The JSON fields of a document
+// and the command-line flags become one curve description (curve_spec) and
+// the work of a subcommand; every problem is reported by the field's JSON
+// path or the flag's name. See json_input.hpp.
 #include "json_input.hpp"
 
 #include <crspline/dispatch.hpp>
+#include <crspline/resolution.hpp>
 
 #include <algorithm>
-#include <array>
-#include <cerrno>
-#include <charconv>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <iostream>
 #include <iterator>
 #include <utility>
+
+#include "csv_input.hpp"
+#include "options.hpp"
 
 namespace crspline::cli {
 
 using nlohmann::json;
-
-// --- reading -------------------------------------------------------------------
-
-input_text read_input(const std::string& path) {
-    input_text in;
-    if (path.empty() || path == "-") {
-        // stdin: read everything, bytes as they are.
-        in.name = "<stdin>";
-        std::array<char, 1 << 16> buf;
-        std::size_t got;
-        while ((got = std::fread(buf.data(), 1, buf.size(), stdin)) > 0) in.text.append(buf.data(), got);
-        if (std::ferror(stdin)) throw input_error(in.name + ": cannot read: " + std::strerror(errno));
-        return in;
-    }
-    in.name = path;
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) throw input_error(path + ": cannot open: " + std::strerror(errno));
-    std::array<char, 1 << 16> buf;
-    std::size_t got;
-    while ((got = std::fread(buf.data(), 1, buf.size(), f)) > 0) in.text.append(buf.data(), got);
-    const bool failed = std::ferror(f) != 0;
-    const int err = errno;  // a directory opens but fails to read (EISDIR)
-    std::fclose(f);
-    if (failed) throw input_error(path + ": cannot read: " + std::strerror(err));
-    return in;
-}
-
-// --- parsing -------------------------------------------------------------------
-
-namespace {
-
-// Builds the document like nlohmann's own DOM parser, but knows at every
-// moment the path of the value being read ("points[3][1]"), so that a number
-// too large for a double is reported by its field, and rejects duplicate keys
-// (nlohmann would silently keep the last one).
-class path_tracking_parser final : public nlohmann::json_sax<json> {
-public:
-    explicit path_tracking_parser(const input_text& in, bool fast_points = false)
-        : in_(in), fast_enabled_(fast_points) {}
-
-    json root;
-    std::string error;            // set when parsing stopped
-    std::optional<point_set> flat;  // the top-level "points", read flat
-
-    bool null() override { return leave_fast() && add(json(nullptr)); }
-    bool boolean(bool v) override { return leave_fast() && add(json(v)); }
-    bool number_integer(number_integer_t v) override { return number(double(v)) || add(json(v)); }
-    bool number_unsigned(number_unsigned_t v) override { return number(double(v)) || add(json(v)); }
-    bool number_float(number_float_t v, const string_t&) override { return number(v) || add(json(v)); }
-    bool string(string_t& v) override { return leave_fast() && add(json(std::move(v))); }
-    bool binary(binary_t& v) override { return leave_fast() && add(json::binary(std::move(v))); }
-
-    bool start_object(std::size_t) override { return leave_fast() && open(json::object()); }
-    bool key(string_t& k) override {
-        frame& f = stack_.back();
-        if (f.value->contains(k)) {
-            error = prefix(path_of_parent()) + "duplicate field '" + k + "'";
-            return false;
-        }
-        f.key = k;
-        // The top-level "points": read flat if it turns out well-formed.
-        if (fast_enabled_ && stack_.size() == 1 && k == "points") fast_ = fast::armed;
-        return true;
-    }
-    bool end_object() override { return leave_fast() && close(); }
-    bool start_array(std::size_t) override {
-        if (fast_ == fast::armed) {
-            fast_ = fast::on;
-            fast_depth_ = 1;
-            flat.emplace();
-            place(json::array());  // a placeholder: "points" is present
-            return true;
-        }
-        if (fast_ == fast::on && fast_depth_ == 1) {
-            fast_depth_ = 2;
-            fast_count_ = 0;
-            return true;
-        }
-        return leave_fast() && open(json::array());
-    }
-    bool end_array() override {
-        if (fast_ == fast::on) {
-            if (fast_depth_ == 1) {  // the end of "points": all of it was well-formed
-                fast_ = fast::off;
-                return true;
-            }
-            const bool first = fast_points_ == 0;
-            if (fast_count_ > 0 && (first || fast_count_ == flat->dimension)) {
-                if (first) flat->dimension = fast_count_;
-                ++fast_points_;
-                fast_depth_ = 1;
-                return true;
-            }
-            fallback();
-        }
-        return close();
-    }
-
-    bool parse_error(std::size_t position, const std::string& last_token,
-                     const nlohmann::detail::exception& ex) override {
-        if (ex.id == 406) {
-            // "number overflow parsing '1e999'": a literal beyond the double range.
-            const std::string at = fast_ != fast::on ? path_of_next()
-                                   : fast_depth_ == 1 ? "points[" + std::to_string(fast_points_) + "]"
-                                   : "points[" + std::to_string(fast_points_) + "][" + std::to_string(fast_count_) + "]";
-            error = prefix(at) + "expected a finite number, got " + last_token;
-            return false;
-        }
-        error = in_.name + ": " + line_column(position) + ": " + strip_prefix(ex.what());
-        return false;
-    }
-
-private:
-    struct frame {
-        json* value;
-        std::string key;  // objects: the key of the value being read
-    };
-    const input_text& in_;
-    std::vector<frame> stack_;
-
-    // Fast path: armed after the top-level key "points", on inside its array
-    // (depth 1: between points, depth 2: inside one point).
-    enum class fast { off, armed, on };
-    bool fast_enabled_ = false;
-    fast fast_ = fast::off;
-    int fast_depth_ = 0;
-    std::size_t fast_count_ = 0;   // coordinates read in the current point
-    std::size_t fast_points_ = 0;  // points completed
-
-    // A number on the fast path; false when it is not (the caller adds it).
-    bool number(double v) {
-        if (fast_ == fast::on && fast_depth_ == 2 && fast_count_ < max_runtime_dimension) {
-            flat->coords.push_back(v);
-            ++fast_count_;
-            return true;
-        }
-        leave_fast();
-        return false;
-    }
-
-    // Anything but a number inside a point ends the fast path.
-    bool leave_fast() {
-        if (fast_ == fast::armed) fast_ = fast::off;  // "points" is not an array
-        if (fast_ == fast::on) fallback();
-        return true;
-    }
-
-    // Rebuilds the tree for what the fast path has read so far, so that the
-    // rest of "points" goes into the tree and validation sees all of it.
-    void fallback() {
-        const std::size_t d = flat->dimension;
-        json outer = json::array();
-        for (std::size_t i = 0; i < fast_points_; ++i) {
-            json p = json::array();
-            for (std::size_t k = 0; k < d; ++k) p.push_back(flat->coords[i * d + k]);
-            outer.push_back(std::move(p));
-        }
-        json* o = &(root["points"] = std::move(outer));
-        stack_.push_back({o, {}});
-        if (fast_depth_ == 2) {
-            json p = json::array();
-            for (std::size_t k = fast_points_ * d; k < flat->coords.size(); ++k) p.push_back(flat->coords[k]);
-            o->push_back(std::move(p));
-            stack_.push_back({&o->back(), {}});
-        }
-        flat.reset();
-        fast_ = fast::off;
-    }
-
-    // The value just read goes into the innermost container, or is the root.
-    json* place(json&& v) {
-        if (stack_.empty()) {
-            root = std::move(v);
-            return &root;
-        }
-        frame& f = stack_.back();
-        if (f.value->is_array()) {
-            f.value->push_back(std::move(v));
-            return &f.value->back();
-        }
-        return &((*f.value)[f.key] = std::move(v));
-    }
-    bool add(json&& v) {
-        place(std::move(v));
-        return true;
-    }
-    bool open(json&& container) {
-        json* p = place(std::move(container));
-        stack_.push_back({p, {}});
-        return true;
-    }
-    bool close() {
-        stack_.pop_back();
-        return true;
-    }
-
-    // Path of the value being read now ("points[3][1]"), or of the innermost
-    // container itself. A container below the innermost one was the last
-    // value added to its parent, at index size - 1.
-    std::string path(bool include_next) const {
-        std::string p;
-        const std::size_t n = stack_.size(), upto = include_next ? n : (n == 0 ? 0 : n - 1);
-        for (std::size_t i = 0; i < upto; ++i) {
-            const frame& f = stack_[i];
-            if (f.value->is_array()) p += "[" + std::to_string(i + 1 == n ? f.value->size() : f.value->size() - 1) + "]";
-            else p += (p.empty() ? "" : ".") + f.key;
-        }
-        return p;
-    }
-    std::string path_of_next() const { return path(true); }
-    std::string path_of_parent() const { return path(false); }
-    std::string prefix(const std::string& path) const { return (path.empty() ? in_.name : path) + ": "; }
-
-    // nlohmann counts the end of input as one character read; the offending
-    // character is the last one read, at byte index position - 1.
-    std::string line_column(std::size_t position) const {
-        const std::size_t at = std::min(position == 0 ? 0 : position - 1, in_.text.size());
-        const std::size_t line = 1 + std::size_t(std::count(in_.text.begin(), in_.text.begin() + std::ptrdiff_t(at), '\n'));
-        const std::size_t nl = at == 0 ? std::string::npos : in_.text.rfind('\n', at - 1);
-        const std::size_t column = nl == std::string::npos ? at + 1 : at - nl;
-        return "line " + std::to_string(line) + ", column " + std::to_string(column);
-    }
-
-    // "[json.exception.parse_error.101] parse error at line 2, column 11: syntax
-    // error ..." -> "syntax error ...": the position is given by ourselves.
-    static std::string strip_prefix(std::string msg) {
-        if (const auto c = msg.find("column "); c != std::string::npos)
-            if (const auto colon = msg.find(": ", c); colon != std::string::npos) return msg.substr(colon + 2);
-        if (const auto b = msg.find("] "); b != std::string::npos) return msg.substr(b + 2);
-        return msg;
-    }
-};
-
-}  // namespace
-
-json parse_json(const input_text& in) {
-    path_tracking_parser p(in);
-    const bool ok = json::sax_parse(in.text, &p);
-    if (!ok) throw input_error(p.error.empty() ? in.name + ": not valid JSON" : p.error);
-    return std::move(p.root);
-}
-
-document parse_json_document(const input_text& in) {
-    path_tracking_parser p(in, true);
-    const bool ok = json::sax_parse(in.text, &p);
-    if (!ok) throw input_error(p.error.empty() ? in.name + ": not valid JSON" : p.error);
-    document d;
-    d.root = std::move(p.root);
-    if (d.root.is_object()) d.points = std::move(p.flat);
-    return d;
-}
-
-// --- validation helpers ----------------------------------------------------------
-
-std::string format_number(double x) {
-    if (std::isnan(x)) return "nan";
-    if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-    std::array<char, 64> buf;
-    const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), x);
-    return std::string(buf.data(), r.ptr);
-}
-
 namespace {
 
 // The offending value as it appears in JSON, shortened when long.
@@ -400,9 +138,17 @@ std::vector<double> tangent_rows(const json& v, const std::string& path, std::si
 // "tangents" of the curve description; the curve then has no computed
 // tangents, so what computes them (end conditions, tension, kb, strict) is
 // rejected rather than silently ignored.
-void parse_tangents(const json& root, curve_spec& c) {
+void parse_tangents(const json& root, const cli_options* f, curve_spec& c) {
     for (const char* key : {"tension", "kb", "strict"})
         if (root.contains(key)) fail("tangents", std::string("given tangents take no '") + key + "'");
+    if (f) {
+        const std::pair<bool, const char*> flags[] = {
+            {!f->tension.empty(), "--tension"}, {!f->kb_tension.empty(), "--kb-tension"},
+            {!f->kb_continuity.empty(), "--kb-continuity"}, {!f->kb_bias.empty(), "--kb-bias"},
+            {f->strict, "--strict"}, {!f->start.empty(), "--start"}, {!f->end.empty(), "--end"}};
+        for (const auto& [given, flag] : flags)
+            if (given) fail(flag, "given tangents (the input's \"tangents\") take no " + std::string(flag));
+    }
     if (root.contains("end") && !c.closed)
         fail("tangents", "given tangents take no end conditions (only \"end\": \"closed\")");
     const std::size_t n = c.point_count();
@@ -417,20 +163,127 @@ void parse_tangents(const json& root, curve_spec& c) {
     }
 }
 
+
+// --- flags ---------------------------------------------------------------------------
+
+// A flag's text as the JSON value it stands for: a number when the text is
+// one, else the text as a string, so that the field's own validation reports
+// it ("--alpha: expected a finite number, got "abc"").
+json scalar(const std::string& text) {
+    if (const auto x = parse_number(text)) return *x;
+    if (text == "true") return true;
+    if (text == "false") return false;
+    return text;
+}
+
+// One end from --start / --end: "natural" | "reflect" | a tangent "dx,dy".
+json end_value(const std::string& flag, const std::string& text) {
+    if (text == "natural" || text == "reflect") return text;
+    try {
+        return number_list(flag, text);
+    } catch (const input_error&) {
+        return text;  // reported by parse_end with the expected forms
+    }
+}
+
+// The alpha flags of a one-curve command (plot reads its own list).
+std::optional<double> alpha_flag(const cli_options& f) {
+    if (f.command == "plot") return std::nullopt;
+    const int presets = int(f.uniform) + int(f.centripetal) + int(f.chordal) + int(!f.alpha.empty());
+    if (presets > 1)
+        throw input_error("--alpha: give one of --alpha, --uniform, --centripetal, --chordal (several are for "
+                          "'crspline plot')");
+    if (presets == 0) return std::nullopt;
+    if (f.uniform) return 0.0;
+    if (f.centripetal) return 0.5;
+    if (f.chordal) return 1.0;
+    const double a = finite_number(scalar(f.alpha), "--alpha");
+    if (!(a >= 0 && a <= 1)) fail("--alpha", "must be in [0, 1], got " + format_number(a));
+    return a;
+}
+
+bool any_alpha_flag(const cli_options& f) { return f.uniform || f.centripetal || f.chordal || !f.alpha.empty(); }
+
+// The value of a field: the flag's when it is given, else the JSON field's.
+// `name` is what messages call it.
+struct field_value {
+    json value;
+    std::string name;
+    bool flag = false;
+};
+std::optional<field_value> field(const json& root, const char* key, const cli_options* f,
+                                 const std::string cli_options::*flag, const char* flag_name, bool list = false) {
+    if (f && !(f->*flag).empty())
+        return field_value{list ? number_list(flag_name, f->*flag) : scalar(f->*flag), flag_name, true};
+    if (root.contains(key)) return field_value{root[key], key, false};
+    return std::nullopt;
+}
+
+// The grid: N increasing finite values (N + 1 when closed).
+std::vector<double> parse_grid(const json& v, const std::string& name, std::size_t n, bool closed) {
+    std::vector<double> g = finite_numbers(v, name);
+    const std::size_t expected = closed ? n + 1 : n;
+    if (g.size() != expected)
+        fail(name, "expected " + std::to_string(expected) + " values (" +
+                       (closed ? "one per point plus one to close the curve" : "one per point") + "), got " +
+                       std::to_string(g.size()));
+    for (std::size_t i = 1; i < g.size(); ++i)
+        if (!(g[i] > g[i - 1]))
+            fail(index(name, i), "must be greater than grid[" + std::to_string(i - 1) + "] = " +
+                                     format_number(g[i - 1]) + ", got " + format_number(g[i]));
+    return g;
+}
+
+// A closed curve whose last point repeats the first (the GeoJSON and SVG
+// convention for rings): the repeat is dropped, since a closed curve joins
+// its last point to the first by itself; kept, it would be a duplicated
+// point with a sharp corner. Returns whether it was dropped.
+bool drop_closing_repeat(curve_spec& c) {
+    const std::size_t n = c.point_count(), d = c.dimension;
+    if (n < 3) return false;
+    if (!std::equal(c.coords.begin(), c.coords.begin() + std::ptrdiff_t(d), c.coords.end() - std::ptrdiff_t(d)))
+        return false;
+    c.coords.resize(c.coords.size() - d);
+    if (!c.lines.empty()) c.lines.pop_back();
+    return true;
+}
+
 }  // namespace
+
+std::string point_location(const curve_spec& c, std::size_t i) {
+    if (i < c.lines.size()) return "line " + std::to_string(c.lines[i]) + " (point " + std::to_string(i + 1) + ")";
+    return index(c.points_path, i);
+}
+
+std::string describe_spec_error(const crspline::spec_error& e, const curve_spec& c) {
+    const std::string file = c.file.empty() ? std::string() : c.file + ": ";
+    if (e.field() == "points" && e.index() && *e.index() < c.point_count()) {
+        const std::size_t i = *e.index(), n = c.point_count(), j = (i + 1) % n;
+        const std::string what = e.what();
+        if (what.find("coincident") != std::string::npos)
+            return file + point_location(c, j) + ": coincides with the point before it, " + point_location(c, i) +
+                   " (--strict rejects coincident consecutive points; without it they are allowed)";
+        return file + point_location(c, i) + ": " + what;
+    }
+    return file + e.what();
+}
 
 curve_spec parse_curve(const document& doc, std::string_view command, std::initializer_list<std::string_view> extra) {
     const json& root = doc.root;
+    const cli_options* f = doc.flags;
     if (!root.is_object()) throw input_error("expected a JSON object {\"points\": ...}, got " + describe(root));
     // Unknown fields first: a typo is the likeliest cause of any later error.
     check_fields(root, command, extra);
     curve_spec c;
+    c.file = doc.file;
 
-    // points: N x D finite numbers, D in 1..4 and the same for every point.
+    // points: N x D finite numbers, D in 1..16 and the same for every point.
     std::string points_name = "points";
     if (doc.points) {
         c.dimension = doc.points->dimension;
         c.coords = doc.points->coords;
+        c.lines = doc.points->lines;
+        c.points_path = doc.points->path;
         points_name = doc.points->name;
     } else if (!root.contains("points")) {
         throw input_error("missing field 'points'");
@@ -451,8 +304,14 @@ curve_spec parse_curve(const document& doc, std::string_view command, std::initi
     }
     if (c.point_count() == 0) fail(points_name, "a curve needs at least 2 points, got 0");
 
-    // end: "natural" | "reflect" | "closed" | {"start": E, "end": E}.
-    if (root.contains("end")) {
+    // end: --closed, --start, --end, else "end": "natural" | "reflect" |
+    // "closed" | {"start": E, "end": E}. A flag for one end leaves the other
+    // end as the JSON says (an open curve).
+    if (f && f->closed && (!f->start.empty() || !f->end.empty()))
+        throw input_error("--closed: a closed curve has no end conditions (--start, --end)");
+    if (f && f->closed) {
+        c.closed = true;
+    } else if (root.contains("end")) {
         const json& e = root["end"];
         const std::string expected =
             "expected \"natural\", \"reflect\", \"closed\" or {\"start\": ..., \"end\": ...}, got ";
@@ -472,39 +331,54 @@ curve_spec parse_curve(const document& doc, std::string_view command, std::initi
             fail("end", expected + describe(e));
         }
     }
+    if (f && (!f->start.empty() || !f->end.empty())) {
+        c.closed = false;
+        if (!f->start.empty()) c.start = parse_end(end_value("--start", f->start), "--start", c.dimension);
+        if (!f->end.empty()) c.end = parse_end(end_value("--end", f->end), "--end", c.dimension);
+    }
+    // A repeated first point is dropped where the closing comes from the
+    // command line (--closed on a CSV or JSON file); the JSON curve file's
+    // own "end": "closed" is taken as written (three.js and d3 keep such a
+    // point, and the reference tests compare with them).
+    if (c.closed && f && f->closed && c.point_count() > 0) {
+        const std::string last = point_location(c, c.point_count() - 1);
+        if (drop_closing_repeat(c))
+            doc.notes.push_back((c.file.empty() ? std::string() : c.file + ": ") + last +
+                                ": repeats the first point; a closed curve joins its last point to the first by "
+                                "itself, so the repeat is dropped");
+    }
     const std::size_t n = c.point_count(), needed = 2;  // closed too: a loop of two segments
     if (n < needed)
         fail(points_name, std::string(c.closed ? "a closed curve" : "a curve") + " needs at least " +
-                           std::to_string(needed) + " points, got " + std::to_string(n));
+                              std::to_string(needed) + " points, got " + std::to_string(n));
 
-    // alpha or grid (not both); default alpha 0.5.
-    if (root.contains("alpha") && root.contains("grid")) fail("grid", "give alpha or grid, not both");
-    if (root.contains("alpha")) {
-        const double a = finite_number(root["alpha"], "alpha");
-        if (!(a >= 0 && a <= 1)) fail("alpha", "must be in [0, 1], got " + format_number(a));
-        c.alpha = a;
-    }
-    if (root.contains("grid")) {
-        std::vector<double> g = finite_numbers(root["grid"], "grid");
-        const std::size_t expected = c.closed ? n + 1 : n;
-        if (g.size() != expected)
-            fail("grid", "expected " + std::to_string(expected) + " values (" +
-                             (c.closed ? "one per point plus one to close the curve" : "one per point") +
-                             "), got " + std::to_string(g.size()));
-        for (std::size_t i = 1; i < g.size(); ++i)
-            if (!(g[i] > g[i - 1]))
-                fail(index("grid", i), "must be greater than grid[" + std::to_string(i - 1) + "] = " +
-                                           format_number(g[i - 1]) + ", got " + format_number(g[i]));
-        c.grid = std::move(g);
+    // alpha or grid (not both); default alpha 0.5. A flag overrides the
+    // JSON: --alpha (or a preset) replaces "alpha" and "grid", --grid both.
+    const std::optional<double> flag_alpha = f ? alpha_flag(*f) : std::nullopt;
+    if (f && !f->grid.empty()) {
+        if (any_alpha_flag(*f) && f->command != "plot")
+            throw input_error("--grid: give --grid or an alpha (--alpha, --uniform, --centripetal, --chordal), not both");
+        c.grid = parse_grid(number_list("--grid", f->grid), "--grid", n, c.closed);
+    } else if (flag_alpha) {
+        c.alpha = flag_alpha;
+    } else {
+        if (root.contains("alpha") && root.contains("grid")) fail("grid", "give alpha or grid, not both");
+        if (root.contains("alpha")) {
+            const double a = finite_number(root["alpha"], "alpha");
+            if (!(a >= 0 && a <= 1)) fail("alpha", "must be in [0, 1], got " + format_number(a));
+            c.alpha = a;
+        }
+        if (root.contains("grid")) c.grid = parse_grid(root["grid"], "grid", n, c.closed);
     }
 
     // tension: tangents scaled by 1 - tension.
-    if (root.contains("tension")) {
-        c.tension = finite_number(root["tension"], "tension");
-        if (!(c.tension >= 0 && c.tension <= 1)) fail("tension", "must be in [0, 1], got " + format_number(c.tension));
+    if (const auto t = field(root, "tension", f, &cli_options::tension, "--tension")) {
+        c.tension = finite_number(t->value, t->name);
+        if (!(c.tension >= 0 && c.tension <= 1)) fail(t->name, "must be in [0, 1], got " + format_number(c.tension));
     }
 
-    // kb: per-vertex Kochanek-Bartels values; a missing array means zeros.
+    // kb: per-vertex Kochanek-Bartels values; a missing array means zeros;
+    // --kb-tension and the others replace one array each.
     if (root.contains("kb")) {
         const json& kb = root["kb"];
         if (!kb.is_object())
@@ -517,8 +391,18 @@ curve_spec parse_curve(const document& doc, std::string_view command, std::initi
             else fail("kb", "unknown field '" + key + "' (expected \"tension\", \"continuity\", \"bias\")");
         }
     }
+    if (f) {
+        const std::tuple<const std::string*, const char*, std::vector<double>*> kb_flags[] = {
+            {&f->kb_tension, "--kb-tension", &c.kb_tension},
+            {&f->kb_continuity, "--kb-continuity", &c.kb_continuity},
+            {&f->kb_bias, "--kb-bias", &c.kb_bias}};
+        for (const auto& [text, flag, values] : kb_flags)
+            if (!text->empty()) *values = parse_kb_values(number_list(flag, *text, true), flag, n, c.closed);
+    }
 
-    if (root.contains("strict")) {
+    if (f && f->strict) {
+        c.strict = true;
+    } else if (root.contains("strict")) {
         const json& s = root["strict"];
         if (!s.is_boolean()) fail("strict", "expected true or false, got " + describe(s));
         c.strict = s.get<bool>();
@@ -526,48 +410,86 @@ curve_spec parse_curve(const document& doc, std::string_view command, std::initi
 
     // tangents: [[dx/dt, ...] per point], or {"in": [...], "out": [...]} when
     // incoming and outgoing differ: a cubic Hermite curve with them.
-    if (root.contains("tangents")) parse_tangents(root, c);
+    if (root.contains("tangents")) parse_tangents(root, f, c);
     return c;
 }
 
-// "accuracy": relative accuracy of arc lengths, in (0, 1); default 1e-12.
-double parse_accuracy(const json& root) {
-    if (!root.contains("accuracy")) return 1e-12;
-    const double a = finite_number(root["accuracy"], "accuracy");
-    if (!(a > 0 && a < 1)) fail("accuracy", "expected a relative accuracy in (0, 1), got " + describe(root["accuracy"]));
-    return a;
+namespace {
+
+// "accuracy" / --accuracy: relative accuracy of arc lengths, in (0, 1) and
+// not below what doubles resolve; default 1e-12.
+double parse_accuracy(const document& doc) {
+    const auto a = field(doc.root, "accuracy", doc.flags, &cli_options::accuracy, "--accuracy");
+    if (!a) return 1e-12;
+    const double x = finite_number(a->value, a->name);
+    if (!(x > 0 && x < 1)) fail(a->name, "expected a relative accuracy in (0, 1), got " + describe(a->value));
+    if (x < min_relative_accuracy)
+        fail(a->name, describe(a->value) + " is below what double arithmetic resolves; the smallest meaningful "
+                      "relative accuracy is " + format_number(min_relative_accuracy));
+    return x;
+}
+
+// The name of a flag when the input has no JSON fields (CSV), of the field
+// otherwise, for a message about something missing.
+std::string missing(const document& doc, const char* key) {
+    return doc.has_fields ? "'" + std::string(key) + "'" : "--" + std::string(key);
+}
+
+}  // namespace
+
+std::vector<double> eval_parameters(const document& doc) {
+    if (doc.flags && !doc.flags->t.empty()) return finite_numbers(number_list("--t", doc.flags->t), "--t");
+    if (doc.flags && !doc.flags->s.empty()) return {};
+    if (doc.root.is_object() && doc.root.contains("t")) return finite_numbers(doc.root["t"], "t");
+    return {};
 }
 
 eval_spec parse_eval(const document& doc) {
     const json& root = doc.root;
+    const cli_options* f = doc.flags;
     eval_spec e;
     e.curve = parse_curve(doc, "eval", {"t", "s", "derivatives", "accuracy"});
-    if (root.contains("t") && root.contains("s"))
-        throw input_error("give 't' (parameter values) or 's' (arc lengths), not both");
-    if (root.contains("s")) {
-        e.s = finite_numbers(root["s"], "s");
-        e.accuracy = parse_accuracy(root);
-    } else if (!root.contains("t")) {
-        throw input_error("missing field 't' (the parameter values to evaluate at) or 's' (arc lengths)");
+    const bool flag_t = f && !f->t.empty(), flag_s = f && !f->s.empty();
+    if (flag_t && flag_s) throw input_error("--s: give --t (parameter values) or --s (arc lengths), not both");
+    // A flag replaces both fields: --t 0,1 on a document with "s" evaluates at t.
+    const std::optional<field_value> t = flag_t ? field_value{number_list("--t", f->t), "--t", true}
+                                         : flag_s || !root.contains("t") ? std::optional<field_value>()
+                                                                          : field_value{root["t"], "t", false};
+    const std::optional<field_value> s = flag_s ? field_value{number_list("--s", f->s), "--s", true}
+                                         : flag_t || !root.contains("s") ? std::optional<field_value>()
+                                                                          : field_value{root["s"], "s", false};
+    if (t && s) throw input_error("give 't' (parameter values) or 's' (arc lengths), not both");
+    if (t) e.t_name = t->name;
+    if (s) e.s_name = s->name;
+    if (s) {
+        e.s = finite_numbers(s->value, s->name);
+        e.accuracy = parse_accuracy(doc);
+    } else if (!t) {
+        const bool fields = doc.has_fields;
+        throw input_error(std::string(fields ? "missing field " : "missing option ") + missing(doc, "t") +
+                          " (the parameter values to evaluate at) or " + missing(doc, "s") + " (arc lengths)");
     } else {
-        if (root.contains("accuracy")) fail("accuracy", "only used with 's' (arc lengths)");
-        e.t = finite_numbers(root["t"], "t");
+        if (const auto a = field(root, "accuracy", f, &cli_options::accuracy, "--accuracy"))
+            fail(a->name, std::string("only used with ") + (a->flag ? "--s" : "'s'") + " (arc lengths)");
+        e.t = finite_numbers(t->value, t->name);
     }
-    if (!root.contains("derivatives")) {
+    const auto d_field = field(root, "derivatives", f, &cli_options::derivatives, "--derivatives", true);
+    if (!d_field) {
         e.derivatives = {0};
         return e;
     }
-    const json& d = array(root["derivatives"], "derivatives", "derivative orders");
-    if (d.empty()) fail("derivatives", "expected at least one order (0, 1, 2 or 3), got []");
+    const std::string& name = d_field->name;
+    const json& d = array(d_field->value, name, "derivative orders");
+    if (d.empty()) fail(name, "expected at least one order (0, 1, 2 or 3), got []");
     for (std::size_t i = 0; i < d.size(); ++i) {
-        const std::string at = index("derivatives", i);
+        const std::string at = index(name, i);
         const double x = d[i].is_number() ? d[i].get<double>() : -1.0;
         if (!(x == 0 || x == 1 || x == 2 || x == 3)) fail(at, "expected 0, 1, 2 or 3, got " + describe(d[i]));
         const int order = int(x);
         const auto seen = std::find(e.derivatives.begin(), e.derivatives.end(), order);
         if (seen != e.derivatives.end())
             fail(at, "order " + std::to_string(order) + " is already requested by " +
-                         index("derivatives", std::size_t(seen - e.derivatives.begin())));
+                         index(name, std::size_t(seen - e.derivatives.begin())));
         e.derivatives.push_back(order);
     }
     return e;
@@ -578,38 +500,62 @@ bezier_spec parse_bezier(const document& doc) { return {parse_curve(doc, "bezier
 curve_spec parse_analyze(const document& doc) { return parse_curve(doc, "analyze", {}); }
 
 length_spec parse_length(const document& doc) {
-    const json& root = doc.root;
     length_spec l;
     l.curve = parse_curve(doc, "length", {"accuracy"});
-    l.accuracy = parse_accuracy(root);
+    l.accuracy = parse_accuracy(doc);
     return l;
 }
 
 sample_spec parse_sample(const document& doc) {
     const json& root = doc.root;
+    const cli_options* f = doc.flags;
     sample_spec s;
     s.curve = parse_curve(doc, "sample", {"count", "spacing", "tolerance", "accuracy"});
-    s.accuracy = parse_accuracy(root);
-    const bool by_count = root.contains("count"), by_tolerance = root.contains("tolerance");
-    if (by_count == by_tolerance)
-        throw input_error("give 'count' (number of points) or 'tolerance' (largest distance to the curve), "
-                          "exactly one of them");
-    if (by_count) {
-        const json& c = root["count"];
+    s.accuracy = parse_accuracy(doc);
+    const bool flag_count = f && !f->count.empty(), flag_tolerance = f && !f->tolerance.empty();
+    if (flag_count && flag_tolerance)
+        throw input_error("--tolerance: give --count (number of points) or --tolerance (largest distance to the "
+                          "curve), not both");
+    // A flag replaces the JSON's choice: --count on a document with
+    // "tolerance" samples by count.
+    const auto count = flag_count ? std::optional<field_value>(field_value{scalar(f->count), "--count", true})
+                       : flag_tolerance || !root.contains("count") ? std::nullopt
+                                                                   : std::optional<field_value>(field_value{root["count"], "count", false});
+    const auto tolerance = flag_tolerance ? std::optional<field_value>(field_value{scalar(f->tolerance), "--tolerance", true})
+                           : flag_count || !root.contains("tolerance") ? std::nullopt
+                                                                       : std::optional<field_value>(field_value{root["tolerance"], "tolerance", false});
+    if (bool(count) == bool(tolerance))
+        throw input_error(doc.has_fields ? "give 'count' (number of points) or 'tolerance' (largest distance to the "
+                                           "curve), exactly one of them"
+                                         : "give --count (number of points) or --tolerance (largest distance to the "
+                                           "curve), exactly one of them");
+    const auto spacing = flag_tolerance ? (f->spacing.empty() ? std::nullopt : std::optional<field_value>(field_value{f->spacing, "--spacing", true}))
+                                        : field(root, "spacing", f, &cli_options::spacing, "--spacing");
+    if (count) {
+        const json& c = count->value;
         const double n = c.is_number() ? c.get<double>() : -1.0;
-        if (!(n >= 2 && n <= 1e9 && n == std::floor(n))) fail("count", "expected an integer >= 2, got " + describe(c));
+        if (!(n >= 2 && n <= 1e9 && n == std::floor(n))) fail(count->name, "expected an integer >= 2, got " + describe(c));
         s.count = std::size_t(n);
         s.by = sample_spec::kind::count_t;
-        if (root.contains("spacing")) {
-            const json& sp = root["spacing"];
+        if (spacing) {
+            const json& sp = spacing->value;
             if (sp == "t") s.by = sample_spec::kind::count_t;
             else if (sp == "arc_length") s.by = sample_spec::kind::count_arc_length;
-            else fail("spacing", "expected \"t\" or \"arc_length\", got " + describe(sp));
+            else fail(spacing->name, "expected \"t\" or \"arc_length\", got " + describe(sp));
         }
     } else {
-        if (root.contains("spacing")) fail("spacing", "only used with 'count'");
-        s.tolerance = finite_number(root["tolerance"], "tolerance");
-        if (!(s.tolerance > 0)) fail("tolerance", "expected a distance > 0, got " + describe(root["tolerance"]));
+        if (spacing) fail(spacing->name, std::string("only used with ") + (spacing->flag ? "--count" : "'count'"));
+        s.tolerance = finite_number(tolerance->value, tolerance->name);
+        if (!(s.tolerance > 0)) fail(tolerance->name, "expected a distance > 0, got " + describe(tolerance->value));
+        const double floor = min_distance_tolerance(std::span<const double>(s.curve.coords));
+        if (s.tolerance < floor)
+            fail(tolerance->name, describe(tolerance->value) + " is below what the coordinates resolve (their "
+                                  "largest magnitude is spaced " + format_number(ulp_at([&] {
+                                      double m = 0;
+                                      for (double x : s.curve.coords) m = std::max(m, std::abs(x));
+                                      return m;
+                                  }())) + " apart); the smallest meaningful tolerance for this input is " +
+                                  format_number(floor));
         s.by = sample_spec::kind::tolerance;
     }
     return s;

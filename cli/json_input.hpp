@@ -1,67 +1,30 @@
-// crspline command line: reading the input and turning the JSON contract into
-// a run-time description of the work (dimension known only at run time).
+// crspline command line: the input contract. A curve's JSON fields and the
+// command-line flags become one run-time description of the work (dimension
+// known only at run time); the flags are read directly, not merged into the
+// JSON, so that every message names what the user wrote: the JSON field's
+// path or the flag.
 //
 // Every problem with the input is reported as an input_error whose message
-// names the field, the index and the offending value, e.g.
+// names the field (or flag), the index and the offending value, e.g.
 //   points[3][1]: expected a finite number, got "abc"
+//   --alpha: must be in [0, 1], got 1.5
 // main() prints it as one line, "crspline: <message>", and exits with 2.
+// Reading and parsing the text is json_parser.hpp's and csv_input.hpp's.
 #pragma once
 
 #include <cstddef>
+#include <initializer_list>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include <crspline/error.hpp>
 #include <nlohmann/json.hpp>
 
+#include "json_parser.hpp"
+
 namespace crspline::cli {
-
-/// Bad input or usage: the message is the whole line after "crspline: ".
-class input_error : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
-
-/// The raw text of one input and the name used in messages.
-struct input_text {
-    std::string name;  ///< the file name as given, or "<stdin>"
-    std::string text;
-};
-
-/// Reads the file named on the command line; "-" or "" reads stdin.
-/// Throws input_error "NAME: cannot open: <reason>" and the like.
-input_text read_input(const std::string& path);
-
-/// Points stored flat: point i is coords[i * dimension .. (i + 1) * dimension).
-/// Every coordinate is finite and every point has the same dimension 1..16.
-struct point_set {
-    std::size_t dimension = 0;
-    std::vector<double> coords;
-    std::string name = "points";  ///< what messages call them: "points", or the CSV file's name
-    std::size_t size() const noexcept { return dimension == 0 ? 0 : coords.size() / dimension; }
-};
-
-/// A parsed input: the JSON fields, and the points when they were read flat
-/// (a CSV file, or the JSON "points" array read without building a tree).
-struct document {
-    nlohmann::json root = nlohmann::json::object();
-    std::optional<point_set> points;  ///< when set, root["points"] is ignored
-};
-
-/// Parses JSON text. Syntax errors become "NAME: line L, column C: <what>"
-/// (column counted in bytes, the offending character's own position);
-/// numbers too large for a double become "FIELD: expected a finite number,
-/// got 1e999"; duplicate keys in an object are rejected.
-nlohmann::json parse_json(const input_text& in);
-
-/// Like parse_json, but a well-formed "points" array at the top level (arrays
-/// of 1 to 16 numbers, all the same length) is read into document::points
-/// without building a JSON tree for it: ten million points load in seconds.
-/// Anything else in "points" falls back to the tree, so that validation
-/// reports it exactly as parse_json's tree would.
-document parse_json_document(const input_text& in);
 
 /// One end of an open curve.
 struct end_spec {
@@ -86,7 +49,20 @@ struct curve_spec {
     /// cubic Hermite curve through the points with them (catmull_rom::hermite).
     /// Empty: tangents computed. tangents_in empty: incoming = outgoing.
     std::vector<double> tangents_out, tangents_in;
+    /// Where the points are, for messages about one of them: the file, and
+    /// each point's line (CSV) or the JSON path of their array.
+    std::string file;
+    std::vector<std::size_t> lines;
+    std::string points_path = "points";
 };
+
+/// Where point i (0-based) of the curve is, as a user finds it: "line 7
+/// (point 3)" in a text file, "points[2]" in JSON.
+std::string point_location(const curve_spec& c, std::size_t i);
+
+/// The core's spec_error about the description rendered for the command
+/// line: a point by its file and location, a field by its JSON path or flag.
+std::string describe_spec_error(const crspline::spec_error& e, const curve_spec& c);
 
 /// `crspline eval`: the curve, the parameters (t, or arc lengths s) and the
 /// derivative orders.
@@ -96,6 +72,7 @@ struct eval_spec {
     std::optional<std::vector<double>> s;  ///< arc lengths from the start instead of t
     double accuracy = 1e-12;               ///< relative accuracy of arc lengths
     std::vector<int> derivatives;          ///< distinct, each 0..3, in the order requested
+    std::string t_name = "t", s_name = "s";  ///< what messages call them: the JSON field or the flag
 };
 
 /// `crspline length`: the curve and the relative accuracy.
@@ -140,7 +117,7 @@ bezier_spec parse_bezier(const document& doc);
 curve_spec parse_analyze(const document& doc);
 
 
-/// Shortest text that reads back to the same double (for messages).
-std::string format_number(double x);
+/// The parameter values `crspline eval` evaluates at (--t, else "t").
+std::vector<double> eval_parameters(const document& doc);
 
 }  // namespace crspline::cli

@@ -169,7 +169,6 @@ int main(int argc, char** argv) {
     if (!chosen) return fail("no command given (see 'crspline --help')");
     o.command = std::string(chosen->name);
 
-    std::optional<loaded_input> in;
     try {
         if (chosen->name == "demo") return run_demo(o);
         if (chosen->name == "plot") return run_plot(o);
@@ -181,12 +180,15 @@ int main(int argc, char** argv) {
             formats.emplace_back(chosen->formats.substr(b, e - b));
         }
         const std::string format = output_format(o, formats, "json");
-        in = load_input(o);
-        const output_json out = chosen->run(in->doc);
-        write_output(o.output, convert_output(chosen->name, format, out, in->doc));
+        const loaded_input in = load_input(o);
+        const document& doc = in.curves.front();
+        const output_json out = chosen->run(doc);
+        const std::string bytes = convert_output(chosen->name, format, out, doc);
+        for (const std::string& note : doc.notes) std::cerr << "crspline: note: " << note << '\n';
+        write_output(o.output, bytes);
         return 0;
     } catch (const input_error& e) {
-        return fail(in ? rename_fields(e.what(), *in) : std::string(e.what()));
+        return fail(e.what());
     } catch (const crspline::invalid_input& e) {  // what() names the index and the value
         return fail(e.what());
     } catch (const crspline::out_of_domain& e) {

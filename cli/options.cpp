@@ -27,25 +27,6 @@ std::string extension_of(const std::string& path) {
     return lower;
 }
 
-// A number when the text is one, else the text as a string, so that the
-// contract's validation reports it ("expected a finite number, got "abc"").
-json scalar(const std::string& text) {
-    if (const auto x = parse_number(text)) return *x;
-    if (text == "true") return true;
-    if (text == "false") return false;
-    return text;
-}
-
-// One end: "natural" | "reflect" | a tangent "dx,dy".
-json end_value(const std::string& option, const std::string& text) {
-    if (text == "natural" || text == "reflect") return text;
-    try {
-        return number_list(option, text);
-    } catch (const input_error&) {
-        return text;  // reported by the contract with the expected forms
-    }
-}
-
 }  // namespace
 
 std::vector<double> alpha_values(const cli_options& o) {
@@ -65,9 +46,15 @@ std::vector<double> alpha_values(const cli_options& o) {
     return a;
 }
 
-loaded_input load_input(const cli_options& o, bool alpha_list) {
+loaded_input load_input(const cli_options& o) {
     loaded_input li;
     const input_text in = read_input(o.input);
+    li.name = in.name;
+
+    // 0. Nothing but blanks: the same words for an empty file and an empty
+    //    stdin, whatever the format would have been.
+    if (in.text.find_first_not_of(" \t\r\n") == std::string::npos)
+        throw input_error(in.name + ": the input is empty (a curve needs at least 2 points, got 0)");
 
     // 1. The format: --input-format, the extension, or the first character.
     std::string fmt = o.input_format;
@@ -90,9 +77,8 @@ loaded_input load_input(const cli_options& o, bool alpha_list) {
         if (!o.columns.empty()) throw input_error("--columns: only for CSV input, and " + in.name + " is read as JSON");
         if (!o.delimiter.empty())
             throw input_error("--delimiter: only for CSV input, and " + in.name + " is read as JSON");
-        li.doc = parse_json_document(in);
+        li.curves.push_back(parse_json_document(in));
     } else {
-        li.from_json = false;
         csv_options c;
         if (!o.delimiter.empty()) c.delimiter = parse_delimiter(o.delimiter);
         else if (fmt == "tsv") c.delimiter = '\t';
@@ -110,105 +96,18 @@ loaded_input load_input(const cli_options& o, bool alpha_list) {
                 name.clear();
             }
         }
-        li.doc.points = parse_csv(in, c);
+        document d;
+        d.points = parse_csv(in, c);
+        d.has_fields = false;
+        li.curves.push_back(std::move(d));
     }
 
-    // 3. Options override (or complement) the JSON fields.
-    json& r = li.doc.root;
-    if (!r.is_object()) return li;  // reported by the contract
-    auto set = [&](const std::string& field, const std::string& option, json value) {
-        r[field] = std::move(value);
-        li.option_fields.emplace_back(field, option);
-    };
-    if (!alpha_list) {
-        const int presets = int(o.uniform) + int(o.centripetal) + int(o.chordal) + int(!o.alpha.empty());
-        if (presets > 1)
-            throw input_error("--alpha: give one of --alpha, --uniform, --centripetal, --chordal (several are for "
-                              "'crspline plot')");
-        if (presets == 1) {
-            r.erase("grid");
-            set("alpha", "--alpha", o.uniform ? json(0.0) : o.centripetal ? json(0.5) : o.chordal ? json(1.0) : scalar(o.alpha));
-        }
+    // 3. The flags override the JSON fields: the contract reads them itself.
+    for (document& d : li.curves) {
+        d.flags = &o;
+        d.file = in.name;
     }
-    if (!o.grid.empty()) {
-        if (!o.alpha.empty() || o.uniform || o.centripetal || o.chordal)
-            throw input_error("--grid: give --grid or an alpha (--alpha, --uniform, --centripetal, --chordal), not both");
-        r.erase("alpha");
-        set("grid", "--grid", number_list("--grid", o.grid));
-    }
-    if (o.closed) {
-        if (!o.start.empty() || !o.end.empty())
-            throw input_error("--closed: a closed curve has no end conditions (--start, --end)");
-        set("end", "--closed", "closed");
-    }
-    if (!o.start.empty() || !o.end.empty()) {
-        json e = json::object();
-        if (r.contains("end") && r["end"].is_object()) e = r["end"];
-        else if (r.contains("end") && (r["end"] == "natural" || r["end"] == "reflect")) e = {{"start", r["end"]}, {"end", r["end"]}};
-        if (!o.start.empty()) {
-            e["start"] = end_value("--start", o.start);
-            li.option_fields.emplace_back("end.start", "--start");
-        }
-        if (!o.end.empty()) {
-            e["end"] = end_value("--end", o.end);
-            li.option_fields.emplace_back("end.end", "--end");
-        }
-        r["end"] = std::move(e);
-    }
-    if (!o.tension.empty()) set("tension", "--tension", scalar(o.tension));
-    const std::pair<const std::string*, const char*> kb[] = {
-        {&o.kb_tension, "tension"}, {&o.kb_continuity, "continuity"}, {&o.kb_bias, "bias"}};
-    for (const auto& [text, key] : kb) {
-        if (text->empty()) continue;
-        const std::string option = std::string("--kb-") + key;
-        if (!r.contains("kb") || !r["kb"].is_object()) r["kb"] = json::object();
-        r["kb"][key] = number_list(option, *text, true);
-        li.option_fields.emplace_back(std::string("kb.") + key, option);
-    }
-    if (o.strict) set("strict", "--strict", true);
-    if (!o.t.empty()) {
-        r.erase("s");
-        set("t", "--t", number_list("--t", o.t));
-    }
-    if (!o.s.empty()) {
-        r.erase("t");
-        set("s", "--s", number_list("--s", o.s));
-    }
-    if (!o.derivatives.empty()) set("derivatives", "--derivatives", number_list("--derivatives", o.derivatives));
-    if (!o.accuracy.empty()) set("accuracy", "--accuracy", scalar(o.accuracy));
-    if (!o.count.empty()) {
-        r.erase("tolerance");
-        set("count", "--count", scalar(o.count));
-    }
-    if (!o.tolerance.empty()) {
-        r.erase("count");
-        r.erase("spacing");
-        set("tolerance", "--tolerance", scalar(o.tolerance));
-    }
-    if (!o.spacing.empty()) set("spacing", "--spacing", o.spacing);
     return li;
-}
-
-std::string rename_fields(const std::string& message, const loaded_input& in) {
-    for (const auto& [field, option] : in.option_fields) {
-        if (message.rfind(field, 0) == 0 && message.size() > field.size() &&
-            (message[field.size()] == ':' || message[field.size()] == '['))
-            return option + message.substr(field.size());
-    }
-    if (!in.from_json && message.rfind("missing field '", 0) == 0) {
-        // CSV input has no fields besides the points: name the options.
-        std::string m = message;
-        for (std::size_t p; (p = m.find("field '")) != std::string::npos;) {
-            const std::size_t q = m.find('\'', p + 7);
-            m = m.substr(0, p) + "option --" + m.substr(p + 7, q - p - 7) + m.substr(q + 1);
-        }
-        for (std::size_t p; (p = m.find(" or '")) != std::string::npos;) {
-            const std::size_t q = m.find('\'', p + 5);
-            m = m.substr(0, p) + " or --" + m.substr(p + 5, q - p - 5) + m.substr(q + 1);
-        }
-        return m;
-    }
-    return message;
 }
 
 std::string output_format(const cli_options& o, const std::vector<std::string>& allowed, const std::string& fallback) {

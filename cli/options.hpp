@@ -1,10 +1,10 @@
 // crspline command line: the options every subcommand shares, how the input
 // is loaded (JSON, CSV/TSV, stdin), and how options override the JSON fields.
 //
-// Options become JSON fields of the input document (--alpha 0.5 is
-// "alpha": 0.5, --start reflect is "end": {"start": "reflect", ...}) and go
-// through the contract's one validation; a message about such a field names
-// the option instead ("--alpha: must be in [0, 1], got 1.5").
+// The flags are not merged into the JSON: each curve's document points to
+// them, and the input contract (json_input.hpp) reads a flag where it reads
+// the field it overrides, so that its messages name the flag
+// ("--alpha: must be in [0, 1], got 1.5").
 #pragma once
 
 #include <string>
@@ -38,24 +38,20 @@ struct cli_options {
     bool cusps = false, intersections = false, volumes = false, handles = false, all_overlays = false;
 };
 
-/// A loaded input with the options merged in, and the fields the options set
-/// (field, option) for renaming messages.
+/// The curves of an input, one document each, with the flags attached.
 struct loaded_input {
-    document doc;
-    bool from_json = true;
-    std::vector<std::pair<std::string, std::string>> option_fields;
+    std::string name;               ///< the input's name in messages
+    std::vector<document> curves;   ///< at least one
+    bool many = false;              ///< a many-curve input: one result per curve, in order
 };
 
-/// Reads and parses the input named by the options, then merges the curve
-/// and subcommand options into it. `alpha_list` (plot) leaves alpha out.
-loaded_input load_input(const cli_options& o, bool alpha_list = false);
+/// Reads and parses the input named by the options: its curves, each
+/// pointing to the flags that override its fields.
+loaded_input load_input(const cli_options& o);
 
 /// The alpha values asked for with --alpha LIST and the presets, in order
 /// (plot draws one curve per value); empty when none was given.
 std::vector<double> alpha_values(const cli_options& o);
-
-/// A message about a field the options set, rewritten to name the option.
-std::string rename_fields(const std::string& message, const loaded_input& in);
 
 /// The output format: --format, else the extension of -o, else `fallback`.
 /// Throws input_error when it is not one of `allowed`.

@@ -70,7 +70,7 @@ std::string to_table(std::string_view command, char sep, const output_json& out,
     if (command == "eval") {
         const bool by_s = out.contains("t_of_s");
         const output_json& values = out["values"];
-        const output_json& params = by_s ? out["t_of_s"] : output_json(input.root["t"]);
+        const output_json& params = by_s ? out["t_of_s"] : output_json(eval_parameters(input));
         std::vector<std::string> orders;
         std::size_t dim = 0;
         for (const auto& [order, pts] : values.items()) {

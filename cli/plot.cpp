@@ -133,7 +133,7 @@ figure_curve make_figure_curve(const curve_spec& spec, const overlay_options& ov
 
 int run_plot(const cli_options& o) {
     const std::string format = output_format(o, {"svg", "png"}, "svg");
-    const loaded_input in = load_input(o, true);
+    const loaded_input in = load_input(o);
     figure f;
     if (!o.size.empty()) {
         int w = 0, h = 0;
@@ -159,16 +159,10 @@ int run_plot(const cli_options& o) {
     if (!o.comb.empty()) ov.comb_scale = positive("--comb-scale", o.comb);
     if (!o.ticks.empty()) ov.tick_step = positive("--tick-step", o.ticks);
 
-    std::vector<double> alphas;
-    curve_spec spec;
-    try {
-        alphas = alpha_values(o);
-        if (!alphas.empty() && !o.grid.empty())
-            throw input_error("--grid: give --grid or an alpha (--alpha, --uniform, --centripetal, --chordal), not both");
-        spec = parse_analyze(in.doc);
-    } catch (const input_error& e) {
-        throw input_error(rename_fields(e.what(), in));
-    }
+    std::vector<double> alphas = alpha_values(o);
+    if (!alphas.empty() && !o.grid.empty())
+        throw input_error("--grid: give --grid or an alpha (--alpha, --uniform, --centripetal, --chordal), not both");
+    const curve_spec spec = parse_analyze(in.curves.front());
     if (spec.dimension != 2)
         throw input_error("plot: needs 2-D points, got " + std::to_string(spec.dimension) + "-D (choose two with --columns)");
     for (std::size_t i = 0; i < spec.point_count(); ++i) f.points.push_back({spec.coords[2 * i], spec.coords[2 * i + 1]});

@@ -15,6 +15,7 @@
 #include "parameterization.hpp"
 #include "point_traits.hpp"
 #include "report.hpp"
+#include "resolution.hpp"
 #include "segment.hpp"
 #include "spec.hpp"
 #include "tessellate.hpp"

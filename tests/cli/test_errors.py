@@ -70,7 +70,8 @@ CASES = [
     ("duplicate key", "bezier", '{"points": [[0], [1]], "alpha": 0, "alpha": 1}', "<stdin>: duplicate field 'alpha'"),
     ("strict with coincident points", "bezier",
      '{"points": [[0, 0], [1, 1], [1, 1], [2, 0]], "alpha": 0.5, "strict": true}',
-     "coincident consecutive points (strict mode): 1 and 2"),
+     "<stdin>: points[2]: coincides with the point before it, points[1] (--strict rejects coincident consecutive "
+     "points; without it they are allowed)"),
     ("strict not a bool", "bezier", doc(strict="yes"), 'strict: expected true or false, got "yes"'),
     ("kb array of wrong length", "bezier", doc(kb={"tension": [0, 0.5, 0.5]}),
      "kb.tension: expected 4 values (one per point), got 3"),
@@ -83,8 +84,8 @@ CASES = [
     ("overflow", "eval", '{"points": [[1e308], [-1e308]], "alpha": 0, "t": [0.5]}',
      'values["0"][0][0]: the result is not finite (the input\'s coordinates or knot intervals are too extreme '
      "for double arithmetic)"),
-    ("empty input", "eval", "", "<stdin>: line 1, column 1: syntax error while parsing value - unexpected end of "
-                                "input; expected '[', '{', or a literal"),
+    # The same words as an empty file (test_input_errors.py: test_empty_inputs_agree).
+    ("empty input", "eval", "", "<stdin>: the input is empty (a curve needs at least 2 points, got 0)"),
     ("NaN literal", "eval", '{"points": [[0], [NaN]]}',
      "<stdin>: line 1, column 19: syntax error while parsing value - invalid literal; last read: '0], [N'"),
 ]
