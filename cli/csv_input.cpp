@@ -72,6 +72,65 @@ std::string where(const input_text& in, std::size_t line, std::size_t column) {
     return in.name + ": line " + std::to_string(line) + ", column " + std::to_string(column) + ": ";
 }
 
+
+// A name a coordinate column goes by: x, y, z, w (with a suffix like x1 or
+// x_m), longitude, latitude and the like.
+bool coordinate_name(std::string name) {
+    for (char& ch : name) ch = char(ch >= 'A' && ch <= 'Z' ? ch - 'A' + 'a' : ch);
+    static const char* const known[] = {"lon", "lng", "long", "longitude", "lat", "latitude", "alt", "altitude",
+                                        "elevation", "ele", "height", "depth", "easting", "northing"};
+    for (const char* k : known)
+        if (name == k) return true;
+    return !name.empty() && std::strchr("xyzw", name[0]) &&
+           (name.size() == 1 || (name[1] >= '0' && name[1] <= '9') || name[1] == '_' || name[1] == ' ');
+}
+
+// More than two columns read as coordinates by default: a pandas-style
+// ",x,y" file (an index column) or a "t,x,y" track would silently become a
+// 3-D curve with a wrong length. A first column that is unnamed, named like
+// an index, a time or a parameter, or that counts 0, 1, 2, ... (or from 1)
+// is an error asking for --columns; other columns that are not named like
+// coordinates are read, and a note on stderr names them.
+void check_columns(const input_text& in, point_set& out, const std::vector<std::string>& header,
+                   std::size_t first_line) {
+    const std::size_t d = out.dimension, n = out.size();
+    std::string names;
+    for (std::size_t k = 0; k < d; ++k)
+        names += (k ? ", " : "") + (header.empty() ? "column " + std::to_string(k + 1)
+                                                   : header[k].empty() ? std::string("(unnamed)") : header[k]);
+    std::string first = header.empty() ? std::string() : header[0];
+    for (char& ch : first) ch = char(ch >= 'A' && ch <= 'Z' ? ch - 'A' + 'a' : ch);
+    static const char* const not_coordinates[] = {"", "index", "idx", "id", "i", "n", "no", "row", "t", "time",
+                                                  "date", "datetime", "timestamp", "year", "s", "u", "frame",
+                                                  "unnamed: 0", "step"};
+    bool counts = n >= 3;
+    for (std::size_t i = 0; i < n && counts; ++i)
+        counts = out.coords[i * d] == out.coords[0] + double(i) && (out.coords[0] == 0 || out.coords[0] == 1);
+    const bool named_like_index =
+        !header.empty() && std::any_of(std::begin(not_coordinates), std::end(not_coordinates),
+                                       [&](const char* k) { return first == k; });
+    if (named_like_index || counts) {
+        const std::string why = named_like_index
+                                    ? (header[0].empty() ? "the first column has no name (an index column?)"
+                                                         : "the first column, '" + header[0] +
+                                                               "', looks like an index or a parameter, not a coordinate")
+                                    : "the first column counts " + format_number(out.coords[0]) + ", " +
+                                          format_number(out.coords[0] + 1) + ", " + format_number(out.coords[0] + 2) +
+                                          ", ... like an index";
+        const std::string example = header.size() >= 3 && !header[1].empty() && !header[2].empty()
+                                        ? header[1] + "," + header[2]
+                                        : "2,3";
+        throw input_error(in.name + ": line " + std::to_string(first_line) + ": " + std::to_string(d) +
+                          " numeric columns (" + names + ") would make a " + std::to_string(d) + "-D curve, but " +
+                          why + "; choose the coordinates with --columns (e.g. --columns " + example + ")");
+    }
+    const bool all_coordinates =
+        !header.empty() && std::all_of(header.begin(), header.end(), [](const std::string& h) { return coordinate_name(h); });
+    if (!all_coordinates)
+        out.notes.push_back(in.name + ": " + std::to_string(d) + " columns read as a " + std::to_string(d) +
+                            "-D curve (" + names + "); choose others with --columns");
+}
+
 }  // namespace
 
 std::optional<double> parse_number(std::string_view s) {
@@ -106,6 +165,7 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
     std::optional<char> delimiter = opt.delimiter;
     std::vector<std::size_t> chosen;  // indices of the columns to read
     std::size_t nfields = 0, first_line = 0, line_no = 0;
+    std::vector<std::string> header_names;  // empty: no header
     for (std::size_t pos = 0; pos < text.size();) {
         const std::size_t nl = text.find('\n', pos);
         const std::size_t end = nl == std::string_view::npos ? text.size() : nl;
@@ -168,7 +228,10 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
                 }
             }
             out.dimension = chosen.size();
-            if (header) continue;
+            if (header) {
+                for (const field& f : fields) header_names.emplace_back(unquote(f.text));
+                continue;
+            }
         } else {
             split(line, *delimiter, fields);
         }
@@ -187,6 +250,7 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
         }
         out.lines.push_back(line_no);
     }
+    if (opt.columns.empty() && nfields > 2 && out.size() > 0) check_columns(in, out, header_names, first_line);
     return out;
 }
 

@@ -46,6 +46,7 @@ struct point_set {
     /// (CSV), or empty when points are named by `path` and their index.
     std::vector<std::size_t> lines;
     std::string path = "points";  ///< JSON path of the points' array ("features[2].geometry.coordinates[0]")
+    std::vector<std::string> notes;  ///< what reading them noticed, for stderr (the columns a CSV file gave)
     std::size_t size() const noexcept { return dimension == 0 ? 0 : coords.size() / dimension; }
 };
 

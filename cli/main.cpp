@@ -20,9 +20,12 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <string_view>
 #include <crspline/crspline.hpp>
 
 #include "commands.hpp"
+#include "csv_input.hpp"
 #include "json_input.hpp"
 #include "options.hpp"
 #include "plot.hpp"
@@ -65,6 +68,77 @@ int fail(const std::string& message) {
 }
 
 using namespace crspline::cli;
+
+// --- the command line before CLI11 reads it ---------------------------------------
+
+// Edit distance (insertions, deletions, substitutions, adjacent swaps).
+std::size_t distance(std::string_view a, std::string_view b) {
+    std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+    for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i)
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+    return d[a.size()][b.size()];
+}
+
+// The nearest name within a third of the word's length (at least 1, at
+// most 3 edits), or "" when none is that near.
+std::string nearest(std::string_view word, const std::vector<std::string>& names) {
+    std::string best;
+    std::size_t best_d = std::min<std::size_t>(3, std::max<std::size_t>(1, word.size() / 3)) + 1;
+    for (const std::string& n : names)
+        if (const std::size_t k = distance(word, n); k < best_d) best_d = k, best = n;
+    return best;
+}
+
+// Checks the subcommand and the long options before CLI11 parses them, so
+// that a typo is named as one with the nearest correct word ("crspline
+// lenght", "--aplha"), not reported as a missing subcommand or a stray
+// input file. Rewrites plot's "--comb 5" and "--ticks 0.5" (an optional
+// value that is a number) to --comb-scale / --tick-step, so that the value
+// is neither taken for the input file nor the input file for the value.
+// Returns the arguments to parse, or throws input_error.
+std::vector<std::string> preflight(int argc, char** argv, const CLI::App& app) {
+    std::vector<std::string> args(argv, argv + argc);
+    std::size_t at = 1;
+    while (at < args.size() && args[at].size() > 1 && args[at][0] == '-') ++at;  // --help, --version
+    if (at >= args.size()) return args;
+    std::vector<std::string> names;
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
+    const std::string& word = args[at];
+    if (std::find(names.begin(), names.end(), word) == names.end()) {
+        std::string list;
+        for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+        const std::string near = nearest(word, names);
+        throw input_error("unknown command '" + word + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+                          "; the commands are " + list + " (see 'crspline --help')");
+    }
+    const CLI::App* sub = app.get_subcommand(word);
+    std::vector<std::string> options = {"--help"};
+    for (const CLI::Option* opt : sub->get_options())
+        for (const std::string& l : opt->get_lnames()) options.push_back("--" + l);
+    for (std::size_t i = at + 1; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (a == "--") break;
+        if (a.rfind("--", 0) != 0) continue;
+        const std::string name = a.substr(0, a.find('='));
+        if (std::find(options.begin(), options.end(), name) == options.end()) {
+            const std::string near = nearest(name, options);
+            throw input_error("unknown option " + name + " for 'crspline " + word + "'" +
+                              (near.empty() ? "" : " (did you mean " + near + "?)") + "; see 'crspline " + word +
+                              " --help'");
+        }
+        if (word == "plot" && (a == "--comb" || a == "--ticks") && i + 1 < args.size() &&
+            crspline::cli::parse_number(args[i + 1])) {
+            args[i] = (a == "--comb" ? "--comb-scale=" : "--tick-step=") + args[i + 1];
+            args.erase(args.begin() + std::ptrdiff_t(i) + 1);
+        }
+    }
+    return args;
+}
 
 // The options of one subcommand, in groups for its --help.
 void add_options(CLI::App* sub, std::string_view name, cli_options& o) {
@@ -157,7 +231,15 @@ int main(int argc, char** argv) {
     }
 
     try {
-        app.parse(argc, argv);
+        std::vector<std::string> args;
+        try {
+            args = preflight(argc, argv, app);
+        } catch (const input_error& e) {
+            return fail(e.what());
+        }
+        std::vector<char*> argp;
+        for (std::string& a : args) argp.push_back(a.data());
+        app.parse(int(argp.size()), argp.data());
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version: printed to stdout
         return fail(std::string(e.what()) + " (see 'crspline --help')");

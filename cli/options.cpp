@@ -99,6 +99,7 @@ loaded_input load_input(const cli_options& o) {
         document d;
         d.points = parse_csv(in, c);
         d.has_fields = false;
+        d.notes = std::move(d.points->notes);
         li.curves.push_back(std::move(d));
     }
 

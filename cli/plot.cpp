@@ -3,6 +3,7 @@
 // volumes, a curvature comb, Bézier handles, arc-length ticks).
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -188,6 +189,7 @@ int run_plot(const cli_options& o) {
     const std::string png_bytes = o.png.empty() ? std::string() : render_figure(f, "png");
     write_output(o.output, main_bytes);
     if (!o.png.empty()) write_output(o.png, png_bytes);
+    for (const std::string& note : in.curves.front().notes) std::cerr << "crspline: note: " << note << '\n';
     return 0;
 }
 

@@ -152,7 +152,7 @@ def test_usage_errors():
     for args, line in [
         ([], "A subcommand is required (see 'crspline --help')"),
         (["eval", "a.json", "b.json"], "The following argument was not expected: b.json (see 'crspline --help')"),
-        (["bezier", "--frobnicate"], "The following argument was not expected: --frobnicate (see 'crspline --help')"),
+        (["bezier", "--frobnicate"], "unknown option --frobnicate for 'crspline bezier'; see 'crspline bezier --help'"),
     ]:
         check_error(run(args), line)
 
