@@ -34,11 +34,13 @@ namespace {
     "                                 not with \"tension\", \"kb\", \"strict\" or end conditions\n"
 
 #define CRSPLINE_CLI_CSV_AND_ERRORS                                                                 \
-    "Points from CSV: one point per line, 1 to 16 numbers; blank lines and '#' lines skipped; a\n"   \
-    "first line without numbers is a header; delimiter , ; tab or blanks (detected, or\n"          \
-    "--delimiter); --columns x,y (header names) or --columns 2,3 (numbered from 1) chooses\n"     \
-    "columns. The format comes from --input-format, else the extension (.json, .csv, .tsv),\n"   \
-    "else the first character ('{' is JSON).\n"                                                   \
+    "Points from CSV: one point per line, 1 to 16 numbers; '#' lines skipped; a first line\n"       \
+    "without numbers is a header; delimiter , ; tab or blanks (detected, or --delimiter);\n"      \
+    "--columns x,y (header names) or --columns 2,3 (numbered from 1) chooses columns. The\n"      \
+    "format comes from --input-format, else the extension (.json, .geojson, .csv, .tsv, .svg),\n" \
+    "else the first character ('{' or '[' is JSON, '<' or 'M' SVG).\n"                             \
+    "Many curves: a JSON list of curve objects, GeoJSON, SVG path data, CSV with blank lines\n"  \
+    "between curves or --curve-column; one result per curve: [{\"id\", \"properties\", \"result\"}].\n" \
     "\n"                                                                                           \
     "Output: stdout, or -o FILE (written whole or not at all); the format from --format, else\n"  \
     "the extension of FILE.\n"                                                                    \

@@ -166,6 +166,9 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
     std::vector<std::size_t> chosen;  // indices of the columns to read
     std::size_t nfields = 0, first_line = 0, line_no = 0;
     std::vector<std::string> header_names;  // empty: no header
+    std::optional<std::size_t> id_column;  // the curve-id column's index
+    bool blank_after_points = false;
+    std::vector<std::string> seen_ids;
     for (std::size_t pos = 0; pos < text.size();) {
         const std::size_t nl = text.find('\n', pos);
         const std::size_t end = nl == std::string_view::npos ? text.size() : nl;
@@ -175,7 +178,11 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
         // Blank lines and comments.
         std::size_t lead = 0;
         while (lead < line.size() && (is_blank(line[lead]) || line[lead] == '\r')) ++lead;
-        if (lead == line.size() || line[lead] == '#') continue;
+        if (lead == line.size()) {
+            blank_after_points = !out.lines.empty();  // a blank line between points separates curves
+            continue;
+        }
+        if (line[lead] == '#') continue;
 
         if (first_line == 0) {
             // The first line fixes the delimiter, the field count, the header
@@ -192,7 +199,32 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
             nfields = fields.size();
             const bool header = std::none_of(fields.begin(), fields.end(),
                                              [](const field& f) { return parse_number(f.text).has_value(); });
-            if (opt.columns.empty()) {
+            if (!opt.curve_column.empty()) {
+                const std::string& c = opt.curve_column;
+                const bool numeric = std::all_of(c.begin(), c.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
+                if (numeric) {
+                    const std::size_t k = std::size_t(std::strtoull(c.c_str(), nullptr, 10));
+                    if (k < 1 || k > nfields)
+                        throw input_error("--curve-column: column " + c + " does not exist: line " +
+                                          std::to_string(line_no) + " of " + in.name + " has " +
+                                          std::to_string(nfields) + " fields (columns are numbered from 1)");
+                    id_column = k - 1;
+                } else {
+                    const auto it = std::find_if(fields.begin(), fields.end(),
+                                                 [&](const field& f) { return unquote(f.text) == c; });
+                    if (!header || it == fields.end())
+                        throw input_error("--curve-column: no column named '" + c + "' in the header of " + in.name);
+                    id_column = std::size_t(it - fields.begin());
+                }
+            }
+            if (opt.columns.empty() && id_column) {
+                for (std::size_t k = 0; k < nfields; ++k)
+                    if (k != *id_column) chosen.push_back(k);
+                if (chosen.size() > max_runtime_dimension)
+                    throw input_error(where(in, line_no, 1) + "expected 1 to " + std::to_string(max_runtime_dimension) +
+                                      " coordinate columns, got " + std::to_string(chosen.size()) +
+                                      " (choose some with --columns)");
+            } else if (opt.columns.empty()) {
                 if (nfields > max_runtime_dimension)
                     throw input_error(where(in, line_no, fields[max_runtime_dimension].begin + 1) +
                                       "expected 1 to " + std::to_string(max_runtime_dimension) + " columns, got " +
@@ -241,6 +273,23 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
                               (nfields == 1 ? "" : "s") + " like line " + std::to_string(first_line) + ", got " +
                               std::to_string(fields.size()));
         }
+        // Curves: a change of the id column's value, or a blank line
+        // between points.
+        if (id_column) {
+            const std::string id(unquote(fields[*id_column].text));
+            if (out.curve_ids.empty() || id != out.curve_ids.back()) {
+                if (std::find(seen_ids.begin(), seen_ids.end(), id) != seen_ids.end())
+                    throw input_error(where(in, line_no, fields[*id_column].begin + 1) + "curve '" + id +
+                                      "' again after other curves (the rows of a curve must be consecutive)");
+                seen_ids.push_back(id);
+                out.curve_starts.push_back(out.size());
+                out.curve_ids.push_back(id);
+            }
+        } else if (out.lines.empty() || blank_after_points) {
+            out.curve_starts.push_back(out.size());
+            out.curve_ids.emplace_back();
+        }
+        blank_after_points = false;
         for (const std::size_t k : chosen) {
             const auto x = parse_number(fields[k].text);
             if (!x || !std::isfinite(*x))
@@ -250,7 +299,7 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
         }
         out.lines.push_back(line_no);
     }
-    if (opt.columns.empty() && nfields > 2 && out.size() > 0) check_columns(in, out, header_names, first_line);
+    if (opt.columns.empty() && !id_column && nfields > 2 && out.size() > 0) check_columns(in, out, header_names, first_line);
     return out;
 }
 

@@ -23,6 +23,7 @@ namespace crspline::cli {
 struct csv_options {
     std::optional<char> delimiter;     ///< nullopt: detect; ' ' means runs of blanks
     std::vector<std::string> columns;  ///< names or 1-based indices; empty: every column
+    std::string curve_column;          ///< name or 1-based index of a curve-id column; empty: none
 };
 
 /// The points of a CSV text (validated: finite, 1 to 16 coordinates each).

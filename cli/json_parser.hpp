@@ -47,6 +47,10 @@ struct point_set {
     std::vector<std::size_t> lines;
     std::string path = "points";  ///< JSON path of the points' array ("features[2].geometry.coordinates[0]")
     std::vector<std::string> notes;  ///< what reading them noticed, for stderr (the columns a CSV file gave)
+    /// Several curves in one text (CSV blocks or a curve-id column): the
+    /// first point of each, and its id. Empty: one curve.
+    std::vector<std::size_t> curve_starts;
+    std::vector<std::string> curve_ids;
     std::size_t size() const noexcept { return dimension == 0 ? 0 : coords.size() / dimension; }
 };
 

@@ -140,6 +140,73 @@ std::vector<std::string> preflight(int argc, char** argv, const CLI::App& app) {
     return args;
 }
 
+// --- many curves ------------------------------------------------------------------------
+
+// A CSV field: quoted when it holds the separator, a quote or a line break.
+std::string csv_field(const std::string& s, char sep) {
+    if (s.find_first_of(std::string(1, sep) + "\"\r\n") == std::string::npos) return s;
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+}
+
+// Runs the command on every curve of a many-curve input, in input order,
+// and joins the results (docs/cli.md, "MANY CURVES"): JSON, a list of
+// {"id", "properties", "result"}; CSV/TSV, one table with the curve's id in
+// a first column "curve"; svg-path, one line of path data per curve. Every
+// error names the input and the curve; nothing is written unless all
+// curves succeed.
+std::string run_many(const command& cmd, const std::string& format, const loaded_input& in) {
+    if (format == "svg")
+        throw input_error("--format svg: one curve per figure, and " + in.name + " holds " +
+                          std::to_string(in.curves.size()) + " curves (use json, csv or svg-path)");
+    const char sep = format == "tsv" ? '\t' : ',';
+    std::string text;
+    output_json list = output_json::array();
+    std::vector<std::string> notes;
+    for (std::size_t i = 0; i < in.curves.size(); ++i) {
+        const document& doc = in.curves[i];
+        const std::string where = in.name + ": curve " + doc.id + ": ";
+        try {
+            const output_json out = cmd.run(doc);
+            for (const std::string& note : doc.notes) notes.push_back(where + note);
+            if (format == "json") {
+                output_json item;
+                item["id"] = doc.id;
+                if (!doc.properties.is_null()) item["properties"] = doc.properties;
+                item["result"] = out;
+                list.push_back(std::move(item));
+                continue;
+            }
+            const std::string one = convert_output(cmd.name, format, out, doc);
+            if (format == "svg-path") {
+                text += one;
+                continue;
+            }
+            // CSV/TSV: the header once, each row after the curve's id.
+            std::size_t pos = 0, row = 0;
+            while (pos < one.size()) {
+                const std::size_t nl = one.find('\n', pos);
+                const std::string line = one.substr(pos, nl - pos);
+                pos = nl == std::string::npos ? one.size() : nl + 1;
+                if (row++ == 0) {
+                    if (i == 0) text += "curve" + std::string(1, sep) + line + "\n";
+                    continue;
+                }
+                text += csv_field(doc.id, sep) + sep + line + "\n";
+            }
+        } catch (const input_error& e) {
+            throw input_error(where + e.what());
+        } catch (const crspline::invalid_input& e) {
+            throw input_error(where + e.what());
+        } catch (const crspline::out_of_domain& e) {
+            throw input_error(where + e.what());
+        }
+    }
+    for (const std::string& note : notes) std::cerr << "crspline: note: " << note << '\n';
+    return format == "json" ? render(list) : text;
+}
+
 // The options of one subcommand, in groups for its --help.
 void add_options(CLI::App* sub, std::string_view name, cli_options& o) {
     if (name == "demo") {
@@ -148,9 +215,12 @@ void add_options(CLI::App* sub, std::string_view name, cli_options& o) {
     }
     sub->add_option("input", o.input, "Input file (JSON, CSV or TSV); '-' or absent reads stdin");
     const std::string in = "Input", out = "Output", curve = "Curve", work = "What to compute", fig = "Figure";
-    sub->add_option("--input-format", o.input_format, "json, csv or tsv (default: by extension, else by content)")->group(in);
+    sub->add_option("--input-format", o.input_format, "json, csv, tsv or svg (default: by extension, else by content)")->group(in);
     sub->add_option("--columns", o.columns, "CSV columns to read: names (x,y) or numbers from 1 (2,3)")->group(in);
     sub->add_option("--delimiter", o.delimiter, "CSV delimiter: , ; | : tab space (default: detected)")->group(in);
+    sub->add_option("--curve-column", o.curve_column,
+                    "CSV column naming the curve of each row (many curves per file): a name or a number from 1")
+        ->group(in);
     sub->add_option("-o,--output", o.output, "Output file (default: stdout); written whole or not at all")->group(out);
     std::string formats;
     for (const command& c : commands())
@@ -263,11 +333,15 @@ int main(int argc, char** argv) {
         }
         const std::string format = output_format(o, formats, "json");
         const loaded_input in = load_input(o);
-        const document& doc = in.curves.front();
-        const output_json out = chosen->run(doc);
-        const std::string bytes = convert_output(chosen->name, format, out, doc);
-        for (const std::string& note : doc.notes) std::cerr << "crspline: note: " << note << '\n';
-        write_output(o.output, bytes);
+        if (!in.many) {
+            const document& doc = in.curves.front();
+            const output_json out = chosen->run(doc);
+            const std::string bytes = convert_output(chosen->name, format, out, doc);
+            for (const std::string& note : doc.notes) std::cerr << "crspline: note: " << note << '\n';
+            write_output(o.output, bytes);
+            return 0;
+        }
+        write_output(o.output, run_many(*chosen, format, in));
         return 0;
     } catch (const input_error& e) {
         return fail(e.what());

@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "collection_input.hpp"
 #include "csv_input.hpp"
 
 namespace crspline::cli {
@@ -60,24 +61,37 @@ loaded_input load_input(const cli_options& o) {
     std::string fmt = o.input_format;
     if (fmt.empty()) {
         const std::string ext = o.input == "-" ? "" : extension_of(o.input);
-        if (ext == ".json") fmt = "json";
+        if (ext == ".json" || ext == ".geojson") fmt = "json";
+        else if (ext == ".svg") fmt = "svg";
         else if (ext == ".csv" || ext == ".txt" || ext == ".dat") fmt = "csv";
         else if (ext == ".tsv" || ext == ".tab") fmt = "tsv";
         else {
             const std::size_t first = in.text.find_first_not_of(" \t\r\n");
             const bool json_like = first == std::string::npos || in.text[first] == '{' || in.text[first] == '[';
-            fmt = json_like ? "json" : "csv";
+            fmt = json_like ? "json" : looks_like_svg(in.text) ? "svg" : "csv";
         }
-    } else if (fmt != "json" && fmt != "csv" && fmt != "tsv") {
-        throw input_error("--input-format: expected json, csv or tsv, got '" + fmt + "'");
+    } else if (fmt != "json" && fmt != "csv" && fmt != "tsv" && fmt != "svg") {
+        throw input_error("--input-format: expected json, csv, tsv or svg, got '" + fmt + "'");
     }
+    if (!o.curve_column.empty() && fmt != "csv" && fmt != "tsv")
+        throw input_error("--curve-column: only for CSV input, and " + in.name + " is read as " + fmt);
 
     // 2. Parse.
     if (fmt == "json") {
         if (!o.columns.empty()) throw input_error("--columns: only for CSV input, and " + in.name + " is read as JSON");
         if (!o.delimiter.empty())
             throw input_error("--delimiter: only for CSV input, and " + in.name + " is read as JSON");
-        li.curves.push_back(parse_json_document(in));
+        document parsed = parse_json_document(in);
+        if (auto many = json_curves(parsed, in)) {
+            li.curves = std::move(*many);
+            li.many = true;
+        } else {
+            li.curves.push_back(std::move(parsed));
+        }
+    } else if (fmt == "svg") {
+        if (!o.columns.empty()) throw input_error("--columns: only for CSV input, and " + in.name + " is read as SVG");
+        li.curves = svg_curves(in);
+        li.many = true;
     } else {
         csv_options c;
         if (!o.delimiter.empty()) c.delimiter = parse_delimiter(o.delimiter);
@@ -96,17 +110,44 @@ loaded_input load_input(const cli_options& o) {
                 name.clear();
             }
         }
-        document d;
-        d.points = parse_csv(in, c);
-        d.has_fields = false;
-        d.notes = std::move(d.points->notes);
-        li.curves.push_back(std::move(d));
+        c.curve_column = o.curve_column;
+        point_set all = parse_csv(in, c);
+        std::vector<std::string> notes = std::move(all.notes);
+        if (all.curve_starts.size() <= 1 && o.curve_column.empty()) {
+            document d;
+            d.points = std::move(all);
+            d.has_fields = false;
+            d.notes = std::move(notes);
+            li.curves.push_back(std::move(d));
+        } else {
+            // One curve per block of lines (blank-line separated) or per
+            // value of the curve-id column, in the order they come.
+            li.many = true;
+            const std::size_t dim = all.dimension;
+            for (std::size_t k = 0; k < all.curve_starts.size(); ++k) {
+                const std::size_t b = all.curve_starts[k];
+                const std::size_t e = k + 1 < all.curve_starts.size() ? all.curve_starts[k + 1] : all.size();
+                document d;
+                point_set p;
+                p.dimension = dim;
+                p.coords.assign(all.coords.begin() + std::ptrdiff_t(b * dim), all.coords.begin() + std::ptrdiff_t(e * dim));
+                p.lines.assign(all.lines.begin() + std::ptrdiff_t(b), all.lines.begin() + std::ptrdiff_t(e));
+                d.id = !all.curve_ids[k].empty() ? all.curve_ids[k]
+                                                 : "block " + std::to_string(k + 1) + " (line " +
+                                                       std::to_string(all.lines[b]) + ")";
+                p.name = "points";
+                d.points = std::move(p);
+                d.has_fields = false;
+                li.curves.push_back(std::move(d));
+            }
+            if (!li.curves.empty()) li.curves.front().notes = std::move(notes);
+        }
     }
 
     // 3. The flags override the JSON fields: the contract reads them itself.
     for (document& d : li.curves) {
         d.flags = &o;
-        d.file = in.name;
+        d.file = li.many ? std::string() : in.name;  // many: messages start with the file and the curve's id
     }
     return li;
 }

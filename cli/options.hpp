@@ -22,6 +22,7 @@ struct cli_options {
     std::string input = "-";
     std::string input_format;  ///< json | csv | tsv; empty: by extension, else by content
     std::string columns, delimiter;
+    std::string curve_column;  ///< CSV: the column whose value names the curve (many curves per file)
     // Output.
     std::string output, format;
     // The curve.

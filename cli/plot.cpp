@@ -163,6 +163,9 @@ int run_plot(const cli_options& o) {
     std::vector<double> alphas = alpha_values(o);
     if (!alphas.empty() && !o.grid.empty())
         throw input_error("--grid: give --grid or an alpha (--alpha, --uniform, --centripetal, --chordal), not both");
+    if (in.curves.size() > 1)
+        throw input_error("plot: one curve per figure, and " + in.name + " holds " + std::to_string(in.curves.size()) +
+                          " curves");
     const curve_spec spec = parse_analyze(in.curves.front());
     if (spec.dimension != 2)
         throw input_error("plot: needs 2-D points, got " + std::to_string(spec.dimension) + "-D (choose two with --columns)");

@@ -32,11 +32,13 @@ inline constexpr double tolerance_floor_ulps = 64;
 /// (8 machine epsilons, about 1.8e-15).
 inline constexpr double min_relative_accuracy = 8 * std::numeric_limits<double>::epsilon();
 
-/// The spacing of doubles at magnitude m >= 0 (the smallest positive normal
-/// double's spacing for m = 0, so that the result is never 0).
+/// The spacing of doubles at magnitude |m| (that of the smallest positive
+/// normal double for m = 0, so that the result is never 0; finite for the
+/// largest double too).
 inline double ulp_at(double m) noexcept {
     m = std::max(std::abs(m), std::numeric_limits<double>::min());
-    return std::nextafter(m, std::numeric_limits<double>::infinity()) - m;
+    const double up = std::nextafter(m, std::numeric_limits<double>::infinity());
+    return std::isfinite(up) ? up - m : m - std::nextafter(m, 0.0);  // the largest double: the spacing below it
 }
 
 /// The smallest meaningful distance tolerance for coordinates whose largest

@@ -21,7 +21,8 @@ def doc(**fields):
 # (name, command, stdin text, the exact stderr line after "crspline: ")
 CASES = [
     ("missing points", "eval", '{"t": [0]}', "missing field 'points'"),
-    ("not an object", "eval", "[1, 2]", 'expected a JSON object {"points": ...}, got [1,2]'),
+    # A list is a list of curves (docs/cli.md, MANY CURVES).
+    ("list of non-objects", "eval", "[1, 2]", '<stdin>: [0]: expected a curve object {"points": ...}, got 1'),
     ("points not an array", "bezier", '{"points": 3}', "points: expected an array of points, got 3"),
     ("wrong number of coordinates", "eval", '{"points": [[0, 0], [1, 1], [2, 2, 2]], "t": [0]}',
      "points[2]: expected 2 coordinates like points[0], got 3"),

@@ -81,7 +81,7 @@ OPTION_CASES = [
     (["bezier", "--format", "png"], "--format: expected one of json, csv, tsv, svg, svg-path for 'crspline bezier', got 'png'"),
     (["length", "--format", "svg"], "--format: expected one of json, csv, tsv for 'crspline length', got 'svg'"),
     (["bezier", "--delimiter", "x"], "--delimiter: expected ',', ';', '|', ':', 'tab' or 'space', got 'x'"),
-    (["bezier", "--input-format", "xml"], "--input-format: expected json, csv or tsv, got 'xml'"),
+    (["bezier", "--input-format", "xml"], "--input-format: expected json, csv, tsv or svg, got 'xml'"),
     (["plot", "--size", "big"], "--size: expected WIDTHxHEIGHT in pixels, 200x150 to 10000x10000, got 'big'"),
     (["plot", "--alpha", "0,2"], "--alpha[1]: must be in [0, 1], got 2"),
     (["plot", "--comb-scale", "-1"], "--comb-scale: expected a number > 0, got '-1'"),

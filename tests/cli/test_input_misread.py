@@ -90,7 +90,7 @@ def test_three_columns_are_named_on_stderr_unless_named_like_coordinates(tmp_pat
 # --- errors about points name the file and the line ---------------------------------------
 
 def test_strict_error_names_file_line_and_point(tmp_path):
-    path = write(tmp_path, "dup.csv", "# a track\nx,y\n0,0\n\n1,1\n1,1\n2,0\n")
+    path = write(tmp_path, "dup.csv", "# a track\nx,y\n0,0\n# a comment\n1,1\n1,1\n2,0\n")
     check(run(["length", "--strict", str(path)]),
           f"{path}: line 6 (point 3): coincides with the point before it, line 5 (point 2) (--strict rejects "
           "coincident consecutive points; without it they are allowed)")
