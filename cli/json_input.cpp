@@ -260,9 +260,11 @@ std::string describe_spec_error(const crspline::spec_error& e, const curve_spec&
     if (e.field() == "points" && e.index() && *e.index() < c.point_count()) {
         const std::size_t i = *e.index(), n = c.point_count(), j = (i + 1) % n;
         const std::string what = e.what();
+        // The core's words (the same in every front end), after where the
+        // points are as the user finds them; the core counts from 0.
         if (what.find("coincident") != std::string::npos)
-            return file + point_location(c, j) + ": coincides with the point before it, " + point_location(c, i) +
-                   " (--strict rejects coincident consecutive points; without it they are allowed)";
+            return file + point_location(c, i) + " and " + point_location(c, j) + ": " + what +
+                   (c.lines.empty() ? "" : " (counted from 0)");
         return file + point_location(c, i) + ": " + what;
     }
     return file + e.what();
@@ -547,15 +549,15 @@ sample_spec parse_sample(const document& doc) {
         if (spacing) fail(spacing->name, std::string("only used with ") + (spacing->flag ? "--count" : "'count'"));
         s.tolerance = finite_number(tolerance->value, tolerance->name);
         if (!(s.tolerance > 0)) fail(tolerance->name, "expected a distance > 0, got " + describe(tolerance->value));
-        const double floor = min_distance_tolerance(std::span<const double>(s.curve.coords));
+        // Below what the coordinates resolve, tessellation would subdivide
+        // without end (resolution.hpp): say the smallest meaningful value.
+        double largest = 0;
+        for (const double x : s.curve.coords) largest = std::max(largest, std::abs(x));
+        const double floor = min_distance_tolerance(largest);
         if (s.tolerance < floor)
             fail(tolerance->name, describe(tolerance->value) + " is below what the coordinates resolve (their "
-                                  "largest magnitude is spaced " + format_number(ulp_at([&] {
-                                      double m = 0;
-                                      for (double x : s.curve.coords) m = std::max(m, std::abs(x));
-                                      return m;
-                                  }())) + " apart); the smallest meaningful tolerance for this input is " +
-                                  format_number(floor));
+                                  "largest magnitude is spaced " + format_number(ulp_at(largest)) +
+                                  " apart); the smallest meaningful tolerance for this input is " + format_number(floor));
         s.by = sample_spec::kind::tolerance;
     }
     return s;

@@ -71,8 +71,7 @@ CASES = [
     ("duplicate key", "bezier", '{"points": [[0], [1]], "alpha": 0, "alpha": 1}', "<stdin>: duplicate field 'alpha'"),
     ("strict with coincident points", "bezier",
      '{"points": [[0, 0], [1, 1], [1, 1], [2, 0]], "alpha": 0.5, "strict": true}',
-     "<stdin>: points[2]: coincides with the point before it, points[1] (--strict rejects coincident consecutive "
-     "points; without it they are allowed)"),
+     "<stdin>: points[1] and points[2]: coincident consecutive points (strict mode): 1 and 2"),
     ("strict not a bool", "bezier", doc(strict="yes"), 'strict: expected true or false, got "yes"'),
     ("kb array of wrong length", "bezier", doc(kb={"tension": [0, 0.5, 0.5]}),
      "kb.tension: expected 4 values (one per point), got 3"),

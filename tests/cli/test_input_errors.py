@@ -143,8 +143,8 @@ def test_unwritable_outputs_leave_nothing(d):
     # A failure after parsing (strict mode) leaves no output file either.
     (d / "dup.csv").write_text("0,0\n1,1\n1,1\n2,0\n")
     check(run(["bezier", "--strict", str(d / "dup.csv"), "-o", str(d / "x.json")]),
-          f"{d / 'dup.csv'}: line 3 (point 3): coincides with the point before it, line 2 (point 2) (--strict rejects "
-          "coincident consecutive points; without it they are allowed)")
+          f"{d / 'dup.csv'}: line 2 (point 2) and line 3 (point 3): coincident consecutive points (strict mode): "
+          "1 and 2 (counted from 0)")
     check(run(["bezier", "--format", "svg", "--columns", "1", src, "-o", str(d / "x.svg")]),
           "--format svg: needs 2-D points, got 1-D (use json or csv)")
     check(run(["plot", "--columns", "1", src, "-o", str(d / "x.png")]), "plot: needs 2-D points, got 1-D (choose two with --columns)")

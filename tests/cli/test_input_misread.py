@@ -92,13 +92,12 @@ def test_three_columns_are_named_on_stderr_unless_named_like_coordinates(tmp_pat
 def test_strict_error_names_file_line_and_point(tmp_path):
     path = write(tmp_path, "dup.csv", "# a track\nx,y\n0,0\n# a comment\n1,1\n1,1\n2,0\n")
     check(run(["length", "--strict", str(path)]),
-          f"{path}: line 6 (point 3): coincides with the point before it, line 5 (point 2) (--strict rejects "
-          "coincident consecutive points; without it they are allowed)")
+          f"{path}: line 5 (point 2) and line 6 (point 3): coincident consecutive points (strict mode): 1 and 2 "
+          "(counted from 0)")
     doc = {"points": [[0, 0], [1, 1], [1, 1], [2, 0]], "strict": True}
     jpath = write(tmp_path, "dup.json", json.dumps(doc))
     check(run(["length", str(jpath)]),
-          f"{jpath}: points[2]: coincides with the point before it, points[1] (--strict rejects coincident "
-          "consecutive points; without it they are allowed)")
+          f"{jpath}: points[1] and points[2]: coincident consecutive points (strict mode): 1 and 2")
 
 
 # --- empty input -------------------------------------------------------------------------

@@ -96,8 +96,8 @@ def test_errors_name_the_curve(tmp_path):
     path = tmp_path / "dup.csv"
     path.write_text("id,x,y\nA,0,0\nA,1,1\nB,0,0\nB,1,1\nB,1,1\nB,2,0\n")
     check(run(["length", "--strict", "--curve-column", "id", str(path)]),
-          f"{path}: curve B: line 6 (point 3): coincides with the point before it, line 5 (point 2) (--strict "
-          "rejects coincident consecutive points; without it they are allowed)")
+          f"{path}: curve B: line 5 (point 2) and line 6 (point 3): coincident consecutive points (strict mode): "
+          "1 and 2 (counted from 0)")
     path.write_text("id,x,y\nA,0,0\nA,1,1\nB,0,0\nB,1,1\nA,2,0\n")
     check(run(["length", "--curve-column", "id", str(path)]),
           f"{path}: line 6, column 1: curve 'A' again after other curves (the rows of a curve must be consecutive)")
