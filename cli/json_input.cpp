@@ -541,17 +541,31 @@ double parse_accuracy(const json& root) {
 eval_spec parse_eval(const document& doc) {
     const json& root = doc.root;
     eval_spec e;
-    e.curve = parse_curve(doc, "eval", {"t", "s", "derivatives", "accuracy"});
-    if (root.contains("t") && root.contains("s"))
-        throw input_error("give 't' (parameter values) or 's' (arc lengths), not both");
-    if (root.contains("s")) {
-        e.s = finite_numbers(root["s"], "s");
+    e.curve = parse_curve(doc, "eval", {"t", "s", "u", "arc_fraction", "knots", "derivatives", "accuracy"});
+    // Where to evaluate: exactly one of t, s, u, arc_fraction.
+    std::vector<std::string> given;
+    for (const char* key : {"t", "s", "u", "arc_fraction"})
+        if (root.contains(key)) given.emplace_back(key);
+    if (given.size() > 1)
+        throw input_error(root.contains("u") || root.contains("arc_fraction")
+                              ? "give one of 't', 's', 'u', 'arc_fraction', got '" + given[0] + "' and '" + given[1] + "'"
+                              : std::string("give 't' (parameter values) or 's' (arc lengths), not both"));
+    if (root.contains("s") || root.contains("arc_fraction")) {
+        (root.contains("s") ? e.s : e.arc_fraction) =
+            finite_numbers(root.contains("s") ? root["s"] : root["arc_fraction"], root.contains("s") ? "s" : "arc_fraction");
         e.accuracy = parse_accuracy(root);
+    } else if (root.contains("u")) {
+        if (root.contains("accuracy")) fail("accuracy", "only used with 's' or 'arc_fraction' (arc lengths)");
+        e.u = finite_numbers(root["u"], "u");
     } else if (!root.contains("t")) {
         throw input_error("missing field 't' (the parameter values to evaluate at) or 's' (arc lengths)");
     } else {
         if (root.contains("accuracy")) fail("accuracy", "only used with 's' (arc lengths)");
         e.t = finite_numbers(root["t"], "t");
+    }
+    if (root.contains("knots")) {
+        if (!root["knots"].is_boolean()) fail("knots", "expected true or false, got " + describe(root["knots"]));
+        e.knots = root["knots"].get<bool>();
     }
     if (!root.contains("derivatives")) {
         e.derivatives = {0};

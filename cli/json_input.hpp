@@ -94,6 +94,11 @@ struct eval_spec {
     curve_spec curve;
     std::vector<double> t;
     std::optional<std::vector<double>> s;  ///< arc lengths from the start instead of t
+    /// Normalised parameters in [0, 1] instead of t: u, each segment an equal
+    /// share (three.js getPoint); arc_fraction, a fraction of the length
+    /// (three.js getPointAt).
+    std::optional<std::vector<double>> u, arc_fraction;
+    bool knots = false;                    ///< the output includes the knot grid
     double accuracy = 1e-12;               ///< relative accuracy of arc lengths
     std::vector<int> derivatives;          ///< distinct, each 0..3, in the order requested
 };

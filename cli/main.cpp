@@ -110,6 +110,18 @@ void add_options(CLI::App* sub, std::string_view name, cli_options& o) {
     }
     if (name == "eval" || name == "length" || name == "sample")
         sub->add_option("--accuracy", o.accuracy, "Relative accuracy of arc lengths (default 1e-12)")->group(work);
+    if (name == "eval") {
+        sub->add_option("--u", o.u, "Normalised parameters in [0, 1], each segment an equal share (three.js getPoint)")
+            ->group(work);
+        sub->add_option("--arc-fraction", o.arc_fraction, "Fractions of the arc length in [0, 1] (three.js getPointAt)")
+            ->group(work);
+        sub->add_flag("--knots", o.knots, "Include the knot grid in the JSON output")->group(out);
+    }
+    if (name == "eval" || name == "bezier" || name == "length" || name == "sample")
+        sub->add_option("--precision", o.precision,
+                        "Significant digits of output numbers, 1..17 (default: the shortest text that reads back "
+                        "exactly)")
+            ->group(out);
     if (name == "plot") {
         sub->add_option("--title", o.title, "Figure title")->group(fig);
         sub->add_option("--size", o.size, "Figure size in pixels, WIDTHxHEIGHT (default 900x640)")->group(fig);
@@ -181,9 +193,18 @@ int main(int argc, char** argv) {
             formats.emplace_back(chosen->formats.substr(b, e - b));
         }
         const std::string format = output_format(o, formats, "json");
+        const number_format numbers{precision_of(o)};
         in = load_input(o);
+        if (chosen->stream && format != "svg") {
+            // Written as computed: -o FILE through a temporary file renamed
+            // when complete; stdout after its first MiB (output_stream.hpp).
+            output_stream out(o.output);
+            chosen->stream(in->doc, {format, numbers}, out);
+            out.commit();
+            return 0;
+        }
         const output_json out = chosen->run(in->doc);
-        write_output(o.output, convert_output(chosen->name, format, out, in->doc));
+        write_output(o.output, convert_output(chosen->name, format, out, in->doc, numbers));
         return 0;
     } catch (const input_error& e) {
         return fail(in ? rename_fields(e.what(), *in) : std::string(e.what()));

@@ -3,6 +3,8 @@
 #include "options.hpp"
 
 #include <cerrno>
+#include <cmath>
+#include <tuple>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -13,6 +15,7 @@
 #include <unistd.h>
 
 #include "csv_input.hpp"
+#include "output_stream.hpp"
 
 namespace crspline::cli {
 
@@ -167,11 +170,11 @@ loaded_input load_input(const cli_options& o, bool alpha_list) {
     }
     if (o.strict) set("strict", "--strict", true);
     if (!o.t.empty()) {
-        r.erase("s");
+        r.erase("s"), r.erase("u"), r.erase("arc_fraction");
         set("t", "--t", number_list("--t", o.t));
     }
     if (!o.s.empty()) {
-        r.erase("t");
+        r.erase("t"), r.erase("u"), r.erase("arc_fraction");
         set("s", "--s", number_list("--s", o.s));
     }
     if (!o.derivatives.empty()) set("derivatives", "--derivatives", number_list("--derivatives", o.derivatives));
@@ -186,6 +189,14 @@ loaded_input load_input(const cli_options& o, bool alpha_list) {
         set("tolerance", "--tolerance", scalar(o.tolerance));
     }
     if (!o.spacing.empty()) set("spacing", "--spacing", o.spacing);
+    // eval's normalised parameters and the knot grid (output side).
+    for (const auto& [text, field, option] : {std::tuple{&o.u, "u", "--u"}, {&o.arc_fraction, "arc_fraction", "--arc-fraction"}}) {
+        if (text->empty()) continue;
+        for (const char* other : {"t", "s", "u", "arc_fraction"})
+            if (std::string(other) != field) r.erase(other);
+        set(field, option, number_list(option, *text));
+    }
+    if (o.knots) set("knots", "--knots", true);
     return li;
 }
 
@@ -229,43 +240,19 @@ std::string output_format(const cli_options& o, const std::vector<std::string>& 
     return fmt;
 }
 
+int precision_of(const cli_options& o) {
+    if (o.precision.empty()) return 0;
+    const auto x = parse_number(o.precision);
+    if (!x || !(*x >= 1 && *x <= 17) || *x != std::floor(*x))
+        throw input_error("--precision: expected a whole number of significant digits from 1 to 17, got '" +
+                          o.precision + "'");
+    return int(*x);
+}
+
 void write_output(const std::string& path, const std::string& bytes) {
-    if (path.empty() || path == "-") {
-        std::cout.write(bytes.data(), std::streamsize(bytes.size()));
-        std::cout.flush();
-        if (!std::cout) throw input_error("<stdout>: cannot write");
-        return;
-    }
-    // A temporary file next to the target, renamed over it when complete.
-    const std::filesystem::path target(path);
-    const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
-    std::string tmp = (dir / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
-    const auto fail = [&](int err) { throw input_error(path + ": cannot write: " + std::strerror(err)); };
-    const int fd = ::mkstemp(tmp.data());
-    if (fd < 0) fail(errno);
-    std::size_t done = 0;
-    while (done < bytes.size()) {
-        const ssize_t w = ::write(fd, bytes.data() + done, bytes.size() - done);
-        if (w < 0) {
-            if (errno == EINTR) continue;
-            const int err = errno;
-            ::close(fd);
-            ::unlink(tmp.c_str());
-            fail(err);
-        }
-        done += std::size_t(w);
-    }
-    ::fchmod(fd, 0644);
-    if (::close(fd) != 0) {
-        const int err = errno;
-        ::unlink(tmp.c_str());
-        fail(err);
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        const int err = errno;
-        ::unlink(tmp.c_str());
-        fail(err);
-    }
+    output_stream out(path);
+    out.put(bytes);
+    out.commit();
 }
 
 }  // namespace crspline::cli

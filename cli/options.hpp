@@ -32,6 +32,9 @@ struct cli_options {
     std::string tension, kb_tension, kb_continuity, kb_bias;
     // eval, length, sample.
     std::string t, s, derivatives, accuracy, count, spacing, tolerance;
+    // Output numbers and eval's normalised parameters (output side).
+    std::string precision, u, arc_fraction;
+    bool knots = false;
     // plot.
     std::string title, size, png, ticks, comb;
     bool comb_on = false, ticks_on = false;
@@ -60,6 +63,9 @@ std::string rename_fields(const std::string& message, const loaded_input& in);
 /// The output format: --format, else the extension of -o, else `fallback`.
 /// Throws input_error when it is not one of `allowed`.
 std::string output_format(const cli_options& o, const std::vector<std::string>& allowed, const std::string& fallback);
+
+/// --precision as a number of significant digits (0: not given, shortest).
+int precision_of(const cli_options& o);
 
 /// Writes the bytes to the file (through a temporary file in the same folder
 /// and a rename, so that nothing partial is left behind), or to stdout for
