@@ -98,6 +98,16 @@ void output_stream::flush() {
     started_ = true;
     int fd = STDOUT_FILENO;
     if (!to_stdout_) {
+        if (fd_ < 0 && !direct_) {
+            // A device or a pipe (/dev/null, /dev/stdout, a FIFO) is written
+            // directly: there is no file to replace.
+            struct stat st;
+            if (::stat(path_.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) {
+                direct_ = true;
+                fd_ = ::open(path_.c_str(), O_WRONLY | O_CLOEXEC);
+                if (fd_ < 0) fail(errno);
+            }
+        }
         if (fd_ < 0) {
             // A temporary file next to the target, renamed over it when complete.
             const std::filesystem::path target(path_);
@@ -134,6 +144,12 @@ void output_stream::commit() {
     flush();
     committed_ = true;
     if (to_stdout_) return;
+    if (direct_) {
+        const int fd = fd_;
+        fd_ = -1;
+        if (::close(fd) != 0) fail(errno);
+        return;
+    }
     ::fchmod(fd_, 0644);
     const int fd = fd_;
     fd_ = -1;

@@ -6,6 +6,7 @@
 //  - to a file (-o FILE): through a temporary file beside the target, renamed
 //    over it by commit(); anything that fails first (an error, an exception,
 //    a full disk) removes the temporary file, so FILE is whole or untouched;
+//    (a device or a pipe, like /dev/null, is written directly);
 //  - to stdout: the first MiB is held back, so that a short output is still
 //    all or nothing; past it the text is written as it comes, and an error
 //    after that leaves the output cut short (exit status 2 says so).
@@ -48,7 +49,7 @@ public:
     }
     output_stream(output_stream&& o) noexcept
         : path_(std::move(o.path_)), tmp_(std::move(o.tmp_)), to_stdout_(o.to_stdout_), in_memory_(o.in_memory_),
-          fd_(o.fd_), committed_(o.committed_), started_(o.started_), buf_(std::move(o.buf_)) {
+          fd_(o.fd_), committed_(o.committed_), started_(o.started_), direct_(o.direct_), buf_(std::move(o.buf_)) {
         o.fd_ = -1;
         o.tmp_.clear();
     }
@@ -90,7 +91,7 @@ private:
     std::string path_, tmp_;
     bool to_stdout_, in_memory_ = false;
     int fd_ = -1;
-    bool committed_ = false, started_ = false;
+    bool committed_ = false, started_ = false, direct_ = false;
     std::string buf_;
     static constexpr std::size_t chunk_ = std::size_t(1) << 16;  // 64 KiB writes to a file
     static constexpr std::size_t hold_ = std::size_t(1) << 20;   // 1 MiB held back on stdout
