@@ -136,6 +136,7 @@ constexpr std::string_view analyze_details =
     "   \"cusp_t\": [...], \"has_cusp\": false, \"has_self_intersection\": false,\n"
     "   \"intersections\": [{\"segments\": [i, j], \"u\": [u_i, u_j], \"t\": [t_i, t_j],\n"
     "                      \"point\": [x, y], \"distance\": 0}, ...],\n"
+    "   \"overlaps\": [{\"segments\": [i, j], \"u\": [u0, u1], \"v\": [v0, v1]}, ...],\n"
     "   \"folds\": [...], \"complete\": true,\n"
     "   \"certificate\": {\"certified\": true, \"failed_rule\": null, \"detail\": \"\", ...}}\n"
     "u is local to its segment, in [0, 1]; t global. max_chord_distance: to the closed chord\n"
@@ -144,9 +145,15 @@ constexpr std::string_view analyze_details =
     "else null. intersections: crossings between segments, and loops inside one (i == j);\n"
     "complete: false if the search ran out of its work budget. certified: the paper's\n"
     "Section 5 rules prove there is no self-intersection (centripetal curves only).\n"
+    "overlaps: stretches where two segments run together (collinear overlaps), one interval\n"
+    "[u0, u1] on segment i and [v0, v1] on segment j per pair instead of a point per crossing.\n"
+    "--summary (\"summary\": true): counts instead of lists: {\"dimension\", \"segment_count\",\n"
+    "\"cusps\", \"loops\", \"intersections\", \"overlaps\", \"folds\", \"complete\", \"certificate\"}.\n"
+    "--no-intersections (\"search\": false): no search; its fields are null.\n"
     "\n"
     "Example:\n"
     "  crspline analyze --uniform points.csv\n"
+    "  crspline analyze --summary --no-intersections track.csv\n"
     "  echo '{\"points\": [[0, 0], [1, 1], [1.1, 1], [2, 0]], \"alpha\": 0}' | crspline analyze\n"
     "\n" CRSPLINE_CLI_CSV_AND_ERRORS;
 

@@ -589,7 +589,7 @@ eval_spec parse_eval(const document& doc) {
 
 bezier_spec parse_bezier(const document& doc) { return {parse_curve(doc, "bezier", {})}; }
 
-curve_spec parse_analyze(const document& doc) { return parse_curve(doc, "analyze", {}); }
+curve_spec parse_analyze(const document& doc) { return parse_curve(doc, "analyze", {"summary", "search"}); }
 
 length_spec parse_length(const document& doc) {
     const json& root = doc.root;

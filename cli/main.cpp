@@ -117,6 +117,11 @@ void add_options(CLI::App* sub, std::string_view name, cli_options& o) {
             ->group(work);
         sub->add_flag("--knots", o.knots, "Include the knot grid in the JSON output")->group(out);
     }
+    if (name == "analyze") {
+        sub->add_flag("--summary", o.summary, "Counts only (cusps, loops, intersections, overlaps), no lists")->group(work);
+        sub->add_flag("--no-intersections", o.no_search, "Skip the search for self-intersections (the slow part)")
+            ->group(work);
+    }
     if (name == "eval" || name == "bezier" || name == "length" || name == "sample")
         sub->add_option("--precision", o.precision,
                         "Significant digits of output numbers, 1..17 (default: the shortest text that reads back "

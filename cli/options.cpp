@@ -197,6 +197,8 @@ loaded_input load_input(const cli_options& o, bool alpha_list) {
         set(field, option, number_list(option, *text));
     }
     if (o.knots) set("knots", "--knots", true);
+    if (o.summary) set("summary", "--summary", true);
+    if (o.no_search) set("search", "--no-intersections", false);
     return li;
 }
 

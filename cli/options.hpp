@@ -35,6 +35,7 @@ struct cli_options {
     // Output numbers and eval's normalised parameters (output side).
     std::string precision, u, arc_fraction;
     bool knots = false;
+    bool summary = false, no_search = false;  ///< analyze
     // plot.
     std::string title, size, png, ticks, comb;
     bool comb_on = false, ticks_on = false;

@@ -327,3 +327,48 @@ def test_sample_as_svg_path_and_geojson():
     # By extension of -o as well; 1-D is refused.
     p = fail(["sample", "--count", "3", "--format", "geojson", "--columns", "1", "-"], "0,0\n1,1\n2,0\n")
     assert p.stderr == "crspline: --format geojson: needs 2-D or 3-D points, got 1-D (use json or csv)\n"
+
+
+# ---------------------------------------------------------------- analyze
+
+
+RETRACE = [[0, 0], [1, 0], [2, 0], [3, 0], [4, 0], [5, 3], [3.5, 0], [2.5, 0], [1.5, 0], [0.5, 0], [-0.5, -1]]
+
+
+def test_analyze_reports_a_collinear_overlap_as_intervals():
+    """Out along the x axis and back: segments 1 and 2 are overlapped by
+    segment 7 (tests/analysis/test_overlaps.cpp has the geometry). One
+    interval per pair, no point meetings between those pairs (there were
+    820 point meetings before)."""
+    out = run_json("analyze", {"points": RETRACE})
+    assert [o["segments"] for o in out["overlaps"]] == [[1, 7], [2, 7]]
+    # Interval ends to the search tolerance (1e-9 of the curve's size ~7).
+    a, b = out["overlaps"]
+    assert abs(a["u"][0] - 0.5) <= 2e-8 and a["u"][1] == 1 and a["v"][0] == 1 and abs(a["v"][1] - 0.5) <= 2e-8
+    assert b["u"][0] == 0 and abs(b["u"][1] - 0.5) <= 2e-8 and abs(b["v"][0] - 0.5) <= 2e-8 and b["v"][1] == 0
+    pairs = [tuple(x["segments"]) for x in out["intersections"]]
+    assert (1, 7) not in pairs and (2, 7) not in pairs
+    assert len(pairs) <= 8, pairs
+
+
+def test_analyze_summary_and_no_search():
+    full = run_json("analyze", {"points": RETRACE, "alpha": 0})
+    summary = run_json("analyze", {"points": RETRACE, "alpha": 0, "summary": True})
+    assert summary == {
+        "segment_count": len(RETRACE) - 1,
+        "cusps": sum(len(s["cusp_u"]) for s in full["segments"]),
+        "loops": sum(len(s["self_intersection"]) for s in full["segments"]),
+        "intersections": len(full["intersections"]),
+        "overlaps": len(full["overlaps"]),
+        "folds": len(full["folds"]),
+        "complete": full["complete"],
+        "intersection_free": full["intersection_free"],
+    }
+    assert json.loads(ok(["analyze", "--summary", "-"], json.dumps({"points": RETRACE, "alpha": 0}))) == summary
+    quick = json.loads(ok(["analyze", "--summary", "--no-intersections", "-"], json.dumps({"points": RETRACE})))
+    assert quick["intersections"] is None and quick["overlaps"] is None and quick["complete"] is None
+    assert quick["cusps"] == 0
+    listed = run_json("analyze", {"points": RETRACE, "search": False})
+    assert listed["intersections"] is None and len(listed["segments"]) == len(RETRACE) - 1
+    p = fail(["analyze", "-"], json.dumps({"points": RETRACE, "search": "no"}))
+    assert p.stderr == 'crspline: search: expected true or false, got "no"\n'
