@@ -140,6 +140,11 @@ void add_options(CLI::App* sub, std::string_view name, cli_options& o) {
         sub->add_flag("--ticks", o.ticks_on, "Draw arc-length ticks")->group(fig);
         sub->add_option("--tick-step", o.ticks, "Arc length between ticks (default: auto)")->group(fig);
         sub->add_flag("--all", o.all_overlays, "All overlays")->group(fig);
+        sub->add_option("--aspect", o.aspect, "equal (one scale, for geometry; default) or auto (each axis fitted)")
+            ->group(fig);
+        sub->add_option("--xlim", o.xlim, "Visible x range A,B (default: fitted to the data)")->group(fig);
+        sub->add_option("--ylim", o.ylim, "Visible y range A,B (default: fitted to the data)")->group(fig);
+        sub->add_flag("--no-points", o.no_points, "No point markers (they shrink with density otherwise)")->group(fig);
     }
 }
 

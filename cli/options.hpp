@@ -36,6 +36,8 @@ struct cli_options {
     std::string precision, u, arc_fraction;
     bool knots = false;
     bool summary = false, no_search = false;  ///< analyze
+    std::string aspect, xlim, ylim;           ///< plot: equal | auto; A,B ranges
+    bool no_points = false;                   ///< plot: no point markers
     // plot.
     std::string title, size, png, ticks, comb;
     bool comb_on = false, ticks_on = false;
