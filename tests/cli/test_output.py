@@ -372,3 +372,102 @@ def test_analyze_summary_and_no_search():
     assert listed["intersections"] is None and len(listed["segments"]) == len(RETRACE) - 1
     p = fail(["analyze", "-"], json.dumps({"points": RETRACE, "search": "no"}))
     assert p.stderr == 'crspline: search: expected true or false, got "no"\n'
+
+
+# ---------------------------------------------------------------- plots
+
+
+def svg_texts(svg):
+    return re.findall(r"<text [^>]*>([^<]*)</text>", svg)
+
+
+def test_plot_svg_is_in_pixels_with_real_text():
+    doc = json.dumps({"points": P5})
+    svg = ok(["plot", "--size", "400x300", "--title", "A & B <title>", "-"], doc)
+    head = re.search(r"<svg [^>]*>", svg).group(0)
+    assert 'width="400px"' in head and 'height="300px"' in head and 'viewBox="0 0 400 300"' in head
+    texts = svg_texts(svg)
+    assert "A &amp; B &lt;title&gt;" in texts and "x" in texts and "y" in texts
+    assert "centripetal (\u03b1 = 0.5)" in texts and "control polygon" in texts
+    # No glyph outlines (cairo writes them as <symbol id="glyph...">).
+    assert "glyph" not in svg
+    import xml.etree.ElementTree as ET
+    ET.fromstring(svg)
+
+
+def polygon_pixels(svg, n):
+    for style, d in re.findall(r'<path style="([^"]*)" d="([^"]*)"', svg):
+        if "stroke-dasharray" in style and d.count("L") == n - 1:
+            nums = numbers_in(d)
+            return list(zip(nums[0::2], nums[1::2]))
+    raise AssertionError("no control polygon")
+
+
+def tick_labels(svg):
+    return [float(t) for t in svg_texts(svg) if re.fullmatch(r"-?[0-9.]+", t)]
+
+
+def test_plot_aspect_auto_fits_each_axis():
+    """A price series, years 1990..2022 against 1.0..1.1: with one scale the
+    curve is a flat line; --aspect auto spreads it over the plot's height."""
+    series = [[1990 + k, 1 + 0.1 * (0.5 + 0.5 * math.sin(k / 3))] for k in range(33)]
+    doc = json.dumps({"points": series})
+    flat = polygon_pixels(ok(["plot", "-"], doc), len(series))
+    auto = polygon_pixels(ok(["plot", "--aspect", "auto", "-"], doc), len(series))
+    height = lambda px: max(y for _, y in px) - min(y for _, y in px)
+    assert height(flat) < 30 and height(auto) > 400, (height(flat), height(auto))
+    labels = tick_labels(ok(["plot", "--aspect", "auto", "-"], doc))
+    assert min(labels) >= 0.9 and 1985 <= max(labels) <= 2025, labels
+    p = fail(["plot", "--aspect", "square", "-"], doc)
+    assert p.stderr == "crspline: --aspect: expected equal or auto, got 'square'\n"
+
+
+def test_plot_limits_and_axis_labels(tmp_path):
+    src = tmp_path / "s.csv"
+    src.write_text("year,price\n" + "".join(f"{1990 + k},{100 + k % 7}\n" for k in range(33)))
+    svg = ok(["plot", "--aspect", "auto", "--columns", "year,price", "--xlim", "2000,2010", "--ylim", "95,110",
+              str(src)])
+    texts = svg_texts(svg)
+    assert "year" in texts and "price" in texts
+    assert re.search(r'<text [^>]*transform="rotate\(-90[^>]*>price</text>', svg)
+    xs = [float(t) for t in texts if re.fullmatch(r"20[0-9][0-9]|199[0-9]", t)]
+    assert xs and min(xs) >= 2000 and max(xs) <= 2010, xs
+    for option, value in [("--xlim", "3,1"), ("--ylim", "a,b"), ("--xlim", "1")]:
+        p = fail(["plot", option, value, str(src)])
+        assert p.stderr == f"crspline: {option}: expected two increasing numbers A,B, got '{value}'\n"
+
+
+def point_dots(svg):
+    """Subpaths of the black-filled point markers (the legend's dot is one)."""
+    out = []
+    for style, d in re.findall(r'<path style="([^"]*)" d="([^"]*)"', svg):
+        if "fill:rgb(0%,0%,0%)" in style and "stroke:none" in style:
+            out += [p for p in re.split(r"(?=M )", d.strip()) if p]
+    return out
+
+
+def test_plot_point_markers_shrink_with_density_or_go():
+    few = point_dots(ok(["plot", "-"], json.dumps({"points": P5})))
+    seed = random.randrange(2**32)
+    rng = random.Random(seed)
+    pts = [[k, rng.uniform(0, 3000)] for k in range(3000)]
+    many = point_dots(ok(["plot", "--aspect", "auto", "-"], json.dumps({"points": pts})))
+    width = lambda sub: (lambda n: max(n[0::2]) - min(n[0::2]))(numbers_in(sub))
+    assert len(few) >= len(P5) and len(many) >= len(pts), f"seed {seed}"
+    assert 6.5 <= width(few[0]) <= 7.5  # 3.5 px radius for five points
+    # Each marker's disc a tenth of the plot area per point: radius
+    # 0.18 sqrt(area / n) on the default 812 x 548 px plot area (to cairo's
+    # 1/256 px fixed point).
+    assert abs(width(many[0]) - 2 * 0.18 * math.sqrt(812 * 548 / 3000)) <= 0.02, f"seed {seed}: {width(many[0])}"
+    none = point_dots(ok(["plot", "--no-points", "-"], json.dumps({"points": P5})))
+    assert len(none) <= 1  # the legend's dot only
+
+
+def test_plot_png_name_and_write_errors(tmp_path):
+    doc = json.dumps({"points": P5})
+    p = fail(["plot", "-o", str(tmp_path / "a.svg"), "--png", str(tmp_path / "x.svg"), "-"], doc)
+    assert p.stderr == f"crspline: --png: writes a PNG file, but {tmp_path / 'x.svg'} does not end in .png (for SVG use -o)\n"
+    assert os.listdir(tmp_path) == []
+    if os.path.exists("/dev/full"):
+        p = fail(["plot", "-o", "/dev/full", "-"], doc)
+        assert p.stderr == "crspline: /dev/full: cannot write: No space left on device\n"
