@@ -10,6 +10,7 @@ import math
 import os
 import random
 import re
+import stat
 
 import pytest
 
@@ -151,17 +152,34 @@ def test_failure_midway_leaves_no_file_and_no_temporary(tmp_path):
     assert p.stdout == ""
 
 
-def test_write_errors_name_the_reason():
-    if not os.path.exists("/dev/full"):
-        pytest.skip("no /dev/full")
+def device(tmp_path, name):
+    """/dev/full (every write fails with ENOSPC) or /dev/null. As root, a
+    node of our own in tmp_path: a build that renamed a temporary file over
+    its target would replace that node, not the machine's device (the code
+    before this test did exactly that to /dev/full)."""
+    minor = {"full": 7, "null": 3}[name]
+    if os.getuid() == 0:
+        path = tmp_path / name
+        os.mknod(path, 0o666 | stat.S_IFCHR, os.makedev(1, minor))
+        return str(path)
+    if not os.path.exists("/dev/" + name):
+        pytest.skip("no /dev/" + name)
+    return "/dev/" + name
+
+
+def test_write_errors_name_the_reason(tmp_path):
+    full = device(tmp_path, "full")
     # A device is written directly (no temporary file beside it).
-    p = fail(["bezier", "-o", "/dev/full", "-"], json.dumps({"points": P5}))
-    assert p.stderr == "crspline: /dev/full: cannot write: No space left on device\n"
-    assert ok(["bezier", "-o", "/dev/null", "-"], json.dumps({"points": P5})) == ""
-    with open("/dev/full", "w") as full:
+    p = fail(["bezier", "-o", full, "-"], json.dumps({"points": P5}))
+    assert p.stderr == f"crspline: {full}: cannot write: No space left on device\n"
+    assert stat.S_ISCHR(os.stat(full).st_mode)
+    null = device(tmp_path, "null")
+    assert ok(["bezier", "-o", null, "-"], json.dumps({"points": P5})) == ""
+    assert stat.S_ISCHR(os.stat(null).st_mode)
+    with open(full, "w") as sink:
         import subprocess
         from cli_support import binary
-        q = subprocess.run([binary(), "bezier", "-"], input=json.dumps({"points": P5}), stdout=full,
+        q = subprocess.run([binary(), "bezier", "-"], input=json.dumps({"points": P5}), stdout=sink,
                            stderr=subprocess.PIPE, text=True, timeout=60)
     assert q.returncode == 2
     assert q.stderr == "crspline: <stdout>: cannot write: No space left on device\n"
@@ -468,6 +486,7 @@ def test_plot_png_name_and_write_errors(tmp_path):
     p = fail(["plot", "-o", str(tmp_path / "a.svg"), "--png", str(tmp_path / "x.svg"), "-"], doc)
     assert p.stderr == f"crspline: --png: writes a PNG file, but {tmp_path / 'x.svg'} does not end in .png (for SVG use -o)\n"
     assert os.listdir(tmp_path) == []
-    if os.path.exists("/dev/full"):
-        p = fail(["plot", "-o", "/dev/full", "-"], doc)
-        assert p.stderr == "crspline: /dev/full: cannot write: No space left on device\n"
+    full = device(tmp_path, "full")
+    p = fail(["plot", "-o", full, "-"], doc)
+    assert p.stderr == f"crspline: {full}: cannot write: No space left on device\n"
+    assert stat.S_ISCHR(os.stat(full).st_mode)
