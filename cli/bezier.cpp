@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "dispatch.hpp"
 #include "json_input.hpp"
+#include "progress.hpp"
 
 namespace crspline::cli {
 
@@ -19,6 +20,10 @@ void stream_bezier(const document& input, const output_settings& settings, outpu
         const auto grid = curve.grid();
         const number_format& nf = settings.numbers;
         std::string& buf = out.buffer();
+        progress shown("crspline bezier");
+        const auto tick = [&](std::size_t i) {
+            if ((i & 4095) == 0) shown.update(double(i) / double(n));
+        };
         const auto where = [](std::size_t i, int k, std::size_t c) {
             return [=] {
                 return "segments[" + std::to_string(i) + "][" + std::to_string(k) + "][" + std::to_string(c) + "]";
@@ -31,6 +36,7 @@ void stream_bezier(const document& input, const output_settings& settings, outpu
                 throw input_error("--format svg-path: needs 2-D points, got " + std::to_string(spec.curve.dimension) +
                                   "-D (use json or csv)");
             for (std::size_t i = 0; i < n; ++i) {
+                tick(i);
                 const auto b = curve.bezier(i);
                 for (int k = i == 0 ? 0 : 1; k < 4; ++k) {
                     buf += k == 0 ? "M " : k == 1 ? (i == 0 ? " C " : " C ") : " ";
@@ -54,6 +60,7 @@ void stream_bezier(const document& input, const output_settings& settings, outpu
             }
             buf += "],\"segments\":[";
             for (std::size_t i = 0; i < n; ++i) {
+                tick(i);
                 const auto b = curve.bezier(i);
                 buf += i ? ",[" : "[";
                 for (int k = 0; k < 4; ++k) {
@@ -83,6 +90,7 @@ void stream_bezier(const document& input, const output_settings& settings, outpu
                 buf += sep + ("b" + std::to_string(k) + "_") + (c < 4 ? axes[c] : "x" + std::to_string(c + 1));
         buf += '\n';
         for (std::size_t i = 0; i < n; ++i) {
+            tick(i);
             const auto b = curve.bezier(i);
             buf += std::to_string(i);
             for (std::size_t g : {i, i + 1}) {

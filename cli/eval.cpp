@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "dispatch.hpp"
 #include "json_input.hpp"
+#include "progress.hpp"
 
 namespace crspline::cli {
 
@@ -77,6 +78,8 @@ void stream_eval(const document& input, const output_settings& settings, output_
 
         // 2. The output, a chunk of parameters at a time.
         const number_format& nf = settings.numbers;
+        progress shown("crspline eval");
+        const double work = double(t.size()) * double(spec.derivatives.size()) + 1;
         std::vector<vec<D, double>> values(chunk);
         const auto evaluate = [&](std::size_t b, std::size_t m, int order) {
             curve.evaluate(std::span<const double>(t).subspan(b, m), std::span<vec<D, double>>(values).first(m), order);
@@ -104,6 +107,7 @@ void stream_eval(const document& input, const output_settings& settings, output_
                 buf += (o ? ",\"" : "\"") + std::to_string(order) + "\":[";
                 for (std::size_t b = 0; b < t.size(); b += chunk) {
                     const std::size_t m = std::min(chunk, t.size() - b);
+                    shown.update((double(o) * double(t.size()) + double(b)) / work);
                     evaluate(b, m, order);
                     for (std::size_t i = 0; i < m; ++i) {
                         buf += (b + i) ? ",[" : "[";
@@ -135,6 +139,7 @@ void stream_eval(const document& input, const output_settings& settings, output_
         std::vector<std::vector<vec<D, double>>> rows(spec.derivatives.size());
         for (std::size_t b = 0; b < t.size(); b += chunk) {
             const std::size_t m = std::min(chunk, t.size() - b);
+            shown.update(double(b) / double(t.size()));
             for (std::size_t o = 0; o < spec.derivatives.size(); ++o) {
                 evaluate(b, m, spec.derivatives[o]);
                 rows[o].assign(values.begin(), values.begin() + std::ptrdiff_t(m));

@@ -490,3 +490,55 @@ def test_plot_png_name_and_write_errors(tmp_path):
     p = fail(["plot", "-o", full, "-"], doc)
     assert p.stderr == f"crspline: {full}: cannot write: No space left on device\n"
     assert stat.S_ISCHR(os.stat(full).st_mode)
+
+
+# ---------------------------------------------------------------- progress
+
+
+def long_eval(tmp_path):
+    # About 3 * 10^6 evaluations with derivatives: a few seconds.
+    src = tmp_path / "long.json"
+    n = 1_500_000
+    src.write_text(json.dumps({"points": P5, "u": [k / (n - 1) for k in range(n)], "derivatives": [0, 1]}))
+    return src
+
+
+def test_progress_never_when_stderr_is_not_a_terminal(tmp_path):
+    import subprocess
+    import time
+    from cli_support import binary
+    src = long_eval(tmp_path)
+    start = time.monotonic()
+    p = subprocess.run([binary(), "eval", str(src), "-o", str(tmp_path / "o.json")], capture_output=True, timeout=120)
+    took = time.monotonic() - start
+    assert p.returncode == 0 and p.stderr == b"", p.stderr[:200]
+    # Not a timing assertion: a run under the one-second threshold would
+    # show nothing on a terminal either, and the check would be vacuous.
+    if took < 1.5:
+        pytest.skip(f"the run took {took:.2f} s, under the progress threshold")
+
+
+def test_progress_on_a_terminal(tmp_path):
+    import pty
+    import subprocess
+    import time
+    from cli_support import binary
+    src = long_eval(tmp_path)
+    master, slave = pty.openpty()
+    start = time.monotonic()
+    p = subprocess.run([binary(), "eval", str(src), "-o", str(tmp_path / "o.json")], stdout=subprocess.PIPE,
+                       stderr=slave, timeout=120)
+    took = time.monotonic() - start
+    os.close(slave)
+    shown = b""
+    try:
+        while chunk := os.read(master, 4096):
+            shown += chunk
+    except OSError:
+        pass
+    os.close(master)
+    assert p.returncode == 0
+    if took < 1.5:
+        pytest.skip(f"the run took {took:.2f} s, under the progress threshold")
+    assert b"crspline eval: " in shown and b"%" in shown, shown[:200]
+    assert shown.endswith(b"\r\x1b[K")  # erased at the end
