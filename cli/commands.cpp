@@ -50,22 +50,30 @@ namespace {
 
 constexpr std::string_view eval_details =
     CRSPLINE_CLI_CURVE_FIELDS
-    "  \"t\": [...]                     parameter values in [grid[0], grid[last]], or\n"
+    "One of:\n"
+    "  \"t\": [...]                     the curve's parameter, in [grid[0], grid[last]] (the\n"
+    "                                 knots: 0, 1, 2, ... only for alpha 0)\n"
+    "  \"u\": [...]                     in [0, 1] over the whole curve, each segment an equal\n"
+    "                                 share (three.js getPoint); the output adds \"t_of_u\"\n"
+    "  \"arc_fraction\": [...]          in [0, 1], a fraction of the arc length (three.js\n"
+    "                                 getPointAt); the output adds \"t_of_arc_fraction\"\n"
     "  \"s\": [...]                     arc lengths from the start in [0, length]; the output\n"
-    "                                 then also has \"t_of_s\"; \"accuracy\": 1e-12 (relative)\n"
+    "                                 adds \"t_of_s\"; \"accuracy\": 1e-12 (relative), also\n"
+    "                                 for arc_fraction\n"
     "  \"derivatives\": [0]             orders to evaluate, each 0..3, no repeats\n"
+    "  \"knots\": false                 true: the output starts with the knot \"grid\"\n"
     "\n"
-    "Output: {\"grid\": [...], \"values\": {\"0\": [[x, y], ...], \"1\": ...}}, one key per\n"
-    "requested order (d^k x / dt^k), in the order requested.\n"
+    "Output: {\"values\": {\"0\": [[x, y], ...], \"1\": ...}}, one key per requested order\n"
+    "(d^k x / dt^k), in the order requested.\n"
     "\n"
     "Example:\n"
-    "  echo '{\"points\": [[0, 0], [1, 1], [2, 0]], \"alpha\": 0, \"t\": [0, 0.5, 2],\n"
-    "         \"derivatives\": [0, 1]}' | crspline eval\n"
-    "  {\"grid\":[0.0,1.0,2.0],\"values\":{\"0\":[[0.0,0.0],[0.5,0.6875],[2.0,0.0]],\n"
-    "   \"1\":[[1.0,1.5],[1.0,1.125],[1.0,-1.5]]}}\n"
+    "  echo '{\"points\": [[0, 0], [1, 1], [2, 0]], \"u\": [0, 0.25, 0.5, 1]}' | crspline eval\n"
+    "  {\"t_of_u\":[0.0,0.5946035575013605,1.189207115002721,2.378414230005442],\"values\":\n"
+    "   {\"0\":[[0.0,0.0],[0.5,0.6875],[1.0,1.0],[2.0,0.0]]}}\n"
     "\n"
     "More examples:\n"
     "  crspline eval --t 0,0.5,1 --derivatives 0,1 --format csv points.csv\n"
+    "  crspline eval --arc-fraction 0,0.5,1 --precision 6 --format csv points.csv\n"
     "  crspline eval --centripetal --s 0,1,2 -o out.csv curve.json\n"
     "\n" CRSPLINE_CLI_CSV_AND_ERRORS;
 
@@ -130,6 +138,7 @@ constexpr std::string_view analyze_details =
     "   \"cusp_t\": [...], \"has_cusp\": false, \"has_self_intersection\": false,\n"
     "   \"intersections\": [{\"segments\": [i, j], \"u\": [u_i, u_j], \"t\": [t_i, t_j],\n"
     "                      \"point\": [x, y], \"distance\": 0}, ...],\n"
+    "   \"overlaps\": [{\"segments\": [i, j], \"u\": [u0, u1], \"v\": [v0, v1]}, ...],\n"
     "   \"folds\": [...], \"complete\": true,\n"
     "   \"certificate\": {\"certified\": true, \"failed_rule\": null, \"detail\": \"\", ...}}\n"
     "u is local to its segment, in [0, 1]; t global. max_chord_distance: to the closed chord\n"
@@ -138,9 +147,15 @@ constexpr std::string_view analyze_details =
     "else null. intersections: crossings between segments, and loops inside one (i == j);\n"
     "complete: false if the search ran out of its work budget. certified: the paper's\n"
     "Section 5 rules prove there is no self-intersection (centripetal curves only).\n"
+    "overlaps: stretches where two segments run together (collinear overlaps), one interval\n"
+    "[u0, u1] on segment i and [v0, v1] on segment j per pair instead of a point per crossing.\n"
+    "--summary (\"summary\": true): counts instead of lists: {\"dimension\", \"segment_count\",\n"
+    "\"cusps\", \"loops\", \"intersections\", \"overlaps\", \"folds\", \"complete\", \"certificate\"}.\n"
+    "--no-intersections (\"search\": false): no search; its fields are null.\n"
     "\n"
     "Example:\n"
     "  crspline analyze --uniform points.csv\n"
+    "  crspline analyze --summary --no-intersections track.csv\n"
     "  echo '{\"points\": [[0, 0], [1, 1], [1.1, 1], [2, 0]], \"alpha\": 0}' | crspline analyze\n"
     "\n" CRSPLINE_CLI_CSV_AND_ERRORS;
 
@@ -178,12 +193,13 @@ constexpr std::string_view demo_details =
 #undef CRSPLINE_CLI_CSV_AND_ERRORS
 
 constexpr command all_commands[] = {
-    {"eval", "Positions and derivatives at parameter values t", eval_details, &run_eval, "json csv tsv svg"},
+    {"eval", "Positions and derivatives at parameter values t", eval_details, &run_eval, "json csv tsv svg",
+     &stream_eval},
     {"bezier", "Cubic Bezier control points of every segment", bezier_details, &run_bezier,
-     "json csv tsv svg svg-path"},
+     "json csv tsv svg svg-path", &stream_bezier},
     {"length", "Arc length of the curve and of each segment", length_details, &run_length, "json csv tsv"},
     {"sample", "Points evenly spaced in t or arc length, or within a tolerance", sample_details, &run_sample,
-     "json csv tsv svg"},
+     "json csv tsv svg svg-path geojson", &stream_sample},
     {"analyze", "Cusps, self-intersections, distances to the polygon, certificate", analyze_details, &run_analyze,
      "json"},
     {"plot", "A figure of the curve(s) with overlays, as SVG or PNG", plot_details, nullptr, "svg png"},
@@ -208,11 +224,21 @@ std::string first_non_finite(const output_json& v, const std::string& path) {
 
 std::span<const command> commands() { return all_commands; }
 
-std::string render(const output_json& out) {
+std::string render(const output_json& out, const number_format& numbers) {
     if (const std::string bad = first_non_finite(out, ""); !bad.empty())
         throw input_error(bad + ": the result is not finite (the input's coordinates or knot intervals are "
                                 "too extreme for double arithmetic)");
-    return out.dump() + "\n";
+    if (numbers.precision == 0) return out.dump() + "\n";
+    // --precision: every float rounded to that many significant digits, then
+    // written as the shortest text that reads back to the rounded value.
+    output_json rounded = out;
+    const auto round_all = [&](auto& self, output_json& v) -> void {
+        if (v.is_number_float()) v = round_to_precision(v.get<double>(), numbers.precision);
+        else if (v.is_structured())
+            for (auto& x : v) self(self, x);
+    };
+    round_all(round_all, rounded);
+    return rounded.dump() + "\n";
 }
 
 }  // namespace crspline::cli

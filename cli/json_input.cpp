@@ -439,41 +439,61 @@ std::string missing(const document& doc, const char* key) {
 
 }  // namespace
 
-std::vector<double> eval_parameters(const document& doc) {
-    if (doc.flags && !doc.flags->t.empty()) return finite_numbers(number_list("--t", doc.flags->t), "--t");
-    if (doc.flags && !doc.flags->s.empty()) return {};
-    if (doc.root.is_object() && doc.root.contains("t")) return finite_numbers(doc.root["t"], "t");
-    return {};
-}
-
 eval_spec parse_eval(const document& doc) {
     const json& root = doc.root;
     const cli_options* f = doc.flags;
     eval_spec e;
-    e.curve = parse_curve(doc, "eval", {"t", "s", "derivatives", "accuracy"});
-    const bool flag_t = f && !f->t.empty(), flag_s = f && !f->s.empty();
-    if (flag_t && flag_s) throw input_error("--s: give --t (parameter values) or --s (arc lengths), not both");
-    // A flag replaces both fields: --t 0,1 on a document with "s" evaluates at t.
-    const std::optional<field_value> t = flag_t ? field_value{number_list("--t", f->t), "--t", true}
-                                         : flag_s || !root.contains("t") ? std::optional<field_value>()
-                                                                          : field_value{root["t"], "t", false};
-    const std::optional<field_value> s = flag_s ? field_value{number_list("--s", f->s), "--s", true}
-                                         : flag_t || !root.contains("s") ? std::optional<field_value>()
-                                                                          : field_value{root["s"], "s", false};
-    if (t && s) throw input_error("give 't' (parameter values) or 's' (arc lengths), not both");
-    if (t) e.t_name = t->name;
-    if (s) e.s_name = s->name;
-    if (s) {
-        e.s = finite_numbers(s->value, s->name);
-        e.accuracy = parse_accuracy(doc);
-    } else if (!t) {
+    e.curve = parse_curve(doc, "eval", {"t", "s", "u", "arc_fraction", "knots", "derivatives", "accuracy"});
+    // Where to evaluate: exactly one of t, s, u, arc_fraction. A flag
+    // replaces every field: --t 0,1 on a document with "s" evaluates at t.
+    struct kind {
+        const char* key;
+        const std::string cli_options::*flag;
+        const char* flag_name;
+    };
+    static constexpr kind kinds[] = {{"t", &cli_options::t, "--t"},
+                                     {"s", &cli_options::s, "--s"},
+                                     {"u", &cli_options::u, "--u"},
+                                     {"arc_fraction", &cli_options::arc_fraction, "--arc-fraction"}};
+    std::vector<std::pair<std::string, field_value>> given;  // key, value
+    for (const kind& k : kinds)
+        if (f && !(f->*k.flag).empty()) given.emplace_back(k.key, field_value{number_list(k.flag_name, f->*k.flag), k.flag_name, true});
+    if (given.empty())
+        for (const kind& k : kinds)
+            if (root.contains(k.key)) given.emplace_back(k.key, field_value{root[k.key], k.key, false});
+    if (given.size() > 1) {
+        const bool flags = given[0].second.flag;
+        const bool t_and_s = given.size() == 2 && given[0].first == "t" && given[1].first == "s";
+        if (t_and_s)
+            throw input_error(flags ? "--s: give --t (parameter values) or --s (arc lengths), not both"
+                                    : "give 't' (parameter values) or 's' (arc lengths), not both");
+        throw input_error(flags ? given[1].second.name + ": give one of --t, --s, --u, --arc-fraction, got " +
+                                      given[0].second.name + " and " + given[1].second.name
+                                : "give one of 't', 's', 'u', 'arc_fraction', got '" + given[0].first + "' and '" +
+                                      given[1].first + "'");
+    }
+    if (given.empty()) {
         const bool fields = doc.has_fields;
         throw input_error(std::string(fields ? "missing field " : "missing option ") + missing(doc, "t") +
                           " (the parameter values to evaluate at) or " + missing(doc, "s") + " (arc lengths)");
+    }
+    const std::string& key = given[0].first;
+    const field_value& param = given[0].second;
+    e.param_name = param.name;
+    if (key == "s" || key == "arc_fraction") {
+        (key == "s" ? e.s : e.arc_fraction) = finite_numbers(param.value, param.name);
+        e.accuracy = parse_accuracy(doc);
     } else {
         if (const auto a = field(root, "accuracy", f, &cli_options::accuracy, "--accuracy"))
-            fail(a->name, std::string("only used with ") + (a->flag ? "--s" : "'s'") + " (arc lengths)");
-        e.t = finite_numbers(t->value, t->name);
+            fail(a->name, std::string("only used with ") +
+                              (key == "t" ? (a->flag ? "--s" : "'s'") : (a->flag ? "--s or --arc-fraction" : "'s' or 'arc_fraction'")) +
+                              " (arc lengths)");
+        (key == "u" ? e.u.emplace() : e.t) = finite_numbers(param.value, param.name);
+    }
+    if (f && f->knots) e.knots = true;
+    else if (root.contains("knots")) {
+        if (!root["knots"].is_boolean()) fail("knots", "expected true or false, got " + describe(root["knots"]));
+        e.knots = root["knots"].get<bool>();
     }
     const auto d_field = field(root, "derivatives", f, &cli_options::derivatives, "--derivatives", true);
     if (!d_field) {
@@ -499,7 +519,7 @@ eval_spec parse_eval(const document& doc) {
 
 bezier_spec parse_bezier(const document& doc) { return {parse_curve(doc, "bezier", {})}; }
 
-curve_spec parse_analyze(const document& doc) { return parse_curve(doc, "analyze", {}); }
+curve_spec parse_analyze(const document& doc) { return parse_curve(doc, "analyze", {"summary", "search"}); }
 
 length_spec parse_length(const document& doc) {
     length_spec l;

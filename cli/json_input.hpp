@@ -70,9 +70,14 @@ struct eval_spec {
     curve_spec curve;
     std::vector<double> t;
     std::optional<std::vector<double>> s;  ///< arc lengths from the start instead of t
+    /// Normalised parameters in [0, 1] instead of t: u, each segment an equal
+    /// share (three.js getPoint); arc_fraction, a fraction of the length
+    /// (three.js getPointAt).
+    std::optional<std::vector<double>> u, arc_fraction;
+    bool knots = false;                    ///< the output includes the knot grid
     double accuracy = 1e-12;               ///< relative accuracy of arc lengths
     std::vector<int> derivatives;          ///< distinct, each 0..3, in the order requested
-    std::string t_name = "t", s_name = "s";  ///< what messages call them: the JSON field or the flag
+    std::string param_name = "t";         ///< what messages call the parameters given: the JSON field or the flag
 };
 
 /// `crspline length`: the curve and the relative accuracy.
@@ -115,9 +120,5 @@ bezier_spec parse_bezier(const document& doc);
 
 /// `crspline analyze` and `crspline plot` read the curve alone.
 curve_spec parse_analyze(const document& doc);
-
-
-/// The parameter values `crspline eval` evaluates at (--t, else "t").
-std::vector<double> eval_parameters(const document& doc);
 
 }  // namespace crspline::cli

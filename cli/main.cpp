@@ -156,7 +156,8 @@ std::string csv_field(const std::string& s, char sep) {
 // a first column "curve"; svg-path, one line of path data per curve. Every
 // error names the input and the curve; nothing is written unless all
 // curves succeed.
-std::string run_many(const command& cmd, const std::string& format, const loaded_input& in) {
+std::string run_many(const command& cmd, const std::string& format, const loaded_input& in,
+                     const number_format& numbers) {
     if (format == "svg")
         throw input_error("--format svg: one curve per figure, and " + in.name + " holds " +
                           std::to_string(in.curves.size()) + " curves (use json, csv or svg-path)");
@@ -178,7 +179,7 @@ std::string run_many(const command& cmd, const std::string& format, const loaded
                 list.push_back(std::move(item));
                 continue;
             }
-            const std::string one = convert_output(cmd.name, format, out, doc);
+            const std::string one = convert_output(cmd.name, format, out, doc, numbers);
             if (format == "svg-path") {
                 text += one;
                 continue;
@@ -254,6 +255,23 @@ void add_options(CLI::App* sub, std::string_view name, cli_options& o) {
     }
     if (name == "eval" || name == "length" || name == "sample")
         sub->add_option("--accuracy", o.accuracy, "Relative accuracy of arc lengths (default 1e-12)")->group(work);
+    if (name == "eval") {
+        sub->add_option("--u", o.u, "Normalised parameters in [0, 1], each segment an equal share (three.js getPoint)")
+            ->group(work);
+        sub->add_option("--arc-fraction", o.arc_fraction, "Fractions of the arc length in [0, 1] (three.js getPointAt)")
+            ->group(work);
+        sub->add_flag("--knots", o.knots, "Include the knot grid in the JSON output")->group(out);
+    }
+    if (name == "analyze") {
+        sub->add_flag("--summary", o.summary, "Counts only (cusps, loops, intersections, overlaps), no lists")->group(work);
+        sub->add_flag("--no-intersections", o.no_search, "Skip the search for self-intersections (the slow part)")
+            ->group(work);
+    }
+    if (name == "eval" || name == "bezier" || name == "length" || name == "sample")
+        sub->add_option("--precision", o.precision,
+                        "Significant digits of output numbers, 1..17 (default: the shortest text that reads back "
+                        "exactly)")
+            ->group(out);
     if (name == "plot") {
         sub->add_option("--title", o.title, "Figure title")->group(fig);
         sub->add_option("--size", o.size, "Figure size in pixels, WIDTHxHEIGHT (default 900x640)")->group(fig);
@@ -267,6 +285,11 @@ void add_options(CLI::App* sub, std::string_view name, cli_options& o) {
         sub->add_flag("--ticks", o.ticks_on, "Draw arc-length ticks")->group(fig);
         sub->add_option("--tick-step", o.ticks, "Arc length between ticks (default: auto)")->group(fig);
         sub->add_flag("--all", o.all_overlays, "All overlays")->group(fig);
+        sub->add_option("--aspect", o.aspect, "equal (one scale, for geometry; default) or auto (each axis fitted)")
+            ->group(fig);
+        sub->add_option("--xlim", o.xlim, "Visible x range A,B (default: fitted to the data)")->group(fig);
+        sub->add_option("--ylim", o.ylim, "Visible y range A,B (default: fitted to the data)")->group(fig);
+        sub->add_flag("--no-points", o.no_points, "No point markers (they shrink with density otherwise)")->group(fig);
     }
 }
 
@@ -324,7 +347,7 @@ int main(int argc, char** argv) {
     try {
         if (chosen->name == "demo") return run_demo(o);
         if (chosen->name == "plot") return run_plot(o);
-        // The whole output is built before anything is written.
+        // Streamed or built whole; nothing is left behind on failure.
         std::vector<std::string> formats;
         for (std::size_t b = 0, e; b < chosen->formats.size(); b = e + 1) {
             e = chosen->formats.find(' ', b);
@@ -332,16 +355,31 @@ int main(int argc, char** argv) {
             formats.emplace_back(chosen->formats.substr(b, e - b));
         }
         const std::string format = output_format(o, formats, "json");
+        const number_format numbers{precision_of(o)};
         const loaded_input in = load_input(o);
         if (!in.many) {
             const document& doc = in.curves.front();
+            // The notes (a dropped ring repeat, the columns read) are made
+            // while the command reads the document.
+            const auto notes = [&] {
+                for (const std::string& note : doc.notes) std::cerr << "crspline: note: " << note << '\n';
+            };
+            if (chosen->stream && format != "svg") {
+                // Written as computed: -o FILE through a temporary file renamed
+                // when complete; stdout after its first MiB (output_stream.hpp).
+                output_stream out(o.output);
+                chosen->stream(doc, {format, numbers}, out);
+                notes();
+                out.commit();
+                return 0;
+            }
             const output_json out = chosen->run(doc);
-            const std::string bytes = convert_output(chosen->name, format, out, doc);
-            for (const std::string& note : doc.notes) std::cerr << "crspline: note: " << note << '\n';
+            const std::string bytes = convert_output(chosen->name, format, out, doc, numbers);
+            notes();
             write_output(o.output, bytes);
             return 0;
         }
-        write_output(o.output, run_many(*chosen, format, in));
+        write_output(o.output, run_many(*chosen, format, in, numbers));
         return 0;
     } catch (const input_error& e) {
         return fail(e.what());

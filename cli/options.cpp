@@ -3,6 +3,8 @@
 #include "options.hpp"
 
 #include <cerrno>
+#include <cmath>
+#include <tuple>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -14,6 +16,7 @@
 
 #include "collection_input.hpp"
 #include "csv_input.hpp"
+#include "output_stream.hpp"
 
 namespace crspline::cli {
 
@@ -170,43 +173,19 @@ std::string output_format(const cli_options& o, const std::vector<std::string>& 
     return fmt;
 }
 
+int precision_of(const cli_options& o) {
+    if (o.precision.empty()) return 0;
+    const auto x = parse_number(o.precision);
+    if (!x || !(*x >= 1 && *x <= 17) || *x != std::floor(*x))
+        throw input_error("--precision: expected a whole number of significant digits from 1 to 17, got '" +
+                          o.precision + "'");
+    return int(*x);
+}
+
 void write_output(const std::string& path, const std::string& bytes) {
-    if (path.empty() || path == "-") {
-        std::cout.write(bytes.data(), std::streamsize(bytes.size()));
-        std::cout.flush();
-        if (!std::cout) throw input_error("<stdout>: cannot write");
-        return;
-    }
-    // A temporary file next to the target, renamed over it when complete.
-    const std::filesystem::path target(path);
-    const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
-    std::string tmp = (dir / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
-    const auto fail = [&](int err) { throw input_error(path + ": cannot write: " + std::strerror(err)); };
-    const int fd = ::mkstemp(tmp.data());
-    if (fd < 0) fail(errno);
-    std::size_t done = 0;
-    while (done < bytes.size()) {
-        const ssize_t w = ::write(fd, bytes.data() + done, bytes.size() - done);
-        if (w < 0) {
-            if (errno == EINTR) continue;
-            const int err = errno;
-            ::close(fd);
-            ::unlink(tmp.c_str());
-            fail(err);
-        }
-        done += std::size_t(w);
-    }
-    ::fchmod(fd, 0644);
-    if (::close(fd) != 0) {
-        const int err = errno;
-        ::unlink(tmp.c_str());
-        fail(err);
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        const int err = errno;
-        ::unlink(tmp.c_str());
-        fail(err);
-    }
+    output_stream out(path);
+    out.put(bytes);
+    out.commit();
 }
 
 }  // namespace crspline::cli

@@ -33,6 +33,12 @@ struct cli_options {
     std::string tension, kb_tension, kb_continuity, kb_bias;
     // eval, length, sample.
     std::string t, s, derivatives, accuracy, count, spacing, tolerance;
+    // Output numbers and eval's normalised parameters (output side).
+    std::string precision, u, arc_fraction;
+    bool knots = false;
+    bool summary = false, no_search = false;  ///< analyze
+    std::string aspect, xlim, ylim;           ///< plot: equal | auto; A,B ranges
+    bool no_points = false;                   ///< plot: no point markers
     // plot.
     std::string title, size, png, ticks, comb;
     bool comb_on = false, ticks_on = false;
@@ -57,6 +63,9 @@ std::vector<double> alpha_values(const cli_options& o);
 /// The output format: --format, else the extension of -o, else `fallback`.
 /// Throws input_error when it is not one of `allowed`.
 std::string output_format(const cli_options& o, const std::vector<std::string>& allowed, const std::string& fallback);
+
+/// --precision as a number of significant digits (0: not given, shortest).
+int precision_of(const cli_options& o);
 
 /// Writes the bytes to the file (through a temporary file in the same folder
 /// and a rename, so that nothing partial is left behind), or to stdout for

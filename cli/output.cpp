@@ -14,27 +14,13 @@ namespace crspline::cli {
 
 namespace {
 
-// Shortest text that reads back to the same double.
-void append_number(std::string& s, double x) {
-    std::array<char, 32> buf;
-    const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), x);
-    s.append(buf.data(), r.ptr);
-}
-
-const char* const axis_names[] = {"x", "y", "z", "w"};
-
 std::size_t dimension_of(const output_json& points) {
     return points.empty() ? 0 : points[0].size();
 }
 
-// Columns NAME_x, NAME_y, ... (plain x, y, ... for an empty prefix).
-void header_coords(std::vector<std::string>& h, const std::string& prefix, std::size_t dim) {
-    for (std::size_t k = 0; k < dim; ++k) h.push_back(prefix + axis_names[k]);
-}
-
 class table {
 public:
-    explicit table(char sep) : sep_(sep) {}
+    table(char sep, const number_format& nf) : sep_(sep), nf_(nf) {}
     void header(const std::vector<std::string>& names) {
         for (std::size_t i = 0; i < names.size(); ++i) text_ += (i ? std::string(1, sep_) : "") + names[i];
         text_ += '\n';
@@ -42,15 +28,12 @@ public:
     void cell(double x) {
         if (!first_) text_ += sep_;
         first_ = false;
-        append_number(text_, x);
+        append_number(text_, x, nf_);
     }
     void cell(const std::string& s) {
         if (!first_) text_ += sep_;
         first_ = false;
         text_ += s;
-    }
-    void cells(const output_json& point) {
-        for (const auto& x : point) cell(x.get<double>());
     }
     void end_row() {
         text_ += '\n';
@@ -60,60 +43,14 @@ public:
 
 private:
     char sep_;
+    number_format nf_;
     bool first_ = true;
     std::string text_;
 };
 
-std::string to_table(std::string_view command, char sep, const output_json& out, const document& input) {
-    table t(sep);
-    std::vector<std::string> h;
-    if (command == "eval") {
-        const bool by_s = out.contains("t_of_s");
-        const output_json& values = out["values"];
-        const output_json& params = by_s ? out["t_of_s"] : output_json(eval_parameters(input));
-        std::vector<std::string> orders;
-        std::size_t dim = 0;
-        for (const auto& [order, pts] : values.items()) {
-            orders.push_back(order);
-            dim = std::max(dim, dimension_of(pts));
-        }
-        if (by_s) h.push_back("s");
-        h.push_back("t");
-        for (const auto& order : orders) header_coords(h, order == "0" ? "" : "d" + order, dim);
-        t.header(h);
-        const output_json s = by_s ? output_json(input.root["s"]) : output_json();
-        for (std::size_t i = 0; i < params.size(); ++i) {
-            if (by_s) t.cell(s[i].get<double>());
-            t.cell(params[i].get<double>());
-            for (const auto& order : orders) t.cells(values[order][i]);
-            t.end_row();
-        }
-    } else if (command == "sample") {
-        const bool with_s = out.contains("s");
-        const std::size_t dim = dimension_of(out["points"]);
-        h.push_back("t");
-        if (with_s) h.push_back("s");
-        header_coords(h, "", dim);
-        t.header(h);
-        for (std::size_t i = 0; i < out["t"].size(); ++i) {
-            t.cell(out["t"][i].get<double>());
-            if (with_s) t.cell(out["s"][i].get<double>());
-            t.cells(out["points"][i]);
-            t.end_row();
-        }
-    } else if (command == "bezier") {
-        const std::size_t dim = out["segments"].empty() ? 0 : dimension_of(out["segments"][0]);
-        h = {"segment", "t0", "t1"};
-        for (int k = 0; k < 4; ++k) header_coords(h, "b" + std::to_string(k) + "_", dim);
-        t.header(h);
-        for (std::size_t i = 0; i < out["segments"].size(); ++i) {
-            t.cell(std::to_string(i));
-            t.cell(out["grid"][i].get<double>());
-            t.cell(out["grid"][i + 1].get<double>());
-            for (const auto& b : out["segments"][i]) t.cells(b);
-            t.end_row();
-        }
-    } else if (command == "length") {
+std::string to_table(std::string_view command, char sep, const output_json& out, const number_format& nf) {
+    table t(sep, nf);
+    if (command == "length") {
         t.header({"segment", "length"});
         for (std::size_t i = 0; i < out["segments"].size(); ++i) {
             t.cell(std::to_string(i));
@@ -130,15 +67,13 @@ std::string to_table(std::string_view command, char sep, const output_json& out,
 // A standalone SVG of the curve (exact cubic segments), its control polygon
 // and the points the command computed, in data coordinates under one
 // transform that flips y, so that a reader gets the numbers back exactly.
-std::string to_svg(std::string_view command, const output_json& out, const document& input) {
+std::string to_svg(std::string_view command, const output_json& out, const document& input, const number_format& nf) {
     // The curve of the input (its curve fields only: bezier takes no others).
-    output_json bez = out;
-    if (command != "bezier") {
-        document curve_only = input;
-        for (const char* key : {"t", "s", "derivatives", "accuracy", "count", "spacing", "tolerance"})
-            curve_only.root.erase(key);
-        bez = run_bezier(curve_only);
-    }
+    document curve_only = input;
+    for (const char* key : {"t", "s", "u", "arc_fraction", "knots", "derivatives", "accuracy", "count", "spacing", "tolerance"})
+        curve_only.root.erase(key);
+    const bool closed = parse_bezier(curve_only).curve.closed;
+    const output_json bez = command == "bezier" ? out : run_bezier(curve_only);
     const output_json& segments = bez["segments"];
     const std::size_t dim = dimension_of(segments[0]);
     if (dim != 2)
@@ -166,7 +101,7 @@ std::string to_svg(std::string_view command, const output_json& out, const docum
     s += "  <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
     s += "  <g transform=\"matrix(";
     for (double v : {scale, 0.0, 0.0, -scale, tx, ty}) {
-        append_number(s, v);
+        append_number(s, v, {});
         s += ' ';
     }
     s.back() = ')';
@@ -176,25 +111,25 @@ std::string to_svg(std::string_view command, const output_json& out, const docum
     for (std::size_t i = 0; i < segments.size(); ++i) {
         for (const std::size_t k : {std::size_t(0), std::size_t(3)}) {
             if (k == 3 && i + 1 < segments.size()) continue;
-            append_number(s, segments[i][k][0].get<double>());
+            append_number(s, segments[i][k][0].get<double>(), nf);
             s += ',';
-            append_number(s, segments[i][k][1].get<double>());
+            append_number(s, segments[i][k][1].get<double>(), nf);
             s += ' ';
         }
     }
     s.back() = '"';
     s += "/>\n";
     s += "    <path id=\"curve\" stroke=\"#1f77b4\" stroke-width=\"2\" vector-effect=\"non-scaling-stroke\" d=\"" +
-         svg_path_data(segments) + "\"/>\n";
+         svg_path_data(segments, closed, nf) + "\"/>\n";
     if (!marks.empty()) {
         s += "    <g id=\"points\" fill=\"#d62728\" stroke=\"none\">\n";
         for (const auto& p : marks) {
             s += "      <circle cx=\"";
-            append_number(s, p[0].get<double>());
+            append_number(s, p[0].get<double>(), nf);
             s += "\" cy=\"";
-            append_number(s, p[1].get<double>());
+            append_number(s, p[1].get<double>(), nf);
             s += "\" r=\"";
-            append_number(s, 3 / scale);
+            append_number(s, 3 / scale, {});
             s += "\"/>\n";
         }
         s += "    </g>\n";
@@ -205,39 +140,42 @@ std::string to_svg(std::string_view command, const output_json& out, const docum
 
 }  // namespace
 
-std::string svg_path_data(const output_json& segments) {
+std::string svg_path_data(const output_json& segments, bool closed, const number_format& nf) {
     std::string d;
     for (std::size_t i = 0; i < segments.size(); ++i) {
         const auto& b = segments[i];
         if (i == 0) {
             d += "M ";
-            append_number(d, b[0][0].get<double>());
+            append_number(d, b[0][0].get<double>(), nf);
             d += ' ';
-            append_number(d, b[0][1].get<double>());
+            append_number(d, b[0][1].get<double>(), nf);
         }
         d += " C";
         for (int k = 1; k < 4; ++k) {
             d += ' ';
-            append_number(d, b[k][0].get<double>());
+            append_number(d, b[k][0].get<double>(), nf);
             d += ' ';
-            append_number(d, b[k][1].get<double>());
+            append_number(d, b[k][1].get<double>(), nf);
         }
     }
+    if (closed && !segments.empty()) d += " Z";
     return d;
 }
 
 std::string convert_output(std::string_view command, const std::string& format, const output_json& out,
-                           const document& input) {
-    if (format == "csv") return to_table(command, ',', out, input);
-    if (format == "tsv") return to_table(command, '\t', out, input);
-    if (format == "svg") return to_svg(command, out, input);
-    if (format == "svg-path") {
-        const std::size_t dim = out["segments"].empty() ? 0 : dimension_of(out["segments"][0]);
-        if (dim != 2)
-            throw input_error("--format svg-path: needs 2-D points, got " + std::to_string(dim) + "-D (use json or csv)");
-        return svg_path_data(out["segments"]) + "\n";
+                           const document& input, const number_format& nf) {
+    if (format == "svg") return to_svg(command, out, input, nf);
+    if (format == "csv" || format == "tsv") {
+        if (command == "length") return to_table(command, format == "csv" ? ',' : '\t', out, nf);
     }
-    return render(out);
+    // eval, bezier, sample: their own writer, to memory.
+    const output_settings settings{format, nf};
+    output_stream text = output_stream::in_memory();
+    if (command == "eval") stream_eval(input, settings, text);
+    else if (command == "bezier") stream_bezier(input, settings, text);
+    else if (command == "sample") stream_sample(input, settings, text);
+    else return render(out, nf);
+    return std::move(text).take();
 }
 
 }  // namespace crspline::cli

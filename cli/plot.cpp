@@ -3,8 +3,10 @@
 // volumes, a curvature comb, Bézier handles, arc-length ticks).
 #include <algorithm>
 #include <cmath>
+#include <cctype>
 #include <iostream>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -132,8 +134,29 @@ figure_curve make_figure_curve(const curve_spec& spec, const overlay_options& ov
     return fc;
 }
 
+namespace {
+
+// --xlim / --ylim: "A,B" with A < B, finite.
+std::array<double, 2> range_option(const std::string& option, const std::string& text) {
+    const auto comma = text.find(',');
+    const auto a = comma == std::string::npos ? std::nullopt : parse_number(text.substr(0, comma));
+    const auto b = comma == std::string::npos ? std::nullopt : parse_number(text.substr(comma + 1));
+    if (!a || !b || !(*a < *b))
+        throw input_error(option + ": expected two increasing numbers A,B, got '" + text + "'");
+    return {*a, *b};
+}
+
+}  // namespace
+
 int run_plot(const cli_options& o) {
     const std::string format = output_format(o, {"svg", "png"}, "svg");
+    // --png FILE writes PNG bytes: a name that says otherwise is refused.
+    if (!o.png.empty()) {
+        std::string ext = std::filesystem::path(o.png).extension().string();
+        for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+        if (ext != ".png")
+            throw input_error("--png: writes a PNG file, but " + o.png + " does not end in .png (for SVG use -o)");
+    }
     const loaded_input in = load_input(o);
     figure f;
     if (!o.size.empty()) {
@@ -143,6 +166,32 @@ int run_plot(const cli_options& o) {
             h < 150 || w > 10000 || h > 10000)
             throw input_error("--size: expected WIDTHxHEIGHT in pixels, 200x150 to 10000x10000, got '" + o.size + "'");
         f.width = w, f.height = h;
+    }
+    if (!o.aspect.empty() && o.aspect != "equal" && o.aspect != "auto")
+        throw input_error("--aspect: expected equal or auto, got '" + o.aspect + "'");
+    f.equal_aspect = o.aspect != "auto";
+    if (!o.xlim.empty()) f.xlim = range_option("--xlim", o.xlim);
+    if (!o.ylim.empty()) f.ylim = range_option("--ylim", o.ylim);
+    f.point_markers = !o.no_points;
+    // Axis labels: the CSV column names chosen with --columns x,y (names,
+    // not numbers).
+    if (!o.columns.empty()) {
+        std::vector<std::string> names;
+        std::string name;
+        for (char ch : o.columns + ",") {
+            if (ch != ',') {
+                name += ch;
+                continue;
+            }
+            while (!name.empty() && name.back() == ' ') name.pop_back();
+            while (!name.empty() && name.front() == ' ') name.erase(0, 1);
+            names.push_back(name);
+            name.clear();
+        }
+        if (names.size() == 2) {
+            if (!parse_number(names[0])) f.xlabel = names[0];
+            if (!parse_number(names[1])) f.ylabel = names[1];
+        }
     }
     overlay_options ov;
     ov.cusps = o.cusps || o.all_overlays;

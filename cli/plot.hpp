@@ -40,6 +40,10 @@ struct figure {
     bool closed = false;
     std::vector<figure_curve> curves;
     int width = 900, height = 640;
+    bool equal_aspect = true;                    ///< one scale for both axes (geometry); false: each axis fitted
+    std::optional<std::array<double, 2>> xlim, ylim;  ///< visible data ranges (default: fitted to the data)
+    std::string xlabel = "x", ylabel = "y";
+    bool point_markers = true;                   ///< dots at the points, sized by their density
 };
 
 /// What to overlay on each curve.

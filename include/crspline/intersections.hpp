@@ -9,6 +9,9 @@
 // meeting is excluded (near the joint the two pieces are checked to be
 // monotone along the joint tangent, so they cannot meet there again).
 // Within a segment: the exact loops of analyze_segment (segments {i, i}).
+// Where two segments overlap (collinear pieces, or any stretch within the
+// tolerance of each other) the meetings found along it are merged into one
+// interval per pair of segments (overlaps).
 #pragma once
 
 #include <algorithm>
@@ -39,13 +42,24 @@ struct curve_intersection {
     T distance = 0;                         ///< |C_i(u_i) - C_j(u_j)|: 0 to rounding for a crossing
 };
 
+/// A stretch where two segments run within the tolerance of each other (a
+/// collinear overlap): one interval per pair of segments instead of the
+/// thousands of crossings a search would find along it.
+template <std::size_t D, class T = double>
+struct curve_overlap {
+    std::array<std::size_t, 2> segments{};  ///< i < j
+    std::array<T, 2> u{};                   ///< [start, end] of the stretch on segments[0], local, start < end
+    std::array<T, 2> v{};                   ///< the matching local parameters on segments[1] (either order)
+};
+
 template <std::size_t D, class T = double>
 struct intersection_result {
     std::vector<curve_intersection<D, T>> intersections;
+    std::vector<curve_overlap<D, T>> overlaps;  ///< runs of meetings merged into intervals
     std::vector<std::size_t> folds;  ///< collinear segments that retrace themselves (1-D folds)
     bool complete = true;            ///< false if a pair of segments exhausted the work budget
                                      ///< (overlapping collinear pieces meet in a continuum)
-    bool any() const noexcept { return !intersections.empty() || !folds.empty(); }
+    bool any() const noexcept { return !intersections.empty() || !overlaps.empty() || !folds.empty(); }
 };
 
 namespace detail {
@@ -215,6 +229,69 @@ std::vector<std::array<T, 3>> segment_pair_meetings(const cubic_segment<D, T>& A
     return found;
 }
 
+// Distance from A(u) to B near B(v): Newton on |A(u) - B(v)|^2 in v from
+// the given v (updated), relative to the pair's origins like polish.
+template <std::size_t D, class T>
+T distance_near(const cubic_segment<D, T>& A, const cubic_segment<D, T>& B, T u, T& v) {
+    const vec<D, T> p = (A.origin - B.origin) + relative_at(A, u);
+    for (int it = 0; it < 12; ++it) {
+        const vec<D, T> r = p - relative_at(B, v), d1 = B.du(v, 1), d2 = B.du(v, 2);
+        const T g = -dot(d1, r), h = dot(d1, d1) - dot(d2, r);
+        if (!(h > 0)) break;
+        const T nv = std::clamp(v - g / h, T(0), T(1));
+        if (nv == v) break;
+        v = nv;
+    }
+    return norm(p - relative_at(B, v));
+}
+
+// Removes from `found` the meetings of A and B that lie along one stretch
+// within tol of each other (consecutive meetings, by u, with the curve
+// between them within tol of B at a quarter, half and three quarters) and
+// returns those stretches, each extended by bisection to where A leaves
+// B's tolerance: {u0, u1, v0, v1}. Isolated meetings stay in `found`.
+template <std::size_t D, class T>
+std::vector<std::array<T, 4>> take_overlaps(const cubic_segment<D, T>& A, const cubic_segment<D, T>& B, T tol,
+                                            std::vector<std::array<T, 3>>& found) {
+    std::vector<std::array<T, 4>> runs;
+    if (found.size() < 2) return runs;
+    std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a[0] < b[0]; });
+    const auto joined = [&](const std::array<T, 3>& f, const std::array<T, 3>& g) {
+        for (const T s : {T(0.25), T(0.5), T(0.75)}) {
+            T v = f[1] + s * (g[1] - f[1]);
+            if (!(distance_near(A, B, f[0] + s * (g[0] - f[0]), v) <= tol)) return false;
+        }
+        return true;
+    };
+    // From inside (u_in, v_in) towards u_out: the farthest u still within tol.
+    const auto extend = [&](T u_in, T v_in, T u_out) {
+        T v = v_in;
+        if (distance_near(A, B, u_out, v) <= tol) return std::array<T, 2>{u_out, v};
+        T lo = u_in, hi = u_out, v_lo = v_in;
+        for (int it = 0; it < 60 && lo != hi; ++it) {
+            const T mid = (lo + hi) / 2;
+            T vm = v_lo;
+            if (distance_near(A, B, mid, vm) <= tol) lo = mid, v_lo = vm;
+            else hi = mid;
+        }
+        return std::array<T, 2>{lo, v_lo};
+    };
+    std::vector<std::array<T, 3>> rest;
+    for (std::size_t k = 0; k < found.size();) {
+        std::size_t e = k;
+        while (e + 1 < found.size() && joined(found[e], found[e + 1])) ++e;
+        if (e > k) {
+            const auto a = extend(found[k][0], found[k][1], T(0)), b = extend(found[e][0], found[e][1], T(1));
+            runs.push_back({a[0], b[0], a[1], b[1]});
+        } else {
+            rest.push_back(found[k]);
+        }
+        k = e + 1;
+    }
+    found = std::move(rest);
+    return runs;
+}
+
 template <std::size_t D, class T, class Pairs>
 intersection_result<D, T> find_intersections_among(const catmull_rom<D, T>& c, T tolerance, const Pairs& candidate_pairs);
 
@@ -281,8 +358,10 @@ intersection_result<D, T> find_intersections_among(const catmull_rom<D, T>& c, T
             const auto joint = next ? detail::pair_joint::next : wrap ? detail::pair_joint::wrap : detail::pair_joint::none;
             const auto& A = c.segment(i);
             const auto& B = c.segment(j);
-            for (const auto& f : detail::segment_pair_meetings(A, B, joint, tol, out.complete))
-                out.intersections.push_back({{i, j}, {f[0], f[1]}, A.at(f[0]), f[2]});
+            auto found = detail::segment_pair_meetings(A, B, joint, tol, out.complete);
+            for (const auto& r : detail::take_overlaps(A, B, tol, found))
+                out.overlaps.push_back({{i, j}, {r[0], r[1]}, {r[2], r[3]}});
+            for (const auto& f : found) out.intersections.push_back({{i, j}, {f[0], f[1]}, A.at(f[0]), f[2]});
         }
     return out;
 }

@@ -224,6 +224,17 @@ struct report_writer {
             b.push(list, std::move(m));
         }
         b.set(o, "intersections", std::move(list));
+        // A collinear overlap: one interval per pair of segments, [u0, u1]
+        // on the first and the matching [v0, v1] on the second (local).
+        value overlaps = b.array();
+        for (const auto& x : r.overlaps) {
+            value m = b.object();
+            b.set(m, "segments", index_pair(x.segments));
+            b.set(m, "u", nums(x.u));
+            b.set(m, "v", nums(x.v));
+            b.push(overlaps, std::move(m));
+        }
+        b.set(o, "overlaps", std::move(overlaps));
         b.set(o, "folds", indices(std::span<const std::size_t>(r.folds)));
         // false: some pair of segments ran out of the search's work budget
         // (the list may then miss meetings).
@@ -302,6 +313,7 @@ typename B::value report(B& b, const analysis_report<D, T>& r) {
         w.search_fields(o, *r.search, grid);
     } else {
         b.set(o, "intersections", b.null());
+        b.set(o, "overlaps", b.null());
         b.set(o, "folds", b.null());
         b.set(o, "complete", b.null());
     }

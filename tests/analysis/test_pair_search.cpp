@@ -64,6 +64,12 @@ void expect_same(const intersection_result<D, T>& a, const intersection_result<D
         EXPECT_EQ(x.point, y.point) << what << " meeting " << k;
         EXPECT_EQ(x.distance, y.distance) << what << " meeting " << k;
     }
+    ASSERT_EQ(a.overlaps.size(), b.overlaps.size()) << what;
+    for (std::size_t k = 0; k < a.overlaps.size(); ++k) {
+        EXPECT_EQ(a.overlaps[k].segments, b.overlaps[k].segments) << what << " overlap " << k;
+        EXPECT_EQ(a.overlaps[k].u, b.overlaps[k].u) << what << " overlap " << k;
+        EXPECT_EQ(a.overlaps[k].v, b.overlaps[k].v) << what << " overlap " << k;
+    }
     EXPECT_EQ(a.folds, b.folds) << what;
     EXPECT_EQ(a.complete, b.complete) << what;
 }

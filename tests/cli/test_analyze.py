@@ -63,7 +63,7 @@ def test_uniform_loop_and_centripetal_certificate():
     uniform = run_json("analyze", {"points": LOOP, "alpha": 0})
     # The keys of docs/report.md, in its order.
     assert list(uniform) == ["dimension", "segments", "cusp_t", "has_cusp", "has_self_intersection",
-                             "intersections", "folds", "complete", "certificate"]
+                             "intersections", "overlaps", "folds", "complete", "certificate"]
     assert uniform["complete"] is True
     loops = [s for s in uniform["segments"] if s["self_intersection_u"]]
     assert [s["index"] for s in loops] == [1]

@@ -108,10 +108,11 @@ def near_curve(q, curve, tol=1.0):
 
 
 def test_plot_overlays_are_drawn_where_they_belong():
-    # Cusps: one cross of 12 px at the cusp.
+    # Cusps: one cross of 12 px at the cusp, in the colour of its curve.
     full, added = overlay_paths("--cusps")
     to_px = pixel_map(full)
-    crosses = [d for style, d in added if "stroke:rgb(5%,5%,5%)" in style and "stroke-linejoin:round" in style]
+    crosses = [d for style, d in added
+               if CURVE_STROKE in style and "stroke-width:2.4" in style and "stroke-linejoin:round" in style]
     assert len(crosses) == 1, added
     ends = [q for sp in subpaths(crosses[0]) for q in sp]
     assert len(ends) == 4

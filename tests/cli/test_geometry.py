@@ -122,7 +122,7 @@ def test_eval_with_arc_lengths_round_trips():
     pts = [[0, 0, 0], [1, 2, 0], [3, 1, 1], [4, 4, 2], [6, 0, 0]]
     total = run_json("length", {"points": pts})["total"]
     s = [0, total / 3, total / 2, total]
-    out = run_json("eval", {"points": pts, "s": s, "derivatives": [0, 1]})
+    out = run_json("eval", {"points": pts, "s": s, "derivatives": [0, 1], "knots": True})
     assert len(out["t_of_s"]) == 4 and out["t_of_s"][0] == 0 and out["t_of_s"][-1] == out["grid"][-1]
     assert out["values"]["0"][0] == pts[0] and out["values"]["0"][-1] == pts[-1]
     # s(t_of_s) via the length of the prefix curve: the prefix through a knot

@@ -30,7 +30,7 @@ def to_input(case):
 
 def check_case(case):
     """Returns a list of failure descriptions (empty when the case matches)."""
-    out = run_json("eval", to_input(case))
+    out = run_json("eval", dict(to_input(case), knots=True))
     failures = []
     # The grid actually used, to 1e-12 relative.
     grid_scale = max(max_abs(case["grid_out"]), 1.0)
@@ -105,7 +105,7 @@ def test_two_vertices_is_a_straight_line():
     assert len(cases) >= 1
     for case in cases:
         assert check_case(case) == [], case["id"]
-        out = run_json("eval", to_input(case))
+        out = run_json("eval", dict(to_input(case), knots=True))
         p0, p1 = case["points"]
         g0, g1 = out["grid"]
         scale = max_abs(case["points"])

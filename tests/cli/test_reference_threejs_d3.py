@@ -167,7 +167,7 @@ def three_input(points, entry):
 
 def compare_three(points, dim, entry):
     doc = three_input(points, entry)
-    grid = run_json("eval", dict(doc, t=[]))["grid"]
+    grid = run_json("eval", dict(doc, t=[], knots=True))["grid"]
     nseg = len(grid) - 1
     expected = entry["getPoint"]
     t = []

@@ -57,7 +57,7 @@ def test_eval_at_the_knots_returns_the_points():
     for k in range(CURVES):
         doc = random_curve(rng)
         where = f"seed {SEED}, curve {k}: {doc}"
-        grid = run_json("eval", dict(doc, t=[]))["grid"]
+        grid = run_json("eval", dict(doc, t=[], knots=True))["grid"]
         pts = doc["points"]
         closed = doc.get("end") == "closed"
         assert len(grid) == len(pts) + (1 if closed else 0), where

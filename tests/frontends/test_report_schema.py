@@ -88,15 +88,15 @@ def test_cli_and_python_report_the_same_tree(case):
 
 def test_the_parts_are_the_reports_parts():
     # intersections() and certify_intersection_free() return the objects the
-    # report is made of: the search ({intersections, folds, complete, any})
+    # report is made of: the search ({intersections, overlaps, folds, complete, any})
     # and the certificate (with its own search when it runs one).
     case = next(c for c in CASES if c["name"] == "closed_figure_eight")
     c = python_curve(case["curve"])
     report = c.analyze()
     search = c.intersections()
-    assert list(search) == ["intersections", "folds", "complete", "any"]
-    assert {k: search[k] for k in ("intersections", "folds", "complete")} == \
-        {k: report[k] for k in ("intersections", "folds", "complete")}
+    assert list(search) == ["intersections", "overlaps", "folds", "complete", "any"]
+    assert {k: search[k] for k in ("intersections", "overlaps", "folds", "complete")} == \
+        {k: report[k] for k in ("intersections", "overlaps", "folds", "complete")}
     cert = c.certify_intersection_free()
     assert list(cert) == list(report["certificate"])
     assert cert["search"] == search and cert["intersects"] is True
