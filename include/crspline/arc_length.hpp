@@ -25,6 +25,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "catmull_rom.hpp"
@@ -217,17 +218,22 @@ double effective_accuracy(T acc) noexcept {
 /// Halvings of a piece before the fast path gives it to the slower one.
 inline constexpr int max_depth = 10;
 
-/// The fast path over [a, b] of segment s, whose speed's branch points are
-/// z: the smallest rule proved for [a, b], else its halves, recursively;
-/// slow(a, b) for what it cannot prove.
-template <std::size_t D, class T, class F, class Slow>
-void fast_length_pieces(const cubic_segment<D, T>& s, const speed_model& sm, const std::complex<double> (&z)[2], T a,
-                        T b, double eff, F& emit, Slow& slow, int depth) {
-    // Length estimate for the tolerance: half the speed at the middle times
-    // the width; the bound is checked against the computed length below.
+/// The rule the fast path tries first on [a, b] of segment s: choose_rule
+/// with the length estimated as half the speed at the middle times the
+/// width (the bound is checked against the computed length after).
+template <class T>
+rule_choice first_rule(const speed_model& sm, const std::complex<double> (&z)[2], T a, T b, double eff) noexcept {
     const T m = a + (b - a) / 2;
     const double estimate = double(b - a) * std::sqrt(std::max(horner(sm.q, double(m)), 0.0)) / 2;
-    const rule_choice rc = estimate > 0 ? choose_rule(sm, z, double(a), double(b), eff, estimate) : rule_choice{};
+    return estimate > 0 ? choose_rule(sm, z, double(a), double(b), eff, estimate) : rule_choice{};
+}
+
+/// The fast path over [a, b] of segment s, whose speed's branch points are
+/// z, with rc = first_rule(sm, z, a, b, eff): the smallest rule proved for
+/// [a, b], else its halves, recursively; slow(a, b) for what it cannot prove.
+template <std::size_t D, class T, class F, class Slow>
+void fast_length_pieces(const cubic_segment<D, T>& s, const speed_model& sm, const std::complex<double> (&z)[2], T a,
+                        T b, double eff, F& emit, Slow& slow, int depth, const rule_choice& rc) {
     if (rc.n) {
         const T len = gauss_length_rule(s, a, b, rc.n);
         if (rc.bound <= eff * double(len)) {
@@ -235,12 +241,23 @@ void fast_length_pieces(const cubic_segment<D, T>& s, const speed_model& sm, con
             return;
         }
     }
+    // Cut at the nearest branch point's real part (it then sits at the
+    // end of both halves, where it slows the rule least), else halve.
+    const T w = b - a;
+    const T m = rc.cut > double(a + w / 16) && rc.cut < double(b - w / 16) ? T(rc.cut) : a + w / 2;
     if (depth < max_depth && m > a && m < b) {
-        fast_length_pieces(s, sm, z, a, m, eff, emit, slow, depth + 1);
-        fast_length_pieces(s, sm, z, m, b, eff, emit, slow, depth + 1);
+        fast_length_pieces(s, sm, z, a, m, eff, emit, slow, depth + 1, first_rule(sm, z, a, m, eff));
+        fast_length_pieces(s, sm, z, m, b, eff, emit, slow, depth + 1, first_rule(sm, z, m, b, eff));
         return;
     }
     slow(a, b);
+}
+
+/// The slower path's pieces of [u0, u1] for emit: cut for the 8-point rule
+/// (rho = 0: see rule_choice::short_fraction).
+template <std::size_t D, class T, class F>
+void slow_length_pieces(const cubic_segment<D, T>& s, T u0, T u1, double eff, F& emit) {
+    for (const auto& p : length_pieces(s, u0, u1, T(eff))) emit(p.u0, p.u1, p.length, rule_choice{8, 0, 0, 0, std::numeric_limits<double>::quiet_NaN()});
 }
 
 /// Calls emit(u0, u1, length, rule_choice) for consecutive pieces covering
@@ -254,18 +271,48 @@ template <std::size_t D, class T, class F>
 void for_each_length_piece(const cubic_segment<D, T>& s, T a, T b, T acc, F&& emit) {
     if (!(b > a)) return;
     const double eff = effective_accuracy(acc);
-    auto slow = [&](T u0, T u1) {
-        // The slower path's pieces are cut for the 8-point rule (rho = 0:
-        // see rule_choice::short_fraction).
-        for (const auto& p : length_pieces(s, u0, u1, T(eff))) emit(p.u0, p.u1, p.length, rule_choice{8, 0, 0, 0});
-    };
+    auto slow = [&](T u0, T u1) { slow_length_pieces(s, u0, u1, eff, emit); };
     const speed_model sm(s);
     std::complex<double> z[2];
     if (!speed_branch_points(sm, z)) {
         slow(a, b);
         return;
     }
-    fast_length_pieces(s, sm, z, a, b, eff, emit, slow, 0);
+    fast_length_pieces(s, sm, z, a, b, eff, emit, slow, 0, first_rule(sm, z, a, b, eff));
+}
+
+/// for_each_length_piece over the whole of segments 0 .. n-1 (segment_at(i)
+/// gives segment i), with the same pieces bit for bit, calling emit(i, u0,
+/// u1, length, rule_choice). Eight segments at a time: their branch points
+/// and first rule choices side by side (speed_branch_points_block), since
+/// one segment's are chains of dependent divisions and square roots that
+/// leave the processor waiting; then each segment's pieces, in order.
+template <class T, class SegmentAt, class F>
+void for_each_segment_length_piece(std::size_t n, const SegmentAt& segment_at, T acc, F&& emit) {
+    constexpr int L = 8;
+    using segment = std::remove_cvref_t<decltype(segment_at(std::size_t(0)))>;
+    const double eff = effective_accuracy(acc);
+    segment seg[L];
+    speed_model sm[L];
+    std::complex<double> z[L][2];
+    bool ok[L];
+    rule_choice rc[L];
+    for (std::size_t i0 = 0; i0 < n; i0 += L) {
+        const int count = int(std::min<std::size_t>(L, n - i0));
+        for (int l = 0; l < count; ++l) {
+            seg[l] = segment_at(i0 + std::size_t(l));
+            sm[l] = speed_model(seg[l]);
+        }
+        speed_branch_points_block<L>(sm, count, z, ok);
+        for (int l = 0; l < count; ++l) rc[l] = ok[l] ? first_rule(sm[l], z[l], T(0), T(1), eff) : rule_choice{};
+        for (int l = 0; l < count; ++l) {
+            const std::size_t i = i0 + std::size_t(l);
+            auto emit_i = [&](T u0, T u1, T len, const rule_choice& r) { emit(i, u0, u1, len, r); };
+            auto slow = [&](T u0, T u1) { slow_length_pieces(seg[l], u0, u1, eff, emit_i); };
+            if (ok[l]) fast_length_pieces(seg[l], sm[l], z[l], T(0), T(1), eff, emit_i, slow, 0, rc[l]);
+            else slow(T(0), T(1));
+        }
+    }
 }
 
 /// Length of segment s over [a, b] to relative accuracy acc.
@@ -318,25 +365,28 @@ public:
         first_piece_.assign(nseg + 1, 0);
         segment_start_.assign(nseg + 1, T(0));
         segment_length_.assign(nseg, T(0));
-        for (std::size_t i = 0; i < nseg; ++i) {
-            first_piece_[i] = pieces_.size();
-            segment_start_[i] = total_;
-            const auto& seg = segments_[i];
-            // Summed per segment, then segment by segment: the same order
-            // as arc_length(curve), so total() is that value bit for bit
-            // (and s = arc_length(curve) is never past the table's end).
-            T within = 0;
-            detail::for_each_length_piece(seg, T(0), T(1), accuracy,
-                                          [&](T u0, T u1, T len, const detail::rule_choice& rc) {
-                                              pieces_.push_back(
-                                                  {u0, u1, total_ + within, i, rc.n, T(rc.short_fraction(eff))});
-                                              within += len;
-                                          });
-            segment_length_[i] = within;
-            total_ += within;
-        }
-        first_piece_[nseg] = pieces_.size();
-        segment_start_[nseg] = total_;
+        // Summed per segment, then segment by segment: the same order as
+        // arc_length(curve), so total() is that value bit for bit (and s =
+        // arc_length(curve) is never past the table's end). Segments
+        // without pieces (constant ones) keep length 0.
+        std::size_t next = 0;  // the first segment not started yet
+        T within = 0;
+        auto finish_until = [&](std::size_t i) {  // close the open segment, start those up to i
+            for (; next <= i && next <= nseg; ++next) {
+                if (next > 0) segment_length_[next - 1] = within, total_ += within;
+                within = 0;
+                first_piece_[next] = pieces_.size();
+                segment_start_[next] = total_;
+            }
+        };
+        detail::for_each_segment_length_piece(
+            nseg, [&](std::size_t i) { return segments_[i]; }, accuracy,
+            [&](std::size_t i, T u0, T u1, T len, const detail::rule_choice& rc) {
+                finish_until(i);
+                pieces_.push_back({u0, u1, total_ + within, i, rc.n, T(rc.short_fraction(eff))});
+                within += len;
+            });
+        finish_until(nseg);
         piece_start_.reserve(pieces_.size());
         for (const auto& p : pieces_) piece_start_.push_back(p.s0);
     }
@@ -566,9 +616,17 @@ private:
 template <std::size_t D, class T>
 T arc_length(const catmull_rom<D, T>& curve, T accuracy = T(default_accuracy)) {
     detail::check_accuracy(accuracy);
-    T sum = 0;
-    for (const auto& s : curve.segments()) sum += detail::segment_length(s, T(0), T(1), accuracy);
-    return sum;
+    // Summed per segment, then segment by segment (as arc_length_table).
+    T sum = 0, within = 0;
+    std::size_t current = 0;
+    const auto segments = curve.segments();
+    detail::for_each_segment_length_piece(
+        curve.segment_count(), [&](std::size_t i) { return segments[i]; }, accuracy,
+        [&](std::size_t i, T, T, T len, const detail::rule_choice&) {
+            if (i != current) sum += within, within = 0, current = i;
+            within += len;
+        });
+    return sum + within;
 }
 
 /// Length of the curve between parameters ta <= tb (checked).
