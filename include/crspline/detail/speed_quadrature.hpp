@@ -391,7 +391,7 @@ inline double ellipse_parameter(std::complex<double> z, double a, double b) noex
     return s + std::sqrt(std::max(s * s - 1, 0.0));
 }
 
-/// The smallest rule of 8, 16, 24 or 32 points whose error bound on [a, b]
+/// The smallest rule of 8, 12, ..., 32, 40 or 48 points whose error bound on [a, b]
 /// is at most eff * length, from the branch points z (Trefethen's bound with
 /// rho 10% closer to 1 than the nearest branch point, as a margin for the
 /// roots' rounding, and M = |A| + |B| |u| + |C| |u|^2 >= |P(u)| >=
@@ -399,24 +399,48 @@ inline double ellipse_parameter(std::complex<double> z, double a, double b) noex
 inline rule_choice choose_rule(const speed_model& sm, const std::complex<double> (&z)[2], double a, double b,
                                double eff, double length) noexcept {
     rule_choice best;
-    const double e0 = ellipse_parameter(z[0], a, b), e1 = ellipse_parameter(z[1], a, b);
-    const double rho_z = std::min(e0, e1);
-    best.cut = (e0 <= e1 ? z[0] : z[1]).real();
+    // ellipse_parameter of both points, their square roots two at a time
+    // (square roots and divisions are most of this function's time).
+    double e[2];
+    {
+        const double w = b - a;
+        double d[4], sq[2];
+        for (int k = 0; k < 2; ++k) {
+            const double y2 = z[k].imag() * z[k].imag(), da = z[k].real() - a, db = z[k].real() - b;
+            d[k] = da * da + y2, d[2 + k] = db * db + y2;
+        }
+#if defined(__SSE2__)
+        _mm_storeu_pd(d, _mm_sqrt_pd(_mm_loadu_pd(d)));
+        _mm_storeu_pd(d + 2, _mm_sqrt_pd(_mm_loadu_pd(d + 2)));
+#else
+        for (double& x : d) x = std::sqrt(x);
+#endif
+        for (int k = 0; k < 2; ++k) e[k] = (d[k] + d[2 + k]) / w, sq[k] = std::max(e[k] * e[k] - 1, 0.0);
+#if defined(__SSE2__)
+        _mm_storeu_pd(sq, _mm_sqrt_pd(_mm_loadu_pd(sq)));
+#else
+        for (double& x : sq) x = std::sqrt(x);
+#endif
+        for (int k = 0; k < 2; ++k) e[k] += sq[k];
+    }
+    const double rho_z = std::min(e[0], e[1]);
+    best.cut = (e[0] <= e[1] ? z[0] : z[1]).real();
     const double rho = 1 + 0.9 * (rho_z - 1);
     if (!(rho > 1.05)) return best;
     const double r = (b - a) / 2, mid = a + r;
     const double reach = std::abs(mid) + r * (rho + 1 / rho) / 2;
     const double M = sm.a_norm + reach * (sm.b_norm + reach * sm.c_norm);
-    const double K = r * 64 * M / (15 * (rho * rho - 1));
+    // The bound is K / rho^(2n), K = r 64 M / (15 (rho^2 - 1)) = k_num / k_den.
+    const double k_num = r * 64 * M, k_den = 15 * (rho * rho - 1);
     // rho^(2n) for n = 8, 12, ..., 32, 40, 48 by products (no pow or log
-    // per piece).
+    // per piece); the test K / rho^(2n) <= eff length without a division.
     const double r2 = rho * rho, r4 = r2 * r2, r8 = r4 * r4;
-    const double ratio = K / (eff * length);
+    const double scale = k_den * eff * length;
     double grow = r8 * r8;
     for (int n = 8; n <= max_rule; n += n < 32 ? 4 : 8, grow *= n <= 32 ? r8 : r8 * r8)
-        if (grow >= ratio) {
+        if (grow * scale >= k_num) {
             best.n = n, best.rho = rho, best.ratio = 2 * r * M / length;
-            best.bound = K / grow;
+            best.bound = k_num / (k_den * grow);
             break;
         }
     return best;
