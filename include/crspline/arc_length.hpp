@@ -323,6 +323,68 @@ T segment_length(const cubic_segment<D, T>& s, T a, T b, T acc) {
     return sum;
 }
 
+/// Newton on f(u) = (arc length to u) - target, whose derivative is the
+/// speed, kept inside the shrinking bracket [lo, hi] (bisection when a step
+/// leaves it or the speed vanishes), until |f| <= tol. Updates u and
+/// returns f(u).
+template <std::size_t D, class T, class F>
+T newton_in_bracket(const cubic_segment<D, T>& seg, F f_of, T lo, T hi, T& u, T tol) {
+    T f = 0;
+    for (int it = 0; it < 100; ++it) {
+        f = f_of(u);
+        if (std::abs(f) <= tol) break;
+        if (f < 0) lo = u;
+        else hi = u;
+        const T v = speed_du(seg, u);
+        T next = v > 0 ? u - f / v : lo + (hi - lo) / 2;
+        if (!(next > lo && next < hi)) next = lo + (hi - lo) / 2;
+        if (next == u || !(hi > lo)) break;
+        u = next;
+    }
+    return f;
+}
+
+/// Inverse arc length on one segment: its pieces (as for_each_length_piece
+/// makes them, kept only while this object lives) and u at a length from
+/// the segment's start, solved on the piece that holds it as
+/// arc_length_table does.
+template <std::size_t D, class T>
+class segment_inverse {
+public:
+    segment_inverse(const cubic_segment<D, T>& s, T acc) : seg_(s) {
+        for_each_length_piece(seg_, T(0), T(1), acc, [&](T u0, T u1, T len, const rule_choice& rc) {
+            pieces_.push_back({u0, u1, length_, rc.n});
+            length_ += len;
+        });
+    }
+    const cubic_segment<D, T>& segment() const noexcept { return seg_; }
+
+    /// u with |(length from u = 0 to u) - target| <= tol, target clamped to
+    /// [0, the segment's length].
+    T u_at(T target, T tol) const {
+        if (pieces_.empty()) return T(0);
+        target = std::clamp(target, T(0), length_);
+        std::size_t k = 0;
+        while (k + 1 < pieces_.size() && pieces_[k + 1].s0 <= target) ++k;
+        const piece& p = pieces_[k];
+        const T len = (k + 1 < pieces_.size() ? pieces_[k + 1].s0 : length_) - p.s0;
+        const T want = target - p.s0;
+        T u = len > 0 ? p.u0 + (p.u1 - p.u0) * std::clamp(want / len, T(0), T(1)) : p.u0;
+        newton_in_bracket(
+            seg_, [&](T x) { return gauss_length_rule(seg_, p.u0, x, p.rule) - want; }, p.u0, p.u1, u, tol);
+        return u;
+    }
+
+private:
+    struct piece {
+        T u0, u1, s0;  // local range, length from the segment's start to u0
+        int rule;
+    };
+    cubic_segment<D, T> seg_;
+    std::vector<piece> pieces_;
+    T length_ = 0;
+};
+
 template <class T>
 void check_accuracy(T accuracy) {
     if (!(accuracy > 0 && accuracy < 1))
@@ -573,25 +635,9 @@ private:
         return std::min(seg.t0 + u * seg.h, segments_.back().t0 + segments_.back().h);
     }
 
-    // Newton on f(u) = (arc length to u) - target, whose derivative is the
-    // speed, kept inside the shrinking bracket [lo, hi] (bisection when a
-    // step leaves it or the speed vanishes), until |f| <= tol. Updates u and
-    // returns f(u).
     template <class F>
     static T newton_in_bracket(const cubic_segment<D, T>& seg, F f_of, T lo, T hi, T& u, T tol) {
-        T f = 0;
-        for (int it = 0; it < 100; ++it) {
-            f = f_of(u);
-            if (std::abs(f) <= tol) break;
-            if (f < 0) lo = u;
-            else hi = u;
-            const T v = detail::speed_du(seg, u);
-            T next = v > 0 ? u - f / v : lo + (hi - lo) / 2;
-            if (!(next > lo && next < hi)) next = lo + (hi - lo) / 2;
-            if (next == u || !(hi > lo)) break;
-            u = next;
-        }
-        return f;
+        return detail::newton_in_bracket(seg, f_of, lo, hi, u, tol);
     }
 
     // Solve s0 + integral_{u0}^{u} speed = s for u inside one piece by Newton
@@ -627,6 +673,20 @@ T arc_length(const catmull_rom<D, T>& curve, T accuracy = T(default_accuracy)) {
             within += len;
         });
     return sum + within;
+}
+
+/// Length of every segment, each to relative accuracy `accuracy` (their
+/// sum in order is arc_length(curve, accuracy), bit for bit). Memory: the
+/// answer only (no table of quadrature pieces).
+template <std::size_t D, class T>
+std::vector<T> segment_arc_lengths(const catmull_rom<D, T>& curve, T accuracy = T(default_accuracy)) {
+    detail::check_accuracy(accuracy);
+    std::vector<T> out(curve.segment_count(), T(0));
+    const auto segments = curve.segments();
+    detail::for_each_segment_length_piece(
+        curve.segment_count(), [&](std::size_t i) { return segments[i]; }, accuracy,
+        [&](std::size_t i, T, T, T len, const detail::rule_choice&) { out[i] += len; });
+    return out;
 }
 
 /// Length of the curve between parameters ta <= tb (checked).
@@ -676,16 +736,49 @@ std::vector<vec<D, T>> evaluate_at_arc_length(const catmull_rom<D, T>& curve, co
 }
 
 /// n >= 2 points evenly spaced in arc length, first and last at the ends of
-/// the curve; spacing exact to the table's accuracy.
+/// the curve; spacing exact to the table's accuracy. With at least as many
+/// samples as segments they come from an arc_length_table (t equal to its
+/// t_at(s) bit for bit); with fewer, the memory is the output and one length
+/// per segment: no table, a segment's quadrature pieces are rebuilt when a
+/// sample falls in it and dropped after (same promise, t within it of the
+/// table's).
 template <std::size_t D, class T>
 samples<D, T> sample_arc_length(const catmull_rom<D, T>& curve, std::size_t n, T accuracy = T(default_accuracy)) {
     if (n < 2) throw invalid_input("need at least 2 samples, got " + std::to_string(n));
-    const arc_length_table<D, T> table(curve, accuracy);
+    if (n >= curve.segment_count()) {
+        const arc_length_table<D, T> table(curve, accuracy);
+        samples<D, T> out;
+        out.s.resize(n);
+        for (std::size_t k = 0; k < n; ++k) out.s[k] = table.total() * (T(k) / T(n - 1));
+        out.s.back() = table.total();
+        out.t = table.t_at(std::span<const T>(out.s));
+        out.t.front() = curve.t_min();
+        out.t.back() = curve.t_max();
+        out.points = curve.evaluate(std::span<const T>(out.t));
+        return out;
+    }
+    const std::vector<T> lengths = segment_arc_lengths(curve, accuracy);  // checks accuracy
+    // Summed in order, as arc_length(curve) and arc_length_table::total().
+    T total = 0;
+    for (T len : lengths) total += len;
     samples<D, T> out;
     out.s.resize(n);
-    for (std::size_t k = 0; k < n; ++k) out.s[k] = table.total() * (T(k) / T(n - 1));
-    out.s.back() = table.total();
-    out.t = table.t_at(std::span<const T>(out.s));
+    for (std::size_t k = 0; k < n; ++k) out.s[k] = total * (T(k) / T(n - 1));
+    out.s.back() = total;
+    out.t.resize(n);
+    // The tolerance of arc_length_table::t_at: a quarter of the accuracy.
+    const T tol = std::max(accuracy, T(4) * std::numeric_limits<T>::epsilon()) * total / T(4);
+    std::size_t i = 0;  // the segment holding the sample: the last to start at or before it
+    T start = 0;        // arc length at its start
+    std::optional<detail::segment_inverse<D, T>> inverse;
+    std::size_t inverse_of = lengths.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        while (i + 1 < lengths.size() && start + lengths[i] <= out.s[k]) start += lengths[i++];
+        if (inverse_of != i) inverse.emplace(curve.segment(i), accuracy), inverse_of = i;
+        const auto& seg = inverse->segment();
+        const T u = inverse->u_at(out.s[k] - start, tol);
+        out.t[k] = std::min(seg.t0 + u * seg.h, curve.t_max());
+    }
     out.t.front() = curve.t_min();
     out.t.back() = curve.t_max();
     out.points = curve.evaluate(std::span<const T>(out.t));
