@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Table of medians and ratios from one benchmark run (standard library only).
 
-    report.py CPP.json [JS.json] > table.md
+    report.py CPP.json [JS.json] [--cli CLI.json] > table.md
 
 CPP.json: Google Benchmark's --benchmark_out (with repetitions: the
 `_median` aggregates are used). JS.json: bench/js/threejs_bench.mjs output.
+CLI.json: bench/cli_bench.py output (the command on 10^6 points).
 Times are CPU time per item (the machine is shared: wall time includes
 other processes' turns), and every ratio compares numbers of the same run.
 """
@@ -104,11 +105,64 @@ def dimension_costs(rows, ns, p):
           f" ({'over' if worst[0] > 3 else 'within'} 3x).")
 
 
+def cli_table(path, p):
+    """bench/cli_bench.py output: the command on 10^6 points, time and peak
+    memory per point, against reading the file and the issue-16 goals."""
+    with open(path) as f:
+        cli = json.load(f)
+    n = cli["points"]
+    rf = cli.get("read_file", {})
+    p("")
+    p(f"The crspline command on a {n}-point 2-D CSV ({cli['file_bytes'] / 1e6:.1f} MB; load average "
+      f"{', '.join(f'{x:.1f}' for x in cli.get('load_avg', []))}); one run each, resources of the child "
+      f"(getrusage). Reading the file (`cat`): {rf.get('wall_s', float('nan')):.3f} s wall, "
+      f"{rf.get('peak_rss_bytes', 0) / 1e6:.1f} MB.")
+    p("")
+    p("| command | wall | user + sys CPU | peak memory | per point | goal | status |")
+    p("|---|---:|---:|---:|---:|---|---|")
+    for name, r in cli["cases"].items():
+        if r.get("timed_out"):
+            p(f"| `{name}` | > {r['wall_s']:.0f} s (stopped) | | | | | not measured |")
+            continue
+        if r.get("exit", 0) != 0:
+            p(f"| `{name}` | | | | | | failed (exit {r['exit']}) |")
+            continue
+        cpu = r["user_s"] + r["sys_s"]
+        bpp = r["peak_rss_bytes"] / n
+        goals, missed = [], []
+        if r.get("memory_goal"):
+            goals.append(f"<= {GOAL_BPP} B/point")
+            if bpp > GOAL_BPP:
+                missed.append(f"memory by {bpp / GOAL_BPP:.2f}x")
+        g = r.get("goal_wall_s")
+        if g:
+            goals.append(f"<= {g} s")
+            # On a shared machine wall time includes other processes' turns:
+            # the CPU time is what the command itself spent.
+            if cpu > g:
+                missed.append(f"time by {cpu / g:.2f}x")
+        status = "" if not goals else ("met" if not missed else "MISSED " + ", ".join(missed))
+        if g and not missed and r["wall_s"] > g:
+            status += f" (CPU time; wall {r['wall_s']:.2f} s on the loaded machine)"
+        goal_text = ", ".join(goals) if goals else "(info: prints per-point output)"
+        p(f"| `{name}` | {r['wall_s']:.2f} s | {cpu:.2f} s | {r['peak_rss_bytes'] / 1e6:.0f} MB | {bpp:.0f} B "
+          f"| {goal_text} | {status} |")
+
+
+GOAL_BPP = 150
+
+
 def main():
-    ctx, rows = load_cpp(sys.argv[1])
+    args = sys.argv[1:]
+    cli_path = None
+    if "--cli" in args:
+        k = args.index("--cli")
+        cli_path = args[k + 1]
+        del args[k:k + 2]
+    ctx, rows = load_cpp(args[0])
     js = {}
-    if len(sys.argv) > 2:
-        with open(sys.argv[2]) as f:
+    if len(args) > 1:
+        with open(args[1]) as f:
             js = json.load(f)
 
     def ns(name):  # CPU ns per item
@@ -129,7 +183,7 @@ def main():
     p("")
     p("| case | per item | accuracy / counters |")
     p("|---|---:|---|")
-    per = {"construct": "control point", "arc_length": "segment", "tessellate": "segment",
+    per = {"tessellate_walk20k/eval": "point", "tessellate_walk20k": "vertex", "construct": "control point", "arc_length": "segment", "tessellate": "segment",
            "nearest": "query", "nearest_scaling": "query", "t_at_arc_length": "query",
            "certify": "segment", "find_intersections": "segment"}
     per.update({"dimension/construct": "control point", "dimension/arc_length": "segment",
@@ -200,6 +254,23 @@ def main():
         err = ctr("t_at_arc_length", "rel_err")
         target("t_at_arc_length per query (rel. error)", f"{ta:.0f} ns ({err:.2g})", "< 100 ns at 1e-12",
                ta < 100 and err is not None and err <= 1e-12, f"by {ta / 100:.2f}x")
+    # Issue 16: arc length against one 16-point rule per segment, and
+    # tessellation per vertex against a sorted batch evaluation of as many
+    # points, with its vertex count over the asymptotic optimum.
+    al, gl = ns("arc_length_walk20k/crspline"), ns("arc_length_walk20k/gl16")
+    if al and gl:
+        err = ctr("arc_length_walk20k/crspline", "rel_err")
+        target("arc_length (walk 20k, 1e-12) / one 16-point rule, time", f"{al / gl:.1f}x (error {err:.2g})",
+               "<= 4x at <= 1e-12", al / gl <= 4 and err is not None and err <= 1e-12, f"by {al / gl / 4:.2f}x")
+    for k, tol in ((3, "1e-3"), (5, "1e-5")):
+        tv, ev = ns(f"tessellate_walk20k/crspline/{k}"), ns(f"tessellate_walk20k/eval/{k}")
+        if tv and ev:
+            target(f"tessellate (walk 20k, tol {tol}) per vertex / sorted evaluation per point", f"{tv / ev:.0f}x",
+                   "<= 50x", tv / ev <= 50, f"by {tv / ev / 50:.2f}x")
+        oo = ctr(f"tessellate_walk20k/crspline/{k}", "over_optimum")
+        if oo is not None:
+            target(f"tessellate (walk 20k, tol {tol}) vertices / asymptotic optimum", f"{oo:.3f}", "<= 1.2",
+                   oo <= 1.2, f"by {oo / 1.2:.3f}x")
     ef, ff, efb = ns("eval_sorted_float/crspline"), ns("store_floor_float"), ns("eval_sorted_float/boost")
     if ef and ff:
         p(f"| (float) eval_sorted_float / store_floor_float throughput | {ff / ef:.2f} | (info) | |")
@@ -232,6 +303,8 @@ def main():
             p(f"| {n} | {fmt_ns(t)} | {ctr(k, 'nodes_per_query'):.1f} | {s:.2f} | {fmt_ns(t / s)} |")
     intersection_scaling(rows, ns, p)
     dimension_costs(rows, ns, p)
+    if cli_path:
+        cli_table(cli_path, p)
     print("\n".join(out))
 
 

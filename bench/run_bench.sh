@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The whole benchmark run (`./run bench`): Release build of bench/ (the
 # project's normal flags, no -march), the Google Benchmark suite with
-# repetitions, the three.js peer in node, then the table of medians and ratios.
+# repetitions, the three.js peer in node, the crspline command on 10^6
+# points (time and peak memory), then the table of medians and ratios.
 #   apt: libbenchmark-dev libboost-math-dev libglm-dev nodejs npm
 #   npm: three (bench/js/package.json, installed with `npm ci`); crspline's
 #        own npm package (js/build.sh) for its three.js adapter
@@ -29,9 +30,17 @@ stamp="$(date -u +%Y%m%dT%H%M%SZ)"
     --benchmark_filter="${FILTER:-.}" \
     --benchmark_out="$results/cpp-$stamp.json" --benchmark_out_format=json
 node bench/js/threejs_bench.mjs "$results/walk1000.json" "$results/js-$stamp.json" "$reps"
-python3 bench/report.py "$results/cpp-$stamp.json" "$results/js-$stamp.json" | tee "$results/table-$stamp.md"
+# The crspline command on a 10^6-point CSV: time and peak memory of each
+# subcommand (getrusage of the child), against reading the file.
+cli_build="${CLI_BUILD:-build-bench/cli}"
+cmake -S . -B "$cli_build" -DCMAKE_BUILD_TYPE=Release -DCRSPLINE_BUILD_TESTS=OFF -DCRSPLINE_BUILD_EXAMPLES=OFF >/dev/null
+cmake --build "$cli_build" -j2 --target crspline_cli
+python3 bench/cli_bench.py "$cli_build/cli/crspline" "$results/cli-$stamp.json"
+python3 bench/report.py "$results/cpp-$stamp.json" "$results/js-$stamp.json" --cli "$results/cli-$stamp.json" |
+    tee "$results/table-$stamp.md"
 cp "$results/cpp-$stamp.json" "$results/latest-cpp.json"
 cp "$results/js-$stamp.json" "$results/latest-js.json"
+cp "$results/cli-$stamp.json" "$results/latest-cli.json"
 cp "$results/table-$stamp.md" "$results/latest-table.md"
 # Construction at 10^6 points: user-mode vs kernel time and page faults.
 echo

@@ -25,6 +25,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "catmull_rom.hpp"
@@ -217,17 +218,22 @@ double effective_accuracy(T acc) noexcept {
 /// Halvings of a piece before the fast path gives it to the slower one.
 inline constexpr int max_depth = 10;
 
-/// The fast path over [a, b] of segment s, whose speed's branch points are
-/// z: the smallest rule proved for [a, b], else its halves, recursively;
-/// slow(a, b) for what it cannot prove.
-template <std::size_t D, class T, class F, class Slow>
-void fast_length_pieces(const cubic_segment<D, T>& s, const speed_model& sm, const std::complex<double> (&z)[2], T a,
-                        T b, double eff, F& emit, Slow& slow, int depth) {
-    // Length estimate for the tolerance: half the speed at the middle times
-    // the width; the bound is checked against the computed length below.
+/// The rule the fast path tries first on [a, b] of segment s: choose_rule
+/// with the length estimated as half the speed at the middle times the
+/// width (the bound is checked against the computed length after).
+template <class T>
+rule_choice first_rule(const speed_model& sm, const std::complex<double> (&z)[2], T a, T b, double eff) noexcept {
     const T m = a + (b - a) / 2;
     const double estimate = double(b - a) * std::sqrt(std::max(horner(sm.q, double(m)), 0.0)) / 2;
-    const rule_choice rc = estimate > 0 ? choose_rule(sm, z, double(a), double(b), eff, estimate) : rule_choice{};
+    return estimate > 0 ? choose_rule(sm, z, double(a), double(b), eff, estimate) : rule_choice{};
+}
+
+/// The fast path over [a, b] of segment s, whose speed's branch points are
+/// z, with rc = first_rule(sm, z, a, b, eff): the smallest rule proved for
+/// [a, b], else its halves, recursively; slow(a, b) for what it cannot prove.
+template <std::size_t D, class T, class F, class Slow>
+void fast_length_pieces(const cubic_segment<D, T>& s, const speed_model& sm, const std::complex<double> (&z)[2], T a,
+                        T b, double eff, F& emit, Slow& slow, int depth, const rule_choice& rc) {
     if (rc.n) {
         const T len = gauss_length_rule(s, a, b, rc.n);
         if (rc.bound <= eff * double(len)) {
@@ -235,12 +241,23 @@ void fast_length_pieces(const cubic_segment<D, T>& s, const speed_model& sm, con
             return;
         }
     }
+    // Cut at the nearest branch point's real part (it then sits at the
+    // end of both halves, where it slows the rule least), else halve.
+    const T w = b - a;
+    const T m = rc.cut > double(a + w / 16) && rc.cut < double(b - w / 16) ? T(rc.cut) : a + w / 2;
     if (depth < max_depth && m > a && m < b) {
-        fast_length_pieces(s, sm, z, a, m, eff, emit, slow, depth + 1);
-        fast_length_pieces(s, sm, z, m, b, eff, emit, slow, depth + 1);
+        fast_length_pieces(s, sm, z, a, m, eff, emit, slow, depth + 1, first_rule(sm, z, a, m, eff));
+        fast_length_pieces(s, sm, z, m, b, eff, emit, slow, depth + 1, first_rule(sm, z, m, b, eff));
         return;
     }
     slow(a, b);
+}
+
+/// The slower path's pieces of [u0, u1] for emit: cut for the 8-point rule
+/// (rho = 0: see rule_choice::short_fraction).
+template <std::size_t D, class T, class F>
+void slow_length_pieces(const cubic_segment<D, T>& s, T u0, T u1, double eff, F& emit) {
+    for (const auto& p : length_pieces(s, u0, u1, T(eff))) emit(p.u0, p.u1, p.length, rule_choice{8, 0, 0, 0, std::numeric_limits<double>::quiet_NaN()});
 }
 
 /// Calls emit(u0, u1, length, rule_choice) for consecutive pieces covering
@@ -254,18 +271,48 @@ template <std::size_t D, class T, class F>
 void for_each_length_piece(const cubic_segment<D, T>& s, T a, T b, T acc, F&& emit) {
     if (!(b > a)) return;
     const double eff = effective_accuracy(acc);
-    auto slow = [&](T u0, T u1) {
-        // The slower path's pieces are cut for the 8-point rule (rho = 0:
-        // see rule_choice::short_fraction).
-        for (const auto& p : length_pieces(s, u0, u1, T(eff))) emit(p.u0, p.u1, p.length, rule_choice{8, 0, 0, 0});
-    };
+    auto slow = [&](T u0, T u1) { slow_length_pieces(s, u0, u1, eff, emit); };
     const speed_model sm(s);
     std::complex<double> z[2];
     if (!speed_branch_points(sm, z)) {
         slow(a, b);
         return;
     }
-    fast_length_pieces(s, sm, z, a, b, eff, emit, slow, 0);
+    fast_length_pieces(s, sm, z, a, b, eff, emit, slow, 0, first_rule(sm, z, a, b, eff));
+}
+
+/// for_each_length_piece over the whole of segments 0 .. n-1 (segment_at(i)
+/// gives segment i), with the same pieces bit for bit, calling emit(i, u0,
+/// u1, length, rule_choice). Eight segments at a time: their branch points
+/// and first rule choices side by side (speed_branch_points_block), since
+/// one segment's are chains of dependent divisions and square roots that
+/// leave the processor waiting; then each segment's pieces, in order.
+template <class T, class SegmentAt, class F>
+void for_each_segment_length_piece(std::size_t n, const SegmentAt& segment_at, T acc, F&& emit) {
+    constexpr int L = 8;
+    using segment = std::remove_cvref_t<decltype(segment_at(std::size_t(0)))>;
+    const double eff = effective_accuracy(acc);
+    segment seg[L];
+    speed_model sm[L];
+    std::complex<double> z[L][2];
+    bool ok[L];
+    rule_choice rc[L];
+    for (std::size_t i0 = 0; i0 < n; i0 += L) {
+        const int count = int(std::min<std::size_t>(L, n - i0));
+        for (int l = 0; l < count; ++l) {
+            seg[l] = segment_at(i0 + std::size_t(l));
+            sm[l] = speed_model(seg[l]);
+        }
+        speed_branch_points_block<L>(sm, count, z, ok);
+        for (int l = 0; l < count; ++l) rc[l] = ok[l] ? first_rule(sm[l], z[l], T(0), T(1), eff) : rule_choice{};
+        for (int l = 0; l < count; ++l) {
+            const std::size_t i = i0 + std::size_t(l);
+            auto emit_i = [&](T u0, T u1, T len, const rule_choice& r) { emit(i, u0, u1, len, r); };
+            auto slow = [&](T u0, T u1) { slow_length_pieces(seg[l], u0, u1, eff, emit_i); };
+            if (ok[l]) fast_length_pieces(seg[l], sm[l], z[l], T(0), T(1), eff, emit_i, slow, 0, rc[l]);
+            else slow(T(0), T(1));
+        }
+    }
 }
 
 /// Length of segment s over [a, b] to relative accuracy acc.
@@ -275,6 +322,68 @@ T segment_length(const cubic_segment<D, T>& s, T a, T b, T acc) {
     for_each_length_piece(s, a, b, acc, [&](T, T, T len, const rule_choice&) { sum += len; });
     return sum;
 }
+
+/// Newton on f(u) = (arc length to u) - target, whose derivative is the
+/// speed, kept inside the shrinking bracket [lo, hi] (bisection when a step
+/// leaves it or the speed vanishes), until |f| <= tol. Updates u and
+/// returns f(u).
+template <std::size_t D, class T, class F>
+T newton_in_bracket(const cubic_segment<D, T>& seg, F f_of, T lo, T hi, T& u, T tol) {
+    T f = 0;
+    for (int it = 0; it < 100; ++it) {
+        f = f_of(u);
+        if (std::abs(f) <= tol) break;
+        if (f < 0) lo = u;
+        else hi = u;
+        const T v = speed_du(seg, u);
+        T next = v > 0 ? u - f / v : lo + (hi - lo) / 2;
+        if (!(next > lo && next < hi)) next = lo + (hi - lo) / 2;
+        if (next == u || !(hi > lo)) break;
+        u = next;
+    }
+    return f;
+}
+
+/// Inverse arc length on one segment: its pieces (as for_each_length_piece
+/// makes them, kept only while this object lives) and u at a length from
+/// the segment's start, solved on the piece that holds it as
+/// arc_length_table does.
+template <std::size_t D, class T>
+class segment_inverse {
+public:
+    segment_inverse(const cubic_segment<D, T>& s, T acc) : seg_(s) {
+        for_each_length_piece(seg_, T(0), T(1), acc, [&](T u0, T u1, T len, const rule_choice& rc) {
+            pieces_.push_back({u0, u1, length_, rc.n});
+            length_ += len;
+        });
+    }
+    const cubic_segment<D, T>& segment() const noexcept { return seg_; }
+
+    /// u with |(length from u = 0 to u) - target| <= tol, target clamped to
+    /// [0, the segment's length].
+    T u_at(T target, T tol) const {
+        if (pieces_.empty()) return T(0);
+        target = std::clamp(target, T(0), length_);
+        std::size_t k = 0;
+        while (k + 1 < pieces_.size() && pieces_[k + 1].s0 <= target) ++k;
+        const piece& p = pieces_[k];
+        const T len = (k + 1 < pieces_.size() ? pieces_[k + 1].s0 : length_) - p.s0;
+        const T want = target - p.s0;
+        T u = len > 0 ? p.u0 + (p.u1 - p.u0) * std::clamp(want / len, T(0), T(1)) : p.u0;
+        newton_in_bracket(
+            seg_, [&](T x) { return gauss_length_rule(seg_, p.u0, x, p.rule) - want; }, p.u0, p.u1, u, tol);
+        return u;
+    }
+
+private:
+    struct piece {
+        T u0, u1, s0;  // local range, length from the segment's start to u0
+        int rule;
+    };
+    cubic_segment<D, T> seg_;
+    std::vector<piece> pieces_;
+    T length_ = 0;
+};
 
 template <class T>
 void check_accuracy(T accuracy) {
@@ -318,25 +427,28 @@ public:
         first_piece_.assign(nseg + 1, 0);
         segment_start_.assign(nseg + 1, T(0));
         segment_length_.assign(nseg, T(0));
-        for (std::size_t i = 0; i < nseg; ++i) {
-            first_piece_[i] = pieces_.size();
-            segment_start_[i] = total_;
-            const auto& seg = segments_[i];
-            // Summed per segment, then segment by segment: the same order
-            // as arc_length(curve), so total() is that value bit for bit
-            // (and s = arc_length(curve) is never past the table's end).
-            T within = 0;
-            detail::for_each_length_piece(seg, T(0), T(1), accuracy,
-                                          [&](T u0, T u1, T len, const detail::rule_choice& rc) {
-                                              pieces_.push_back(
-                                                  {u0, u1, total_ + within, i, rc.n, T(rc.short_fraction(eff))});
-                                              within += len;
-                                          });
-            segment_length_[i] = within;
-            total_ += within;
-        }
-        first_piece_[nseg] = pieces_.size();
-        segment_start_[nseg] = total_;
+        // Summed per segment, then segment by segment: the same order as
+        // arc_length(curve), so total() is that value bit for bit (and s =
+        // arc_length(curve) is never past the table's end). Segments
+        // without pieces (constant ones) keep length 0.
+        std::size_t next = 0;  // the first segment not started yet
+        T within = 0;
+        auto finish_until = [&](std::size_t i) {  // close the open segment, start those up to i
+            for (; next <= i && next <= nseg; ++next) {
+                if (next > 0) segment_length_[next - 1] = within, total_ += within;
+                within = 0;
+                first_piece_[next] = pieces_.size();
+                segment_start_[next] = total_;
+            }
+        };
+        detail::for_each_segment_length_piece(
+            nseg, [&](std::size_t i) { return segments_[i]; }, accuracy,
+            [&](std::size_t i, T u0, T u1, T len, const detail::rule_choice& rc) {
+                finish_until(i);
+                pieces_.push_back({u0, u1, total_ + within, i, rc.n, T(rc.short_fraction(eff))});
+                within += len;
+            });
+        finish_until(nseg);
         piece_start_.reserve(pieces_.size());
         for (const auto& p : pieces_) piece_start_.push_back(p.s0);
     }
@@ -523,25 +635,9 @@ private:
         return std::min(seg.t0 + u * seg.h, segments_.back().t0 + segments_.back().h);
     }
 
-    // Newton on f(u) = (arc length to u) - target, whose derivative is the
-    // speed, kept inside the shrinking bracket [lo, hi] (bisection when a
-    // step leaves it or the speed vanishes), until |f| <= tol. Updates u and
-    // returns f(u).
     template <class F>
     static T newton_in_bracket(const cubic_segment<D, T>& seg, F f_of, T lo, T hi, T& u, T tol) {
-        T f = 0;
-        for (int it = 0; it < 100; ++it) {
-            f = f_of(u);
-            if (std::abs(f) <= tol) break;
-            if (f < 0) lo = u;
-            else hi = u;
-            const T v = detail::speed_du(seg, u);
-            T next = v > 0 ? u - f / v : lo + (hi - lo) / 2;
-            if (!(next > lo && next < hi)) next = lo + (hi - lo) / 2;
-            if (next == u || !(hi > lo)) break;
-            u = next;
-        }
-        return f;
+        return detail::newton_in_bracket(seg, f_of, lo, hi, u, tol);
     }
 
     // Solve s0 + integral_{u0}^{u} speed = s for u inside one piece by Newton
@@ -566,9 +662,31 @@ private:
 template <std::size_t D, class T>
 T arc_length(const catmull_rom<D, T>& curve, T accuracy = T(default_accuracy)) {
     detail::check_accuracy(accuracy);
-    T sum = 0;
-    for (const auto& s : curve.segments()) sum += detail::segment_length(s, T(0), T(1), accuracy);
-    return sum;
+    // Summed per segment, then segment by segment (as arc_length_table).
+    T sum = 0, within = 0;
+    std::size_t current = 0;
+    const auto segments = curve.segments();
+    detail::for_each_segment_length_piece(
+        curve.segment_count(), [&](std::size_t i) { return segments[i]; }, accuracy,
+        [&](std::size_t i, T, T, T len, const detail::rule_choice&) {
+            if (i != current) sum += within, within = 0, current = i;
+            within += len;
+        });
+    return sum + within;
+}
+
+/// Length of every segment, each to relative accuracy `accuracy` (their
+/// sum in order is arc_length(curve, accuracy), bit for bit). Memory: the
+/// answer only (no table of quadrature pieces).
+template <std::size_t D, class T>
+std::vector<T> segment_arc_lengths(const catmull_rom<D, T>& curve, T accuracy = T(default_accuracy)) {
+    detail::check_accuracy(accuracy);
+    std::vector<T> out(curve.segment_count(), T(0));
+    const auto segments = curve.segments();
+    detail::for_each_segment_length_piece(
+        curve.segment_count(), [&](std::size_t i) { return segments[i]; }, accuracy,
+        [&](std::size_t i, T, T, T len, const detail::rule_choice&) { out[i] += len; });
+    return out;
 }
 
 /// Length of the curve between parameters ta <= tb (checked).
@@ -618,16 +736,49 @@ std::vector<vec<D, T>> evaluate_at_arc_length(const catmull_rom<D, T>& curve, co
 }
 
 /// n >= 2 points evenly spaced in arc length, first and last at the ends of
-/// the curve; spacing exact to the table's accuracy.
+/// the curve; spacing exact to the table's accuracy. With at least as many
+/// samples as segments they come from an arc_length_table (t equal to its
+/// t_at(s) bit for bit); with fewer, the memory is the output and one length
+/// per segment: no table, a segment's quadrature pieces are rebuilt when a
+/// sample falls in it and dropped after (same promise, t within it of the
+/// table's).
 template <std::size_t D, class T>
 samples<D, T> sample_arc_length(const catmull_rom<D, T>& curve, std::size_t n, T accuracy = T(default_accuracy)) {
     if (n < 2) throw invalid_input("need at least 2 samples, got " + std::to_string(n));
-    const arc_length_table<D, T> table(curve, accuracy);
+    if (n >= curve.segment_count()) {
+        const arc_length_table<D, T> table(curve, accuracy);
+        samples<D, T> out;
+        out.s.resize(n);
+        for (std::size_t k = 0; k < n; ++k) out.s[k] = table.total() * (T(k) / T(n - 1));
+        out.s.back() = table.total();
+        out.t = table.t_at(std::span<const T>(out.s));
+        out.t.front() = curve.t_min();
+        out.t.back() = curve.t_max();
+        out.points = curve.evaluate(std::span<const T>(out.t));
+        return out;
+    }
+    const std::vector<T> lengths = segment_arc_lengths(curve, accuracy);  // checks accuracy
+    // Summed in order, as arc_length(curve) and arc_length_table::total().
+    T total = 0;
+    for (T len : lengths) total += len;
     samples<D, T> out;
     out.s.resize(n);
-    for (std::size_t k = 0; k < n; ++k) out.s[k] = table.total() * (T(k) / T(n - 1));
-    out.s.back() = table.total();
-    out.t = table.t_at(std::span<const T>(out.s));
+    for (std::size_t k = 0; k < n; ++k) out.s[k] = total * (T(k) / T(n - 1));
+    out.s.back() = total;
+    out.t.resize(n);
+    // The tolerance of arc_length_table::t_at: a quarter of the accuracy.
+    const T tol = std::max(accuracy, T(4) * std::numeric_limits<T>::epsilon()) * total / T(4);
+    std::size_t i = 0;  // the segment holding the sample: the last to start at or before it
+    T start = 0;        // arc length at its start
+    std::optional<detail::segment_inverse<D, T>> inverse;
+    std::size_t inverse_of = lengths.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        while (i + 1 < lengths.size() && start + lengths[i] <= out.s[k]) start += lengths[i++];
+        if (inverse_of != i) inverse.emplace(curve.segment(i), accuracy), inverse_of = i;
+        const auto& seg = inverse->segment();
+        const T u = inverse->u_at(out.s[k] - start, tol);
+        out.t[k] = std::min(seg.t0 + u * seg.h, curve.t_max());
+    }
     out.t.front() = curve.t_min();
     out.t.back() = curve.t_max();
     out.points = curve.evaluate(std::span<const T>(out.t));

@@ -208,6 +208,41 @@ TEST(ArcLength, EvenSamplesAreEvenlySpacedToTheAccuracy) {
     }
 }
 
+TEST(ArcLength, FewEvenSamplesOnManySegmentsNeedNoTable) {
+    // Fewer samples than segments take the path without a table (segment
+    // lengths, then each sample's segment alone): the same promise against
+    // the same closed form, and the same total as the table.
+    CRSPLINE_SEEDED(s, 305);
+    std::mt19937_64 rng(s);
+    for (double acc : {1e-6, 1e-12}) {
+        const auto f = random_folded_line(rng, 400);
+        catmull_rom<3> c(f.points);
+        for (std::size_t n : {2u, 7u, 101u}) {
+            ASSERT_LT(n, c.segment_count());
+            const auto smp = sample_arc_length(c, n, acc);
+            ASSERT_EQ(smp.points.size(), n);
+            EXPECT_EQ(smp.points.front(), f.points.front());
+            EXPECT_EQ(smp.points.back(), f.points.back());
+            EXPECT_EQ(smp.s.back(), arc_length_table<3>(c, acc).total());
+            const double L = line_length(c, f.dir, c.t_min(), c.t_max()), step = L / double(n - 1);
+            for (std::size_t k = 1; k < n; ++k) {
+                // As in EvenSamplesAreEvenlySpacedToTheAccuracy: both ends of
+                // a piece within the accuracy, plus rounding of the sums.
+                const double piece = line_length(c, f.dir, smp.t[k - 1], smp.t[k]);
+                EXPECT_LE(std::abs(piece - step), 4 * acc * L) << "sample " << k << " of " << n;
+            }
+        }
+    }
+    // segment_arc_lengths adds up to arc_length(curve) in order, bit for bit.
+    const auto f = random_folded_line(rng, 50);
+    catmull_rom<3> c(f.points);
+    const auto lengths = segment_arc_lengths(c, 1e-12);
+    ASSERT_EQ(lengths.size(), c.segment_count());
+    double sum = 0;
+    for (double x : lengths) sum += x;
+    EXPECT_EQ(sum, arc_length(c, 1e-12));
+}
+
 TEST(ArcLength, ZeroSpeedInsideSegments) {
     // A uniform fold-back (the curve stops and retraces) and coincident points.
     const std::vector<P2> fold{P2{{0, 0}}, P2{{3, 0}}, P2{{1, 0}}, P2{{4, 0}}};
