@@ -116,6 +116,27 @@ struct options {
 /// points[i] and points[i+1] (points[0] for the last segment of a closed
 /// curve) on [grid[i], grid[i+1]]; an interior knot belongs to the segment on
 /// its right, the last knot to the last segment.
+///
+/// Knot intervals and knots. Each segment keeps its knot interval h(i) as it
+/// was computed, |P(i+1) - P(i)|^alpha (or, for an explicit grid, the grid's
+/// difference), and the shape comes from these intervals only: tangents at
+/// the vertices, Bézier points, segment(i) as a cubic in u, and every
+/// analysis. The knots grid() are the running sums of the intervals, rounded:
+/// an interval far below the sum before it (a short chord after long ones)
+/// would lose most of its digits if it were recovered as a difference of
+/// knots. The map from t to a segment's u uses the stored knots, u = (t -
+/// grid[i]) / (grid[i+1] - grid[i]), so that t over [grid[i], grid[i+1]]
+/// traces the whole segment, no more, and the curve is continuous in t.
+/// Within segment i the speed dx/dt is therefore the exact curve's times
+/// h(i) / d(i), d(i) = grid[i+1] - grid[i], where |d(i) - h(i)| <= eps *
+/// grid[i+1] (eps = machine epsilon of T: one rounding of the sum, one of the
+/// difference): the knots' own precision. See intervals(), tangents().
+///
+/// Rebuilding: options() (with grid() when explicit_grid()) gives the same
+/// curve bit for bit. grid() passed back as an explicit grid of an alpha
+/// curve gives the same knots bit for bit but intervals d(i) instead of h(i)
+/// (equal whenever the sums are exact, as for alpha = 0), a curve whose
+/// shape is that of intervals each within eps * grid[i+1] of the originals.
 template <std::size_t D, class T = double>
 class catmull_rom {
 public:
@@ -153,6 +174,11 @@ public:
     // --- what the curve is made of ------------------------------------------
     std::span<const point> points() const noexcept { return points_; }
     std::span<const T> grid() const noexcept { return grid_; }
+    /// Knot interval h(i) of each segment as computed: |P(i+1) - P(i)|^alpha
+    /// (0 for coincident points), or grid[i+1] - grid[i] for an explicit grid
+    /// and hermite(). The shape is made from these; grid() holds their
+    /// rounded running sums (see the class comment).
+    std::span<const T> intervals() const noexcept { return h_; }
     bool closed() const noexcept { return closed_; }
 
     /// How the curve was built: the options given to the constructor, so that
@@ -174,9 +200,11 @@ public:
     T t_min() const noexcept { return grid_.front(); }
     T t_max() const noexcept { return grid_.back(); }
 
-    /// Segment i in power-basis form. The curve stores points, knots, 1/h
-    /// and one tangent per vertex (68 bytes per 3-D point with its bucket
-    /// entry, not the 120 of a cubic_segment): segments are computed on
+    /// Segment i in power-basis form: its u-tangents h(i) dx/dt come from the
+    /// interval h(i), its t0, h and inv_h from the stored knots (see the class
+    /// comment). The curve stores points, knots, intervals, 1/h and one
+    /// tangent per vertex (76 bytes per 3-D point with its bucket entry, not
+    /// the 120 of a cubic_segment): segments are computed on
     /// access, by the same arithmetic every time, so every path sees the
     /// same bits.
     segment_type segment(std::size_t i) const {
@@ -239,11 +267,20 @@ public:
     /// All segments, as a random-access range of values (see segment()).
     segment_view segments() const noexcept { return segment_view(this); }
 
-    /// Tangents dx/dt at the start and end of segment i (equal at interior
-    /// knots unless Kochanek-Bartels continuity breaks them).
+    /// Tangents dx/dt at the start and end of segment i, as evaluate(t, 1)
+    /// gives them: the vertex tangents of the exact curve times h(i) / d(i)
+    /// (exactly them when the stored knots' difference d(i) is the interval
+    /// h(i), as it is for explicit grids and whenever the sums are exact; see
+    /// the class comment). With the stored knots' difference they give the
+    /// Bézier points, B1 = B0 + d(i)/3 v0 as bezier() computes it from h(i).
+    /// Equal at interior knots (up to that factor) unless Kochanek-Bartels
+    /// continuity breaks them.
     std::array<point, 2> tangents(std::size_t i) const {
         check_segment_index(i);
-        return {out_tangent(i), in_tangent(next(i))};
+        const T d = grid_[i + 1] - grid_[i];
+        if (d == h_[i]) return {out_tangent(i), in_tangent(next(i))};
+        const T r = h_[i] * inv_h_[i];  // h / d; 0 when d is 0 (no t to evaluate at)
+        return {r * out_tangent(i), r * in_tangent(next(i))};
     }
 
     // --- evaluation -----------------------------------------------------------
@@ -337,12 +374,15 @@ public:
     }
 
     /// Bézier control points of segment i: B0 = points[i], B3 = the next
-    /// point, exactly; B1 and B2 from the Hermite tangents.
+    /// point, exactly; B1 and B2 from the vertex tangents and the interval
+    /// h(i) (not the difference of the rounded knots).
     std::array<point, 4> bezier(std::size_t i) const {
-        const auto [v0, v1] = tangents(i);
+        check_segment_index(i);
+        const point& v0 = out_tangent(i);
+        const point& v1 = in_tangent(next(i));
         const point& p0 = points_[i];
         const point& p1 = points_[next(i)];
-        const T h = grid_[i + 1] - grid_[i];
+        const T h = h_[i];
         return {p0, p0 + (h / T(3)) * v0, p1 - (h / T(3)) * v1, p1};
     }
     std::vector<std::array<point, 4>> bezier() const {
@@ -358,7 +398,8 @@ private:
     // out_tangent(i) and in_tangent(next(i)).
     detail::storage<point> points_;
     detail::storage<T> grid_;
-    detail::storage<T> inv_h_;        // 1 / (grid[i+1] - grid[i]), 0 for a zero interval; one per segment
+    detail::storage<T> h_;            // knot interval h(i) as computed (see intervals()); one per segment
+    detail::storage<T> inv_h_;        // 1 / (grid[i+1] - grid[i]), 0 for a zero difference: the t -> u map
     detail::storage<point> tangent_;  // outgoing dx/dt at each vertex; for an open curve the last is the incoming one
     detail::storage<point> in_;       // incoming dx/dt at each vertex, only when continuity can make it differ
     bool closed_ = false;
@@ -369,14 +410,15 @@ private:
     const point& out_tangent(std::size_t i) const noexcept { return tangent_[i]; }
     const point& in_tangent(std::size_t j) const noexcept { return in_.empty() ? tangent_[j] : in_[j]; }
 
-    /// Segment i, unchecked: the Hermite segment of segment_type::hermite
-    /// with 1/h from the table (no division). (detail::hermite_point3 is the
-    /// same arithmetic in 4-lane registers.)
+    /// Segment i, unchecked: the Hermite segment of segment_type::hermite,
+    /// its u-tangents from the interval h(i), its t-range [grid[i],
+    /// grid[i+1]] with 1/d from the table (no division). (detail::hermite_point3
+    /// is the same arithmetic in 4-lane registers.)
     segment_type make_segment(std::size_t i) const noexcept {
         const std::size_t j = next(i);
-        const T h = grid_[i + 1] - grid_[i];
-        return segment_type::hermite(points_[i], points_[j], h * out_tangent(i), h * in_tangent(j), grid_[i], h,
-                                     inv_h_[i]);
+        const T h = h_[i];
+        return segment_type::hermite(points_[i], points_[j], h * out_tangent(i), h * in_tangent(j), grid_[i],
+                                     grid_[i + 1] - grid_[i], inv_h_[i]);
     }
     // locate(): bucket b = floor((t - t_min) * bucket_scale_) holds the
     // segments bucket_first_[b] .. bucket_first_[b + 1] as candidates.
@@ -620,6 +662,7 @@ private:
         const point* W = in_.empty() ? tangent_.data() : in_.data();
         const T* g = grid_.data();
         const T* ih = inv_h_.data();
+        const T* hs = h_.data();
         const std::size_t nseg = segment_count();
         const std::uint32_t* first = bucket_first_.data();
         const T scale = bucket_scale_, bmax = bucket_max_;
@@ -660,7 +703,7 @@ private:
                 const std::size_t i = idx[q], j = Closed && i + 1 == np ? 0 : i + 1;
                 // Open: i + 1 < np, so P[i] and V[i] are not the last entries.
                 const __m256d r = detail::hermite_point3<!Closed>(P[i].v.data(), P[j].v.data(), V[i].v.data(),
-                                                                  W[j].v.data(), g[i + 1] - g[i], u[q]);
+                                                                  W[j].v.data(), hs[i], u[q]);
                 if (q < wide) [[likely]] _mm256_storeu_pd(out[k0 + q].v.data(), r);
                 else detail::store3(out[k0 + q].v.data(), r);
             }
@@ -738,11 +781,13 @@ void catmull_rom<D, T>::build_hermite(std::span<const point> p, std::span<const 
     }
     check_grid(grid, nseg + 1, closed);
 
-    // 2. Store points, knots and 1/h as build() does.
+    // 2. Store points, knots, intervals (the grid's differences) and 1/h as
+    //    build() does.
     points_.assign(p.begin(), p.end());
     grid_.assign(grid.begin(), grid.end());
+    h_.resize(nseg);
     inv_h_.resize(nseg);
-    for (std::size_t i = 0; i < nseg; ++i) inv_h_[i] = T(1) / (grid_[i + 1] - grid_[i]);
+    for (std::size_t i = 0; i < nseg; ++i) h_[i] = grid_[i + 1] - grid_[i], inv_h_[i] = T(1) / h_[i];
 
     // 3. Tangents: one shared array when incoming and outgoing agree at every
     //    vertex that uses both (bit for bit), else both arrays. An open
@@ -779,12 +824,14 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
         n, D, [&](std::size_t i, std::size_t k) { return p[i][k]; }, opt.alpha, opt.grid, closed_,
         end_of(opt.start), end_of(opt.end), double(opt.tension), opt.kb.tension, opt.kb.continuity, opt.kb.bias);
 
-    // 2. Parameterization: knots from alpha, or the given grid, written in
-    //    place (one pass over the points, no temporaries).
+    // 2. Parameterization: intervals from alpha, kept as computed, and the
+    //    knots as their running sums; or the given grid and its differences.
     points_.assign(p.begin(), p.end());
     const std::size_t nseg = closed_ ? n : n - 1;
+    h_.resize(nseg);
     if (opt.grid) {
         grid_.assign(opt.grid->begin(), opt.grid->end());
+        for (std::size_t i = 0; i < nseg; ++i) h_[i] = grid_[i + 1] - grid_[i];
     } else {
         const double alpha = opt.alpha.value_or(centripetal);
         if (opt.strict && alpha > 0) {
@@ -803,23 +850,21 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
             }
         }
         grid_.resize(nseg + 1);
+        detail::fill_intervals(p, alpha, closed_, h_.data());
         grid_[0] = 0;
-        detail::fill_intervals(p, alpha, closed_, grid_.data() + 1);
-        for (std::size_t i = 1; i <= nseg; ++i) grid_[i] += grid_[i - 1];
+        for (std::size_t i = 0; i < nseg; ++i) grid_[i + 1] = grid_[i] + h_[i];
     }
 
     // 3. Chord velocities v(i) = (P(i+1) - P(i)) / h(i), as the product with
-    //    1 / h(i) (which the segments keep); zero for a zero knot interval
-    //    (the limit convention for coincident points). The curve is the
-    //    Catmull-Rom curve on the knots as stored: h(i) is the difference of
-    //    stored knots, so grid() passed back as an explicit grid gives the
-    //    same curve bit for bit (and the splines package's exact reference,
-    //    defined on its rounded grid, is matched).
+    //    1 / h(i); zero for a zero knot interval (the limit convention for
+    //    coincident points). h(i) is the interval as computed, never a
+    //    difference of the rounded knots (issue 13: a difference of sums near
+    //    1e6 keeps only a few digits of an interval of 1e-9).
     inv_h_.resize(nseg);
     for (std::size_t i = 0; i < nseg; ++i) {
         // (Written so that the compiler can divide two at a time: no
         // division under a condition.)
-        const T h = grid_[i + 1] - grid_[i];
+        const T h = h_[i];
         const T r = T(1) / (h > 0 ? h : T(1));
         inv_h_[i] = h > 0 ? r : T(0);
     }
@@ -848,10 +893,10 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
     if (last_kb > first_kb) {
         std::size_t before = first_kb == 0 ? nseg - 1 : first_kb - 1;
         point v0 = chord_velocity(before);
-        T h0 = grid_[before + 1] - grid_[before];
+        T h0 = h_[before];
         for (std::size_t i = first_kb; i < last_kb; ++i) {
             const point v1 = chord_velocity(i);  // i < nseg: the segment after vertex i
-            const T h1 = grid_[i + 1] - grid_[i], sum = h0 + h1;
+            const T h1 = h_[i], sum = h0 + h1;
             if (!(sum > 0)) {
                 tangent_[i] = point{};
                 if (split) in_[i] = point{};
@@ -905,8 +950,14 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
             for (std::size_t i = 0; i < n; ++i)
                 if (!(i == n - 1 && end_given)) in_[i] *= keep;
     }
+    // 5. The t -> u map: 1 / d(i) of the stored knots, which differs from
+    //    1 / h(i) only where a sum was rounded (never for an explicit grid).
+    for (std::size_t i = 0; i < nseg; ++i) {
+        const T d = grid_[i + 1] - grid_[i];
+        if (d != h_[i]) inv_h_[i] = d > 0 ? T(1) / d : T(0);
+    }
     build_buckets();
-    // 5. Remember how the curve was built (the grid is grid_, not copied).
+    // 6. Remember how the curve was built (the grid is grid_, not copied).
     options_.alpha = opt.grid ? std::nullopt : std::optional<double>(opt.alpha.value_or(centripetal));
     options_.grid.reset();
     options_.start = opt.start;
