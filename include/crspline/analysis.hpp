@@ -573,12 +573,12 @@ template <std::size_t D, class T>
 std::optional<std::pair<std::array<vec<D, T>, 4>, std::array<T, 3>>> plain_neighbourhood(
     const catmull_rom<D, T>& c, std::size_t i) {
     const auto pts = c.points();
-    const auto grid = c.grid();
+    const auto h_of = c.intervals();  // as computed, not differences of the rounded knots
     const std::size_t n = pts.size(), nseg = c.segment_count();
     if (!c.closed() && (i == 0 || i + 1 >= nseg)) return std::nullopt;  // an end segment: end conditions
     const auto& o = c.options();
     if (c.given_tangents() || o.tension != T(0) || !o.kb.empty()) return std::nullopt;
-    auto interval = [&](std::size_t k) { return grid[k + 1] - grid[k]; };
+    auto interval = [&](std::size_t k) { return h_of[k]; };
     const std::size_t ib = (i + nseg - 1) % nseg, ia = (i + 1) % nseg;
     std::array<vec<D, T>, 4> p{pts[(i + n - 1) % n], pts[i], pts[(i + 1) % n], pts[(i + 2) % n]};
     std::array<T, 3> h{interval(ib), interval(i), interval(ia)};

@@ -1,30 +1,32 @@
 // crspline: the Catmull-Rom spline, its construction and evaluation.
+//
+// This file is the curve: its options, how it is built (knot intervals,
+// tangents, end conditions), what it stores and how one point is
+// evaluated. The batch paths of evaluate(span, span) live in
+// detail/batch_kernels.hpp, the table behind locate() in
+// detail/knot_index.hpp.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <compare>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
-#include <compare>
 #include <initializer_list>
 #include <iterator>
-#include <utility>
 #include <limits>
 #include <optional>
 #include <span>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
+#include "detail/batch_kernels.hpp"
 #include "detail/format.hpp"
+#include "detail/knot_index.hpp"
 #include "detail/storage.hpp"
-#include "detail/x86_kernels.hpp"
 #include "end_condition.hpp"
 #include "error.hpp"
 #include "parameterization.hpp"
@@ -34,59 +36,6 @@
 
 namespace crspline {
 
-namespace detail {
-
-// Vector kernels for batch evaluation: GCC/Clang vector extensions on
-// 16-byte vectors (SSE2 is part of x86-64, NEON of AArch64). Elsewhere the
-// scalar loops do all the work.
-#if defined(__GNUC__) && (defined(__SSE2__) || defined(__ARM_NEON))
-#define CRSPLINE_VECTOR_KERNELS 1
-template <class T>
-struct lanes16_of {};  // none: long double uses the scalar loops
-template <>
-struct lanes16_of<double> { typedef double type __attribute__((vector_size(16))); };
-template <>
-struct lanes16_of<float> { typedef float type __attribute__((vector_size(16))); };
-template <class T>
-using lanes16 = typename lanes16_of<T>::type;
-template <class T>
-inline constexpr bool has_lanes16 = std::is_same_v<T, double> || std::is_same_v<T, float>;
-#else
-#define CRSPLINE_VECTOR_KERNELS 0
-#endif
-
-/// Batch outputs of at least this many bytes are written with non-temporal
-/// stores where available: they skip the read of each cache line that an
-/// ordinary store must do first (and do not evict the caller's working set).
-/// Below it the output is likely to be read again soon, from cache.
-#ifndef CRSPLINE_STREAMING_THRESHOLD
-#define CRSPLINE_STREAMING_THRESHOLD (std::size_t(8) << 20)
-#endif
-inline constexpr std::size_t streaming_threshold = CRSPLINE_STREAMING_THRESHOLD;
-
-/// Writes D 16-byte vectors from buf to the 16-byte aligned p, bypassing the
-/// caches (movntpd / movntps); a plain copy without SSE2.
-template <std::size_t D, class T>
-inline void stream_store(T* p, const T* buf) noexcept {
-#if defined(__SSE2__)
-    for (std::size_t i = 0; i < D; ++i) {
-        if constexpr (std::is_same_v<T, double>) _mm_stream_pd(p + 2 * i, _mm_load_pd(buf + 2 * i));
-        else _mm_stream_ps(p + 4 * i, _mm_load_ps(buf + 4 * i));
-    }
-#else
-    std::memcpy(p, buf, 16 * D);
-#endif
-}
-
-/// Orders non-temporal stores before whatever follows (they are weakly
-/// ordered); nothing to do without them.
-inline void store_fence() noexcept {
-#if defined(__SSE2__)
-    _mm_sfence();
-#endif
-}
-
-}  // namespace detail
 
 /// Kochanek-Bartels tension / continuity / bias, one value per vertex (the
 /// conventions of the Python `splines` package). Empty vectors mean 0. Open
@@ -116,6 +65,27 @@ struct options {
 /// points[i] and points[i+1] (points[0] for the last segment of a closed
 /// curve) on [grid[i], grid[i+1]]; an interior knot belongs to the segment on
 /// its right, the last knot to the last segment.
+///
+/// Knot intervals and knots. Each segment keeps its knot interval h(i) as it
+/// was computed, |P(i+1) - P(i)|^alpha (or, for an explicit grid, the grid's
+/// difference), and the shape comes from these intervals only: tangents at
+/// the vertices, Bézier points, segment(i) as a cubic in u, and every
+/// analysis. The knots grid() are the running sums of the intervals, rounded:
+/// an interval far below the sum before it (a short chord after long ones)
+/// would lose most of its digits if it were recovered as a difference of
+/// knots. The map from t to a segment's u uses the stored knots, u = (t -
+/// grid[i]) / (grid[i+1] - grid[i]), so that t over [grid[i], grid[i+1]]
+/// traces the whole segment, no more, and the curve is continuous in t.
+/// Within segment i the speed dx/dt is therefore the exact curve's times
+/// h(i) / d(i), d(i) = grid[i+1] - grid[i], where |d(i) - h(i)| <= eps *
+/// grid[i+1] (eps = machine epsilon of T: one rounding of the sum, one of the
+/// difference): the knots' own precision. See intervals(), tangents().
+///
+/// Rebuilding: options() (with grid() when explicit_grid()) gives the same
+/// curve bit for bit. grid() passed back as an explicit grid of an alpha
+/// curve gives the same knots bit for bit but intervals d(i) instead of h(i)
+/// (equal whenever the sums are exact, as for alpha = 0), a curve whose
+/// shape is that of intervals each within eps * grid[i+1] of the originals.
 template <std::size_t D, class T = double>
 class catmull_rom {
 public:
@@ -153,6 +123,11 @@ public:
     // --- what the curve is made of ------------------------------------------
     std::span<const point> points() const noexcept { return points_; }
     std::span<const T> grid() const noexcept { return grid_; }
+    /// Knot interval h(i) of each segment as computed: |P(i+1) - P(i)|^alpha
+    /// (0 for coincident points), or grid[i+1] - grid[i] for an explicit grid
+    /// and hermite(). The shape is made from these; grid() holds their
+    /// rounded running sums (see the class comment).
+    std::span<const T> intervals() const noexcept { return h_; }
     bool closed() const noexcept { return closed_; }
 
     /// How the curve was built: the options given to the constructor, so that
@@ -174,9 +149,11 @@ public:
     T t_min() const noexcept { return grid_.front(); }
     T t_max() const noexcept { return grid_.back(); }
 
-    /// Segment i in power-basis form. The curve stores points, knots, 1/h
-    /// and one tangent per vertex (68 bytes per 3-D point with its bucket
-    /// entry, not the 120 of a cubic_segment): segments are computed on
+    /// Segment i in power-basis form: its u-tangents h(i) dx/dt come from the
+    /// interval h(i), its t0, h and inv_h from the stored knots (see the class
+    /// comment). The curve stores points, knots, intervals, 1/h and one
+    /// tangent per vertex (76 bytes per 3-D point with its bucket entry, not
+    /// the 120 of a cubic_segment): segments are computed on
     /// access, by the same arithmetic every time, so every path sees the
     /// same bits.
     segment_type segment(std::size_t i) const {
@@ -239,11 +216,20 @@ public:
     /// All segments, as a random-access range of values (see segment()).
     segment_view segments() const noexcept { return segment_view(this); }
 
-    /// Tangents dx/dt at the start and end of segment i (equal at interior
-    /// knots unless Kochanek-Bartels continuity breaks them).
+    /// Tangents dx/dt at the start and end of segment i, as evaluate(t, 1)
+    /// gives them: the vertex tangents of the exact curve times h(i) / d(i)
+    /// (exactly them when the stored knots' difference d(i) is the interval
+    /// h(i), as it is for explicit grids and whenever the sums are exact; see
+    /// the class comment). With the stored knots' difference they give the
+    /// Bézier points, B1 = B0 + d(i)/3 v0 as bezier() computes it from h(i).
+    /// Equal at interior knots (up to that factor) unless Kochanek-Bartels
+    /// continuity breaks them.
     std::array<point, 2> tangents(std::size_t i) const {
         check_segment_index(i);
-        return {out_tangent(i), in_tangent(next(i))};
+        const T d = grid_[i + 1] - grid_[i];
+        if (d == h_[i]) return {out_tangent(i), in_tangent(next(i))};
+        const T r = h_[i] * inv_h_[i];  // h / d; 0 when d is 0 (no t to evaluate at)
+        return {r * out_tangent(i), r * in_tangent(next(i))};
     }
 
     // --- evaluation -----------------------------------------------------------
@@ -253,7 +239,7 @@ public:
     /// a branch; a branch-free binary search finishes the rare crowded
     /// bucket (O(log N) at worst, for very uneven knots).
     std::size_t locate(T t) const noexcept {
-        return locate_in(t, grid_.data(), segment_count(), bucket_first_.data(), bucket_scale_, bucket_max_);
+        return index_.locate(t, grid_.data(), segment_count());
     }
 
     /// Position (order 0) or derivative d^k x / dt^k (order 1-3) at t.
@@ -296,39 +282,7 @@ public:
             throw invalid_input("output has " + std::to_string(out.size()) + " points for " +
                                 std::to_string(t.size()) + " parameter values");
         if (t.empty()) return;
-        // Try the sorted walk: it checks order as it goes, without a branch
-        // per point, and sorted input is in the domain iff its two ends are.
-        if (t.front() >= grid_.front() && t.back() <= grid_.back() && evaluate_sorted(t, out, order)) return;
-        // Unsorted: one located point at a time, with the order chosen once
-        // for the whole batch (not per point as in evaluate_unchecked), and
-        // the domain check in the same pass (a branch that is never taken on
-        // good input; on bad input check_t throws naming the first bad index,
-        // as a separate checking pass would).
-        const T lo = grid_.front(), hi = grid_.back();
-        auto check = [&](std::size_t k) {
-            if (!(t[k] >= lo && t[k] <= hi)) [[unlikely]] check_t(t[k], k);
-        };
-        switch (order) {
-            case 0:
-#if CRSPLINE_X86_DISPATCH
-                if constexpr (D == 3 && std::is_same_v<T, double>)
-                    if (detail::avx2_enabled()) {
-                        positions3_avx2(t.data(), out.data(), t.size());
-                        break;
-                    }
-#endif
-                for (std::size_t k = 0; k < t.size(); ++k) check(k), out[k] = position_unchecked(t[k]);
-                break;
-            case 1:
-                for (std::size_t k = 0; k < t.size(); ++k) {
-                    check(k);
-                    const segment_type s = make_segment(locate(t[k]));
-                    out[k] = s.dt(s.local(t[k]), 1);
-                }
-                break;
-            default:
-                for (std::size_t k = 0; k < t.size(); ++k) check(k), out[k] = evaluate_unchecked(t[k], order);
-        }
+        detail::batch_kernels<D, T>::evaluate(*this, t, out, order);
     }
     std::vector<point> evaluate(std::span<const T> t, int order = 0) const {
         std::vector<point> out(t.size());
@@ -337,12 +291,15 @@ public:
     }
 
     /// Bézier control points of segment i: B0 = points[i], B3 = the next
-    /// point, exactly; B1 and B2 from the Hermite tangents.
+    /// point, exactly; B1 and B2 from the vertex tangents and the interval
+    /// h(i) (not the difference of the rounded knots).
     std::array<point, 4> bezier(std::size_t i) const {
-        const auto [v0, v1] = tangents(i);
+        check_segment_index(i);
+        const point& v0 = out_tangent(i);
+        const point& v1 = in_tangent(next(i));
         const point& p0 = points_[i];
         const point& p1 = points_[next(i)];
-        const T h = grid_[i + 1] - grid_[i];
+        const T h = h_[i];
         return {p0, p0 + (h / T(3)) * v0, p1 - (h / T(3)) * v1, p1};
     }
     std::vector<std::array<point, 4>> bezier() const {
@@ -352,13 +309,15 @@ public:
     }
 
 private:
-    // What the curve stores, per point: the point, its knot, 1 / h of the
-    // segment starting there and one tangent dx/dt (plus a bucket entry).
+    // What the curve stores, per point: the point, its knot, the interval h
+    // and 1 / d of the segment starting there and one tangent dx/dt (plus a
+    // bucket entry of the knot index).
     // Segment i runs from points_[i] to points_[next(i)] with tangents
     // out_tangent(i) and in_tangent(next(i)).
     detail::storage<point> points_;
     detail::storage<T> grid_;
-    detail::storage<T> inv_h_;        // 1 / (grid[i+1] - grid[i]), 0 for a zero interval; one per segment
+    detail::storage<T> h_;            // knot interval h(i) as computed (see intervals()); one per segment
+    detail::storage<T> inv_h_;        // 1 / (grid[i+1] - grid[i]), 0 for a zero difference: the t -> u map
     detail::storage<point> tangent_;  // outgoing dx/dt at each vertex; for an open curve the last is the incoming one
     detail::storage<point> in_;       // incoming dx/dt at each vertex, only when continuity can make it differ
     bool closed_ = false;
@@ -369,61 +328,21 @@ private:
     const point& out_tangent(std::size_t i) const noexcept { return tangent_[i]; }
     const point& in_tangent(std::size_t j) const noexcept { return in_.empty() ? tangent_[j] : in_[j]; }
 
-    /// Segment i, unchecked: the Hermite segment of segment_type::hermite
-    /// with 1/h from the table (no division). (detail::hermite_point3 is the
-    /// same arithmetic in 4-lane registers.)
+    /// Segment i, unchecked: the Hermite segment of segment_type::hermite,
+    /// its u-tangents from the interval h(i), its t-range [grid[i],
+    /// grid[i+1]] with 1/d from the table (no division). (detail::hermite_point3
+    /// is the same arithmetic in 4-lane registers.)
     segment_type make_segment(std::size_t i) const noexcept {
         const std::size_t j = next(i);
-        const T h = grid_[i + 1] - grid_[i];
-        return segment_type::hermite(points_[i], points_[j], h * out_tangent(i), h * in_tangent(j), grid_[i], h,
-                                     inv_h_[i]);
+        const T h = h_[i];
+        return segment_type::hermite(points_[i], points_[j], h * out_tangent(i), h * in_tangent(j), grid_[i],
+                                     grid_[i + 1] - grid_[i], inv_h_[i]);
     }
-    // locate(): bucket b = floor((t - t_min) * bucket_scale_) holds the
-    // segments bucket_first_[b] .. bucket_first_[b + 1] as candidates.
-    detail::storage<std::uint32_t> bucket_first_;
-    T bucket_scale_ = 0, bucket_max_ = 0;
+    // locate(): the bucket table over the knots (detail/knot_index.hpp).
+    detail::knot_index<T> index_;
 
-    void build_buckets();
-
-    // locate() on explicit arrays (kernels pass them hoisted out of their
-    // loops): knots g[0..nseg], the bucket table, its scale and last index.
-    // The bucket of t: floor((t - t_min) * scale) clamped to [0, bmax]. The
-    // same arithmetic for knots (build_buckets) and queries, and monotone in t.
-    static std::size_t bucket_of(T t, T t_min, T scale, T bmax) noexcept {
-        T x = (t - t_min) * scale;
-        x = x > T(0) ? x : T(0);  // also maps NaN to 0
-        x = x < bmax ? x : bmax;
-        return std::size_t(std::int64_t(x));  // 0 <= x < 2^32: no unsigned-conversion branch
-    }
-
-    static std::size_t locate_in(T t, const T* g, std::size_t nseg, const std::uint32_t* first, T scale,
-                                 T bmax) noexcept {
-        const std::size_t b = bucket_of(t, g[0], scale, bmax);
-        const std::size_t lo = first[b], hi = first[b + 1];
-        // The owner is the last i in [lo, hi] with g[i] <= t (g[lo] <= t
-        // holds by construction, or t is before the start or NaN and lo = 0).
-        if (hi - lo <= 3) {
-            // Common case: count the candidates after lo that start at or
-            // before t. Compares and adds, no branch to mispredict (a loop
-            // whose trip count depends on t cost about half the time of a
-            // random evaluation). Knots past hi need no mask: they start in a
-            // later bucket, so (bucket arithmetic being monotone) they are
-            // greater than t, except the last knot when t >= t_max, which the
-            // final min() covers. min(.., nseg) keeps the reads in the array.
-            const std::size_t i = lo + std::size_t(g[std::min(lo + 1, nseg)] <= t) +
-                                  std::size_t(g[std::min(lo + 2, nseg)] <= t) +
-                                  std::size_t(g[std::min(lo + 3, nseg)] <= t);
-            return std::min(i, nseg - 1);
-        }
-        const T* base = g + lo;
-        std::size_t len = hi - lo + 1;
-        while (len > 1) {
-            const std::size_t half = len / 2;
-            base = (base[half] <= t) ? base + half : base;
-            len -= half;
-        }
-        return std::size_t(base - g);
-    }
+    // The batch paths of evaluate(span, span) read the arrays above directly.
+    friend struct detail::batch_kernels<D, T>;
 
     void check_segment_index(std::size_t i) const {
         if (i >= segment_count())
@@ -443,261 +362,6 @@ private:
                                 detail::num(double(grid_.back())) + "]");
     }
 
-    // Sorted batch: binary-search the end of the run of parameters inside
-    // one segment, then evaluate the run with that segment's coefficients
-    // held in registers. No per-point search or branch. Returns false (and
-    // the caller starts over) as soon as t turns out not to be sorted or
-    // holds NaN: random input costs one short run here, not a whole pass.
-    bool evaluate_sorted(std::span<const T> t, std::span<point> out, int order) const {
-        const std::size_t n = t.size(), nseg = segment_count();
-        // Large outputs bypass the caches (see detail::streaming_threshold).
-        const bool stream = n * sizeof(point) >= detail::streaming_threshold;
-        std::size_t seg = locate(t[0]);
-        std::size_t k = 0;
-        bool unsorted = false;
-        T previous = t[0];
-        while (k < n && !unsorted) {
-            while (seg + 1 < nseg && t[k] >= grid_[seg + 1]) ++seg;
-            // The kernel evaluates t[k] itself, then the points after it
-            // while they are below the segment's end knot: every point is
-            // evaluated and compared with the one before it, so unsorted
-            // input is always detected. (The end is found by the kernel as
-            // it goes: a binary search for it probed t far ahead of the
-            // kernel, cache misses that cost 13% of the time.) Runs are
-            // capped at run_cap points: unsorted input within one segment
-            // would otherwise be evaluated in full before its sortedness
-            // flag is read.
-            const std::size_t cap = std::min(n, k + run_cap);
-            const T t_end = seg + 1 < nseg ? grid_[seg + 1] : std::numeric_limits<T>::infinity();
-            k += run(make_segment(seg), t.data() + k, out.data() + k, cap - k, order, previous, stream, t_end,
-                     unsorted);
-        }
-        if (stream) detail::store_fence();
-        if (unsorted) return false;
-        // As in evaluate_unchecked: the last knot gives the last point exactly.
-        if (order == 0)
-            for (std::size_t q = n; q-- > 0 && t[q] == grid_.back();) out[q] = points_[closed_ ? 0 : points_.size() - 1];
-        return true;
-    }
-
-    static constexpr std::size_t run_cap = 4096;
-
-    // The per-run kernel for position (Order 0) and velocity (Order 1). The
-    // dimension loop is unrolled at compile time (index_sequence) so the
-    // coefficients stay in registers:
-    //   position  x = o + u (a + u (b + u c))            (Horner, as segment::at)
-    //   velocity  x = a' + u (b' + u c')  with a' = c1/h, b' = 2 c2/h, c' = 3 c3/h
-    // Each also folds "is t still sorted (and not NaN)?" into the loop:
-    // !(previous <= t) costs a compare and an or, no branch.
-    //
-    // With GCC/Clang vector extensions (x86-64 SSE2, ARM NEON) W = 16 bytes /
-    // sizeof(T) points go through each step (2 doubles, 4 floats): one packed
-    // subtract and multiply for u, then per coordinate the Horner steps on W
-    // lanes at once, then the W points are laid out as W * D consecutive
-    // scalars (D 16-byte vectors; for D = 3 double GCC 12 -O2 makes that two
-    // unpcklpd/unpckhpd-style shuffles and three 16-byte stores). That halves
-    // the arithmetic instructions per point of the scalar loop, which was
-    // compute bound (about 1.8 ns per 3-D point against 1.0 ns for a plain
-    // store loop). Same operations in the same order as the scalar loop: the
-    // results are bit for bit those of the scalar code. Streaming (large
-    // outputs) uses non-temporal stores when the output is 16-byte aligned.
-    // The kernels' coefficients. Position: o, a, b, c = origin, c1, c2, c3.
-    // Velocity: 1/h folded in (o unused).
-    template <int Order>
-    static void run_coefficients(const segment_type& s, T* o, T* a, T* b, T* c) noexcept {
-        const T ih = s.inv_h;
-        for (std::size_t d = 0; d < D; ++d) {
-            o[d] = s.origin[d];
-            a[d] = Order == 0 ? s.c1[d] : s.c1[d] * ih;
-            b[d] = Order == 0 ? s.c2[d] : T(2) * ih * s.c2[d];
-            c[d] = Order == 0 ? s.c3[d] : T(3) * ih * s.c3[d];
-        }
-    }
-
-    template <int Order, std::size_t... d>
-    static std::size_t run_kernel(const segment_type& s, const T* t, point* out, std::size_t n, T& previous,
-                                  bool stream, T t_end, bool& unsorted, std::index_sequence<d...>) noexcept {
-        const T t0 = s.t0, ih = s.inv_h;
-        T o[D], a[D], b[D], c[D];
-        run_coefficients<Order>(s, o, a, b, c);
-        auto horner = [&](auto u, std::size_t i) {
-            if constexpr (Order == 0) return o[i] + u * (a[i] + u * (b[i] + u * c[i]));
-            else return a[i] + u * (b[i] + u * c[i]);
-        };
-        unsigned bad = 0;
-        T prev = previous;
-        std::size_t k = 0;
-        auto scalar_step = [&] {
-            const T x = t[k];
-            bad |= unsigned(!(prev <= x));
-            prev = x;
-            const T u = (x - t0) * ih;
-            ((out[k][d] = horner(u, d)), ...);
-            ++k;
-        };
-#if CRSPLINE_VECTOR_KERNELS
-        if constexpr (detail::has_lanes16<T>) {
-            using V = detail::lanes16<T>;
-            constexpr std::size_t W = 16 / sizeof(T);
-            // Head: at least one point (so t[k - 1] exists below), then points
-            // until the output is 16-byte aligned (at most W more).
-            if (n > 0) scalar_step();
-            for (std::size_t q = 0; q < W && k < n && t[k] < t_end && reinterpret_cast<std::uintptr_t>(out + k) % 16 != 0; ++q)
-                scalar_step();
-            const bool aligned = reinterpret_cast<std::uintptr_t>(out + k) % 16 == 0;
-            // Integer lanes, all ones while sorted: a compare and an and per
-            // step (NaN compares false, so it clears the lane too).
-            decltype(V{} < V{}) good = ~decltype(V{} < V{}){};
-            // The loop, instantiated once per kind of store so that the choice
-            // is not made per step (a test and a branch less, and the buffer
-            // below stays in registers on the streaming path).
-            auto steps = [&](auto store) {
-                for (; k + W <= n; k += W) {
-                    V x, p;
-                    std::memcpy(&x, t + k, sizeof x);
-                    // Stop before the first step with a point at or past the
-                    // end knot (or NaN): the scalar steps finish the run.
-                    const auto inside = x < t_end;
-                    bool all_inside = true;
-                    for (std::size_t j = 0; j < W; ++j) all_inside &= inside[j] != 0;
-                    if (!all_inside) break;
-                    std::memcpy(&p, t + k - 1, sizeof p);  // the previous values, one lane behind
-                    good &= (p <= x);
-                    const V u = (x - t0) * ih;
-                    const V r[D] = {horner(u, d)...};
-                    // W points, coordinates interleaved (AoS), as D 16-byte vectors.
-                    alignas(16) T buf[W * D];
-                    for (std::size_t j = 0; j < W; ++j) ((buf[j * D + d] = r[d][j]), ...);
-                    store(reinterpret_cast<T*>(out + k), buf);
-                }
-            };
-            if (stream && aligned) steps([](T* dst, const T* buf) { detail::stream_store<D>(dst, buf); });
-            else steps([](T* dst, const T* buf) { std::memcpy(static_cast<void*>(dst), buf, W * D * sizeof(T)); });
-            if (k > 0) prev = t[k - 1];
-            for (std::size_t j = 0; j < W; ++j) bad |= unsigned(good[j] == 0);
-        }
-#endif
-        (void)stream;
-        if (k == 0 && n > 0) scalar_step();  // (without vector kernels: the run's first point)
-        while (k < n && t[k] < t_end) scalar_step();
-        previous = prev;
-        unsorted = unsorted || bad != 0;
-        return k;
-    }
-#if CRSPLINE_X86_DISPATCH
-    // The AVX2 kernels (detail/x86_kernels.hpp) for 3-D doubles and floats:
-    // the same coefficients as run_kernel, the same operations 4 (double) or
-    // 8 (float) points at a time.
-    template <int Order>
-    static std::size_t run3_avx2(const segment_type& s, const T* t, point* out, std::size_t n, T& previous,
-                                 bool stream, T t_end, bool& unsorted) noexcept {
-        T o[3], a[3], b[3], c[3];
-        run_coefficients<Order>(s, o, a, b, c);
-        return detail::sorted_run3<Order>(o, a, b, c, s.t0, s.inv_h, t, reinterpret_cast<T*>(out), n, previous, stream,
-                                          t_end, unsorted);
-    }
-
-    // Unsorted positions: position_unchecked with the domain check of the
-    // batch, in blocks of 32 points. First every point of the block is
-    // located (a chain of dependent loads and arithmetic per point, but
-    // independent between points, so they overlap), then each is evaluated
-    // on its segment's Hermite form in 4-lane registers. One loop doing both
-    // kept only 2-3 points in flight; the split doubles that.
-    // (Non-temporal stores through a block buffer measured slower here: the
-    // kernel is bound by instructions, not by the output's memory traffic.)
-    void positions3_avx2(const T* t, point* out, std::size_t n) const {
-        if (closed_) positions3_avx2<true>(t, out, n);
-        else positions3_avx2<false>(t, out, n);
-    }
-    // (Closed: whether the segment after the last point wraps to the first.)
-    template <bool Closed>
-    CRSPLINE_TARGET_AVX2 void positions3_avx2(const T* t, point* out, std::size_t n) const {
-        const T lo = grid_.front(), hi = grid_.back();
-        const point last = points_[closed_ ? 0 : points_.size() - 1];
-        const std::size_t np = points_.size();
-        const point* P = points_.data();
-        const point* V = tangent_.data();
-        const point* W = in_.empty() ? tangent_.data() : in_.data();
-        const T* g = grid_.data();
-        const T* ih = inv_h_.data();
-        const std::size_t nseg = segment_count();
-        const std::uint32_t* first = bucket_first_.data();
-        const T scale = bucket_scale_, bmax = bucket_max_;
-        constexpr std::size_t block = 32;
-        std::size_t idx[block];
-        T u[block];
-        for (std::size_t k0 = 0; k0 < n; k0 += block) {
-            const std::size_t m = std::min(block, n - k0);
-            std::uint32_t at_end = 0;  // bit q: t is the last knot
-            for (std::size_t q = 0; q < m; ++q) {
-                const T x = t[k0 + q];
-                if (!(x >= lo && x < hi)) [[unlikely]] {
-                    if (x != hi) check_t(x, k0 + q);  // throws
-                    at_end |= std::uint32_t(1) << q;
-                }
-                const std::size_t b = bucket_of(x, g[0], scale, bmax);
-                // locate_in's common case with one 4-lane compare of the
-                // knots lo .. lo + 3 (in the array when lo + 3 <= nseg): they
-                // increase, so the lanes with knot <= t are a prefix, and
-                // its length less one is the count locate_in adds up.
-                const std::size_t c0 = first[b], c1 = first[b + 1];
-                std::size_t i;
-                if (c1 - c0 <= 3 && c0 + 3 <= nseg) [[likely]] {
-                    static constexpr unsigned char after_first[16] = {0, 0, 0, 1, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 3};
-                    const int mask = _mm256_movemask_pd(_mm256_cmp_pd(_mm256_loadu_pd(g + c0), _mm256_set1_pd(x), _CMP_LE_OQ));
-                    i = std::min(c0 + after_first[mask], nseg - 1);
-                } else {
-                    i = locate_in(x, g, nseg, first, scale, bmax);
-                }
-                idx[q] = i;
-                u[q] = (x - g[i]) * ih[i];
-            }
-            // Each point is stored with one 4-lane store whose junk lane 3
-            // lands on the next point's x, which is written next; the
-            // batch's last point is stored in 3 lanes.
-            const std::size_t wide = k0 + m < n ? m : m - 1;
-            for (std::size_t q = 0; q < m; ++q) {
-                const std::size_t i = idx[q], j = Closed && i + 1 == np ? 0 : i + 1;
-                // Open: i + 1 < np, so P[i] and V[i] are not the last entries.
-                const __m256d r = detail::hermite_point3<!Closed>(P[i].v.data(), P[j].v.data(), V[i].v.data(),
-                                                                  W[j].v.data(), g[i + 1] - g[i], u[q]);
-                if (q < wide) [[likely]] _mm256_storeu_pd(out[k0 + q].v.data(), r);
-                else detail::store3(out[k0 + q].v.data(), r);
-            }
-            for (; at_end != 0; at_end &= at_end - 1)  // the last knot gives the last point exactly
-                out[k0 + std::size_t(__builtin_ctz(at_end))] = last;
-        }
-    }
-#endif
-
-    // One run on segment s: evaluates t[0], then the points after it while
-    // they are below t_end (at most n); returns how many. Sets unsorted
-    // when a point is not >= the one before it (or is NaN).
-    static std::size_t run(const segment_type& s, const T* t, point* out, std::size_t n, int order, T& previous,
-                           bool stream, T t_end, bool& unsorted) noexcept {
-#if CRSPLINE_X86_DISPATCH
-        if constexpr (D == 3 && (std::is_same_v<T, double> || std::is_same_v<T, float>))
-            if (order <= 1 && detail::avx2_enabled())
-                return order == 0 ? run3_avx2<0>(s, t, out, n, previous, stream, t_end, unsorted)
-                                  : run3_avx2<1>(s, t, out, n, previous, stream, t_end, unsorted);
-#endif
-        switch (order) {
-            case 0: return run_kernel<0>(s, t, out, n, previous, stream, t_end, unsorted, std::make_index_sequence<D>{});
-            case 1: return run_kernel<1>(s, t, out, n, previous, stream, t_end, unsorted, std::make_index_sequence<D>{});
-            default: {
-                unsigned bad = 0;
-                std::size_t k = 0;
-                do {
-                    bad |= unsigned(!(previous <= t[k]));
-                    previous = t[k];
-                    out[k] = s.dt(s.local(t[k]), order);
-                    ++k;
-                } while (k < n && t[k] < t_end);
-                unsorted = unsorted || bad != 0;
-                return k;
-            }
-        }
-    }
 
     void build(std::span<const point> p, const options_type& opt);
 
@@ -738,11 +402,13 @@ void catmull_rom<D, T>::build_hermite(std::span<const point> p, std::span<const 
     }
     check_grid(grid, nseg + 1, closed);
 
-    // 2. Store points, knots and 1/h as build() does.
+    // 2. Store points, knots, intervals (the grid's differences) and 1/h as
+    //    build() does.
     points_.assign(p.begin(), p.end());
     grid_.assign(grid.begin(), grid.end());
+    h_.resize(nseg);
     inv_h_.resize(nseg);
-    for (std::size_t i = 0; i < nseg; ++i) inv_h_[i] = T(1) / (grid_[i + 1] - grid_[i]);
+    for (std::size_t i = 0; i < nseg; ++i) h_[i] = grid_[i + 1] - grid_[i], inv_h_[i] = T(1) / h_[i];
 
     // 3. Tangents: one shared array when incoming and outgoing agree at every
     //    vertex that uses both (bit for bit), else both arrays. An open
@@ -759,7 +425,7 @@ void catmull_rom<D, T>::build_hermite(std::span<const point> p, std::span<const 
     } else {
         in_.clear();
     }
-    build_buckets();
+    index_.build(grid_.data(), nseg);
 }
 
 template <std::size_t D, class T>
@@ -779,12 +445,14 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
         n, D, [&](std::size_t i, std::size_t k) { return p[i][k]; }, opt.alpha, opt.grid, closed_,
         end_of(opt.start), end_of(opt.end), double(opt.tension), opt.kb.tension, opt.kb.continuity, opt.kb.bias);
 
-    // 2. Parameterization: knots from alpha, or the given grid, written in
-    //    place (one pass over the points, no temporaries).
+    // 2. Parameterization: intervals from alpha, kept as computed, and the
+    //    knots as their running sums; or the given grid and its differences.
     points_.assign(p.begin(), p.end());
     const std::size_t nseg = closed_ ? n : n - 1;
+    h_.resize(nseg);
     if (opt.grid) {
         grid_.assign(opt.grid->begin(), opt.grid->end());
+        for (std::size_t i = 0; i < nseg; ++i) h_[i] = grid_[i + 1] - grid_[i];
     } else {
         const double alpha = opt.alpha.value_or(centripetal);
         if (opt.strict && alpha > 0) {
@@ -803,23 +471,21 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
             }
         }
         grid_.resize(nseg + 1);
+        detail::fill_intervals(p, alpha, closed_, h_.data());
         grid_[0] = 0;
-        detail::fill_intervals(p, alpha, closed_, grid_.data() + 1);
-        for (std::size_t i = 1; i <= nseg; ++i) grid_[i] += grid_[i - 1];
+        for (std::size_t i = 0; i < nseg; ++i) grid_[i + 1] = grid_[i] + h_[i];
     }
 
     // 3. Chord velocities v(i) = (P(i+1) - P(i)) / h(i), as the product with
-    //    1 / h(i) (which the segments keep); zero for a zero knot interval
-    //    (the limit convention for coincident points). The curve is the
-    //    Catmull-Rom curve on the knots as stored: h(i) is the difference of
-    //    stored knots, so grid() passed back as an explicit grid gives the
-    //    same curve bit for bit (and the splines package's exact reference,
-    //    defined on its rounded grid, is matched).
+    //    1 / h(i); zero for a zero knot interval (the limit convention for
+    //    coincident points). h(i) is the interval as computed, never a
+    //    difference of the rounded knots (issue 13: a difference of sums near
+    //    1e6 keeps only a few digits of an interval of 1e-9).
     inv_h_.resize(nseg);
     for (std::size_t i = 0; i < nseg; ++i) {
         // (Written so that the compiler can divide two at a time: no
         // division under a condition.)
-        const T h = grid_[i + 1] - grid_[i];
+        const T h = h_[i];
         const T r = T(1) / (h > 0 ? h : T(1));
         inv_h_[i] = h > 0 ? r : T(0);
     }
@@ -848,10 +514,10 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
     if (last_kb > first_kb) {
         std::size_t before = first_kb == 0 ? nseg - 1 : first_kb - 1;
         point v0 = chord_velocity(before);
-        T h0 = grid_[before + 1] - grid_[before];
+        T h0 = h_[before];
         for (std::size_t i = first_kb; i < last_kb; ++i) {
             const point v1 = chord_velocity(i);  // i < nseg: the segment after vertex i
-            const T h1 = grid_[i + 1] - grid_[i], sum = h0 + h1;
+            const T h1 = h_[i], sum = h0 + h1;
             if (!(sum > 0)) {
                 tangent_[i] = point{};
                 if (split) in_[i] = point{};
@@ -905,8 +571,14 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
             for (std::size_t i = 0; i < n; ++i)
                 if (!(i == n - 1 && end_given)) in_[i] *= keep;
     }
-    build_buckets();
-    // 5. Remember how the curve was built (the grid is grid_, not copied).
+    // 5. The t -> u map: 1 / d(i) of the stored knots, which differs from
+    //    1 / h(i) only where a sum was rounded (never for an explicit grid).
+    for (std::size_t i = 0; i < nseg; ++i) {
+        const T d = grid_[i + 1] - grid_[i];
+        if (d != h_[i]) inv_h_[i] = d > 0 ? T(1) / d : T(0);
+    }
+    index_.build(grid_.data(), nseg);
+    // 6. Remember how the curve was built (the grid is grid_, not copied).
     options_.alpha = opt.grid ? std::nullopt : std::optional<double>(opt.alpha.value_or(centripetal));
     options_.grid.reset();
     options_.start = opt.start;
@@ -915,37 +587,6 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
     options_.tension = opt.tension;
     options_.kb = opt.kb;
     options_.strict = opt.strict;
-}
-
-template <std::size_t D, class T>
-void catmull_rom<D, T>::build_buckets() {
-    // One bucket per segment. Segment i starts in bucket b(i) computed with
-    // the same arithmetic as locate(), so monotonicity gives: every segment
-    // with b(i) < b starts at or before any t in bucket b, none with b(i) > b
-    // does. The owner of t is thus between the last segment starting before
-    // bucket b and the last one starting in it.
-    const std::size_t nseg = segment_count();
-    if (nseg >= std::numeric_limits<std::uint32_t>::max())
-        throw invalid_input("too many segments (" + std::to_string(nseg) + ")");
-    const T span = grid_.back() - grid_.front();
-    const std::size_t nb = nseg;
-    bucket_scale_ = span > 0 ? T(nb) / span : T(0);
-    bucket_max_ = T(nb - 1);
-    if (!std::isfinite(bucket_scale_)) bucket_scale_ = 0;
-    // Count the segments starting in each bucket (count of bucket b at
-    // [b + 1]), then turn the counts into indices in place: no branch on
-    // the data, no temporary.
-    bucket_first_.assign(nb + 1, 0);
-    for (std::size_t i = 0; i < nseg; ++i) ++bucket_first_[bucket_of(grid_[i], grid_.front(), bucket_scale_, bucket_max_) + 1];
-    // bucket_first_[b] = last segment starting before bucket b (or 0);
-    // bucket_first_[b + 1] = last segment starting in or before bucket b.
-    std::size_t before = 0;  // segments starting in buckets < b
-    for (std::size_t b = 0; b < nb; ++b) {
-        const std::size_t count = bucket_first_[b + 1];
-        bucket_first_[b] = std::uint32_t(before > 0 ? before - 1 : 0);
-        before += count;
-    }
-    bucket_first_[nb] = std::uint32_t(nseg - 1);
 }
 
 /// Build a curve from any range of user points (std::array, Eigen, glm, a

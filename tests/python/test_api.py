@@ -159,11 +159,17 @@ def test_explicit_grid():
     assert np.array_equal(c.evaluate(grid), np.asarray(WAVE, dtype=float))
     closed = crspline.CatmullRom(SQUARE, grid=[0, 1, 2, 3, 4], endconditions="closed")
     assert closed.grid.tolist() == [0, 1, 2, 3, 4]
-    # The grid the curve chose, given back, gives the same curve bit for bit.
+    # The grid the curve chose, given back, gives the same knots, and the
+    # curve within the knots' rounding: the intervals d = diff(grid) are
+    # within eps * grid[i+1] of the ones computed from the points, which
+    # moves the curve by a few of that relative change times its size
+    # (docs/spec.md, "Knots and knot intervals").
     d = crspline.CatmullRom(WAVE)
     e = crspline.CatmullRom(WAVE, grid=d.grid)
+    assert np.array_equal(e.grid, d.grid)
     t = np.linspace(*d.domain, 41)
-    assert np.array_equal(d.evaluate(t), e.evaluate(t))
+    delta = np.max(np.finfo(float).eps * d.grid[1:] / np.diff(d.grid))
+    assert np.max(np.abs(d.evaluate(t) - e.evaluate(t))) <= 8 * delta * np.max(np.abs(WAVE))
 
 
 def test_tension():

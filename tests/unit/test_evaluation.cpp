@@ -50,25 +50,87 @@ TEST(Evaluation, BatchSortedUnsortedAndScalarAgree) {
     }
 }
 
-TEST(Evaluation, StoredKnotsDefineTheCurve) {
-    // grid() passed back as an explicit grid reproduces the curve bit for
-    // bit, for every alpha, including a tiny chord after long ones.
+TEST(Evaluation, RebuildingReproducesTheCurve) {
+    // The curve keeps its knot intervals as computed and grid() holds their
+    // rounded running sums (catmull_rom's class comment). What reproduces
+    // it: options() (with grid() when the grid was explicit) bit for bit;
+    // grid() passed back as an explicit grid of an alpha curve gives the
+    // same knots, intervals within eps * grid[i+1] of the originals, and a
+    // shape within the first-order effect of that change. Random polygons
+    // with chords over 6 decades and a tiny chord after long ones, where
+    // intervals lose digits in the sums.
     CRSPLINE_SEEDED(s, 22);
     std::mt19937_64 rng(s);
-    int checked = 0;
-    for (double alpha : {0.25, 0.5, 1.0})
+    int checked = 0, rounded_intervals = 0;
+    for (double alpha : {0.0, 0.25, 0.5, 1.0})
         for (bool closed : {false, true}) {
             auto p = random_polygon<2>(rng, 9, 6.0);
             p[5] = p[4] + P2{{1e-9, -2e-9}};
-            catmull_rom<2> a(p, {.alpha = alpha, .closed = closed});
-            std::vector<double> g(a.grid().begin(), a.grid().end());
-            catmull_rom<2> b(p, {.grid = g, .closed = closed});
-            for (std::size_t i = 0; i < a.segment_count(); ++i) {
-                EXPECT_EQ(a.bezier(i), b.bezier(i)) << "segment " << i;
+            const catmull_rom<2> a(p, {.alpha = alpha, .closed = closed});
+            const auto g = a.grid();
+            const auto h = a.intervals();
+            const std::size_t nseg = a.segment_count();
+            auto same_bits = [&](const catmull_rom<2>& b) {
+                ASSERT_EQ(b.segment_count(), nseg);
+                for (std::size_t i = 0; i <= nseg; ++i) EXPECT_EQ(b.grid()[i], g[i]) << "knot " << i;
+                for (std::size_t i = 0; i < nseg; ++i) {
+                    EXPECT_EQ(b.intervals()[i], h[i]) << "interval " << i;
+                    EXPECT_EQ(b.bezier(i), a.bezier(i)) << "segment " << i;
+                }
+            };
+            // 1. options() rebuilds the same curve bit for bit.
+            same_bits(catmull_rom<2>(p, a.options()));
+            // 2. An explicit grid: its intervals are its differences, and
+            //    options() + grid() rebuild it bit for bit.
+            const catmull_rom<2> e(p, {.grid = std::vector<double>(g.begin(), g.end()), .closed = closed});
+            auto eo = e.options();
+            ASSERT_FALSE(eo.alpha.has_value());
+            eo.grid.emplace(e.grid().begin(), e.grid().end());
+            const catmull_rom<2> e2(p, eo);
+            for (std::size_t i = 0; i < nseg; ++i) {
+                EXPECT_EQ(e.intervals()[i], g[i + 1] - g[i]);
+                EXPECT_EQ(e2.bezier(i), e.bezier(i)) << "segment " << i;
+            }
+            // 3. grid() passed back (the curve e): the same knots; intervals
+            //    d(i) = g[i+1] - g[i] within eps * g[i+1] of h(i) (one
+            //    rounding of the sum, one of the difference); exact for
+            //    alpha = 0, whose sums of ones are exact.
+            for (std::size_t i = 0; i <= nseg; ++i) EXPECT_EQ(e.grid()[i], g[i]);
+            std::vector<double> delta(nseg);  // relative change of each interval
+            for (std::size_t i = 0; i < nseg; ++i) {
+                const double d = e.intervals()[i];
+                EXPECT_LE(std::abs(d - h[i]), eps * g[i + 1]) << "interval " << i;
+                if (alpha == 0) {
+                    EXPECT_EQ(d, h[i]);
+                }
+                if (d != h[i]) ++rounded_intervals;
+                delta[i] = h[i] > 0 ? std::abs(d - h[i]) / h[i] : 0;
+            }
+            //    The shape: B1 - B0 = h(i) m(i) / 3 with h(i) m(i) = a c(i-1) + b c(i)
+            //    (c the chords), a = h(i)^2 / (h(i-1) (h(i-1) + h(i))) <= h(i) / h(i-1)
+            //    and b = h(i-1) / (h(i-1) + h(i)) <= 1; relative changes delta of the
+            //    intervals change log a by at most 4 delta and log b by 2 delta, so
+            //    B1 moves by at most 4/3 delta (a |c(i-1)| + b |c(i)|), likewise B2
+            //    with c(i+1) and h(i) / h(i+1); a natural end, (3 c - h m) / 2, by
+            //    no more. 3 delta S, S = |c(i-1)| h(i)/h(i-1) + |c(i)| + |c(i+1)| h(i)/h(i+1),
+            //    covers both with second-order room; plus rounding of the points.
+            auto chord = [&](std::size_t k) { return norm(p[(k + 1) % p.size()] - p[k]); };
+            for (std::size_t i = 0; i < nseg; ++i) {
+                const bool has_prev = closed || i > 0, has_next = closed || i + 1 < nseg;
+                const std::size_t ip = (i + nseg - 1) % nseg, in = (i + 1) % nseg;
+                double S = chord(i), dl = delta[i];
+                if (has_prev && h[ip] > 0) S += chord(ip) * h[i] / h[ip], dl = std::max(dl, delta[ip]);
+                if (has_next && h[in] > 0) S += chord(in) * h[i] / h[in], dl = std::max(dl, delta[in]);
+                const auto A = a.bezier(i), B = e.bezier(i);
+                const double size = max_abs(A[0]) + max_abs(A[3]) + S;
+                for (int k = 1; k <= 2; ++k)
+                    EXPECT_LE(norm(A[k] - B[k]), 3 * dl * S + 64 * eps * size) << "segment " << i << " B" << k;
                 ++checked;
             }
         }
-    EXPECT_EQ(checked, 3 * (8 + 9));
+    EXPECT_EQ(checked, 4 * (8 + 9));
+    // The sums did round somewhere, so part 3 checked a real difference.
+    EXPECT_GT(rounded_intervals, 0);
 }
 
 TEST(Evaluation, DegenerateSegmentsNeverGiveNaN) {
