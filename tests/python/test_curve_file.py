@@ -104,7 +104,7 @@ def test_the_command_line_reads_what_python_saved(tmp_path):
         crspline.save(path, c)
         t = _t_inside(c, 3)
         p = subprocess.run([os.environ["CRSPLINE_BIN"], "eval", "--t", ",".join(repr(float(x)) for x in t),
-                            "--derivatives", "0,1", str(path)], capture_output=True, text=True, timeout=60)
+                            "--derivatives", "0,1", "--knots", str(path)], capture_output=True, text=True, timeout=60)
         assert p.returncode == 0, f"seed {seed}, case {k}: {p.stderr}"
         out = json.loads(p.stdout)
         assert out["grid"] == c.grid.tolist(), f"seed {seed}, case {k}"
