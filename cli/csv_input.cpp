@@ -262,6 +262,7 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
             out.dimension = chosen.size();
             if (header) {
                 for (const field& f : fields) header_names.emplace_back(unquote(f.text));
+                for (const std::size_t k : chosen) out.column_names.push_back(header_names[k]);
                 continue;
             }
         } else {

@@ -425,9 +425,7 @@ double parse_accuracy(const document& doc) {
     if (!a) return 1e-12;
     const double x = finite_number(a->value, a->name);
     if (!(x > 0 && x < 1)) fail(a->name, "expected a relative accuracy in (0, 1), got " + describe(a->value));
-    if (x < min_relative_accuracy)
-        fail(a->name, describe(a->value) + " is below what double arithmetic resolves; the smallest meaningful "
-                      "relative accuracy is " + format_number(min_relative_accuracy));
+    if (const std::string why = accuracy_floor_problem(x); !why.empty()) fail(a->name, why);
     return x;
 }
 
@@ -573,11 +571,8 @@ sample_spec parse_sample(const document& doc) {
         // without end (resolution.hpp): say the smallest meaningful value.
         double largest = 0;
         for (const double x : s.curve.coords) largest = std::max(largest, std::abs(x));
-        const double floor = min_distance_tolerance(largest);
-        if (s.tolerance < floor)
-            fail(tolerance->name, describe(tolerance->value) + " is below what the coordinates resolve (their "
-                                  "largest magnitude is spaced " + format_number(ulp_at(largest)) +
-                                  " apart); the smallest meaningful tolerance for this input is " + format_number(floor));
+        if (const std::string why = tolerance_floor_problem(s.tolerance, largest); !why.empty())
+            fail(tolerance->name, why);
         s.by = sample_spec::kind::tolerance;
     }
     return s;

@@ -47,6 +47,9 @@ struct point_set {
     std::vector<std::size_t> lines;
     std::string path = "points";  ///< JSON path of the points' array ("features[2].geometry.coordinates[0]")
     std::vector<std::string> notes;  ///< what reading them noticed, for stderr (the columns a CSV file gave)
+    /// The header's names of the coordinate columns read (CSV with a header
+    /// line; empty otherwise), one per coordinate, for axis labels.
+    std::vector<std::string> column_names;
     /// Several curves in one text (CSV blocks or a curve-id column): the
     /// first point of each, and its id. Empty: one curve.
     std::vector<std::size_t> curve_starts;

@@ -139,6 +139,7 @@ loaded_input load_input(const cli_options& o) {
                                                  : "block " + std::to_string(k + 1) + " (line " +
                                                        std::to_string(all.lines[b]) + ")";
                 p.name = "points";
+                p.column_names = all.column_names;
                 d.points = std::move(p);
                 d.has_fields = false;
                 li.curves.push_back(std::move(d));

@@ -173,25 +173,12 @@ int run_plot(const cli_options& o) {
     if (!o.xlim.empty()) f.xlim = range_option("--xlim", o.xlim);
     if (!o.ylim.empty()) f.ylim = range_option("--ylim", o.ylim);
     f.point_markers = !o.no_points;
-    // Axis labels: the CSV column names chosen with --columns x,y (names,
-    // not numbers).
-    if (!o.columns.empty()) {
-        std::vector<std::string> names;
-        std::string name;
-        for (char ch : o.columns + ",") {
-            if (ch != ',') {
-                name += ch;
-                continue;
-            }
-            while (!name.empty() && name.back() == ' ') name.pop_back();
-            while (!name.empty() && name.front() == ' ') name.erase(0, 1);
-            names.push_back(name);
-            name.clear();
-        }
-        if (names.size() == 2) {
-            if (!parse_number(names[0])) f.xlabel = names[0];
-            if (!parse_number(names[1])) f.ylabel = names[1];
-        }
+    // Axis labels: the names of the two coordinate columns in a CSV file's
+    // header (whether chosen with --columns or not); "x" and "y" otherwise,
+    // and for a column without a name.
+    if (const auto& pts = in.curves.front().points; pts && pts->column_names.size() == 2) {
+        if (!pts->column_names[0].empty()) f.xlabel = pts->column_names[0];
+        if (!pts->column_names[1].empty()) f.ylabel = pts->column_names[1];
     }
     overlay_options ov;
     ov.cusps = o.cusps || o.all_overlays;

@@ -13,9 +13,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <concepts>
 #include <cstddef>
 #include <limits>
 #include <span>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+#include "error.hpp"
+#include "detail/format.hpp"
 
 namespace crspline {
 
@@ -32,20 +39,21 @@ inline constexpr double tolerance_floor_ulps = 64;
 /// (8 machine epsilons, about 1.8e-15).
 inline constexpr double min_relative_accuracy = 8 * std::numeric_limits<double>::epsilon();
 
-/// The spacing of doubles at magnitude |m| (that of the smallest positive
-/// normal double for m = 0, so that the result is never 0; finite for the
-/// largest double too).
-inline double ulp_at(double m) noexcept {
-    m = std::max(std::abs(m), std::numeric_limits<double>::min());
-    const double up = std::nextafter(m, std::numeric_limits<double>::infinity());
-    return std::isfinite(up) ? up - m : m - std::nextafter(m, 0.0);  // the largest double: the spacing below it
+/// The spacing of T at magnitude |m| (that of the smallest positive normal T
+/// for m = 0, so that the result is never 0; finite for the largest T too).
+template <std::floating_point T>
+inline T ulp_at(T m) noexcept {
+    m = std::max(std::abs(m), std::numeric_limits<T>::min());
+    const T up = std::nextafter(m, std::numeric_limits<T>::infinity());
+    return std::isfinite(up) ? up - m : m - std::nextafter(m, T(0));  // the largest T: the spacing below it
 }
 
-/// The smallest meaningful distance tolerance for coordinates whose largest
-/// magnitude is max_abs: tolerance_floor_ulps * ulp(max_abs). Unit
-/// coordinates give about 1.4e-14, coordinates near 1e6 about 7.5e-9.
-inline double min_distance_tolerance(double max_abs) noexcept {
-    return tolerance_floor_ulps * ulp_at(max_abs);
+/// The smallest meaningful distance tolerance for coordinates of type T whose
+/// largest magnitude is max_abs: tolerance_floor_ulps * ulp(max_abs). Unit
+/// double coordinates give about 1.4e-14, coordinates near 1e6 about 7.5e-9.
+template <std::floating_point T>
+inline T min_distance_tolerance(T max_abs) noexcept {
+    return T(tolerance_floor_ulps) * ulp_at(max_abs);
 }
 
 /// The same for flat coordinates (any dimension): their largest magnitude.
@@ -53,6 +61,58 @@ inline double min_distance_tolerance(std::span<const double> coords) noexcept {
     double m = 0;
     for (const double x : coords) m = std::max(m, std::abs(x));
     return min_distance_tolerance(m);
+}
+
+// The words every front end uses (CLI, Python, WebAssembly): each prefixes
+// them with the name of its option or argument ("--tolerance: ...",
+// "tolerance: ...").
+
+/// Why a distance tolerance is below what coordinates of type T with largest
+/// magnitude max_abs resolve, naming the smallest meaningful value; "" when
+/// it is not below, and for a tolerance that is not a positive number (the
+/// caller refuses those in its own words).
+template <std::floating_point T>
+std::string tolerance_floor_problem(double tolerance, T max_abs) {
+    const T floor = min_distance_tolerance(max_abs);
+    if (!(tolerance > 0 && tolerance < double(floor))) return {};
+    return detail::num(tolerance) + " is below what the coordinates resolve (their largest magnitude is spaced " +
+           detail::num(double(ulp_at(max_abs))) + " apart); the smallest meaningful tolerance for this input is " +
+           detail::num(double(floor));
+}
+
+/// Why a relative accuracy is below what double arithmetic resolves, naming
+/// min_relative_accuracy; "" when it is not below, and for an accuracy that
+/// is not a positive number (the caller refuses those in its own words).
+inline std::string accuracy_floor_problem(double accuracy) {
+    if (!(accuracy > 0 && accuracy < min_relative_accuracy)) return {};
+    return detail::num(accuracy) + " is below what double arithmetic resolves; the smallest meaningful relative "
+                                   "accuracy is " + detail::num(min_relative_accuracy);
+}
+
+/// The largest coordinate magnitude of a curve's points (anything with
+/// points() giving fixed-size vectors: catmull_rom, hermite).
+template <class Curve>
+auto largest_magnitude(const Curve& c) noexcept {
+    using P = typename decltype(c.points())::value_type;
+    std::remove_cvref_t<decltype(std::declval<const P&>()[0])> m = 0;
+    for (const auto& p : c.points())
+        for (std::size_t k = 0; k < p.size(); ++k) m = std::max(m, std::abs(p[k]));
+    return m;
+}
+
+/// Throws invalid_input("<name>: " + tolerance_floor_problem(...)) when a
+/// distance tolerance is below what the curve's coordinates resolve.
+template <class Curve>
+void check_distance_tolerance(const Curve& c, double tolerance, const std::string& name = "tolerance") {
+    const std::string why = tolerance_floor_problem(tolerance, largest_magnitude(c));
+    if (!why.empty()) throw invalid_input(name + ": " + why);
+}
+
+/// Throws invalid_input("<name>: " + accuracy_floor_problem(...)) when a
+/// relative accuracy is below min_relative_accuracy.
+inline void check_relative_accuracy(double accuracy, const std::string& name = "accuracy") {
+    const std::string why = accuracy_floor_problem(accuracy);
+    if (!why.empty()) throw invalid_input(name + ": " + why);
 }
 
 }  // namespace crspline

@@ -2,6 +2,7 @@
 #include <optional>
 
 #include <crspline/arc_length.hpp>
+#include <crspline/resolution.hpp>
 
 #include "curve.hpp"
 
@@ -33,6 +34,7 @@ void bind_arc_length(py::module_& m, py::class_<curve>& cls) {
     cls.def("arc_length", [](const curve& c, double accuracy) {
         return c.visit([&](const auto& cr) {
             using T = scalar_t<decltype(cr)>;
+            check_relative_accuracy(accuracy);
             py::gil_scoped_release nogil;
             return double(arc_length(cr, T(accuracy)));
         });
@@ -41,6 +43,7 @@ void bind_arc_length(py::module_& m, py::class_<curve>& cls) {
     cls.def("arc_length_between", [](const curve& c, double ta, double tb, double accuracy) {
         return c.visit([&](const auto& cr) {
             using T = scalar_t<decltype(cr)>;
+            check_relative_accuracy(accuracy);
             py::gil_scoped_release nogil;
             return double(arc_length(cr, T(ta), T(tb), T(accuracy)));
         });
@@ -51,6 +54,7 @@ void bind_arc_length(py::module_& m, py::class_<curve>& cls) {
         return c.visit([&](const auto& cr) {
             using T = scalar_t<decltype(cr)>;
             constexpr std::size_t D = dimension_v<decltype(cr)>;
+            check_relative_accuracy(accuracy);
             py::gil_scoped_release nogil;
             return table{arc_length_table<D, T>(cr, T(accuracy))};
         });
@@ -113,6 +117,7 @@ void bind_arc_length(py::module_& m, py::class_<curve>& cls) {
             using T = scalar_t<decltype(cr)>;
             constexpr std::size_t D = dimension_v<decltype(cr)>;
             samples<D, T> r;
+            check_relative_accuracy(accuracy);
             {
                 py::gil_scoped_release nogil;
                 r = sample_arc_length(cr, n, T(accuracy));

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include <crspline/arc_length.hpp>
+#include <crspline/resolution.hpp>
 #ifdef CRSPLINE_PY_GEOMETRY
 #include <crspline/tessellate.hpp>
 #endif
@@ -142,6 +143,7 @@ shared_options options_of(std::optional<double> alpha, const ends_arg& ends, dou
 void bind_batch(py::module_& m) {
     m.def("_arc_lengths", [](const point_arrays& curves, std::optional<double> alpha, const ends_arg& ends,
                              double tension, bool strict, double accuracy, std::size_t workers) {
+        check_relative_accuracy(accuracy);  // once for all the curves
         const auto lengths = for_each_curve<double>(
             curves, options_of(alpha, ends, tension, strict), workers,
             [accuracy](const auto& c, std::size_t) { return double(arc_length(c, accuracy)); });
@@ -160,6 +162,7 @@ void bind_batch(py::module_& m) {
         };
         const auto lines = for_each_curve<flat>(
             curves, options_of(alpha, ends, tension, strict), workers, [tolerance](const auto& c, std::size_t dim) {
+                if (tolerance) check_distance_tolerance(c, *tolerance);  // below it, subdivision never ends
                 const auto p = tolerance ? tessellate(c, *tolerance) : tessellate(c);
                 flat f{{}, std::vector<double>(p.t.begin(), p.t.end()), dim};
                 f.points.reserve(p.points.size() * dim);

@@ -3,6 +3,7 @@
 
 #include <crspline/bounds.hpp>
 #include <crspline/nearest.hpp>
+#include <crspline/resolution.hpp>
 #include <crspline/tessellate.hpp>
 
 #include "curve.hpp"
@@ -17,6 +18,7 @@ void bind_geometry(py::module_& m, py::class_<curve>& cls) {
             using T = scalar_t<decltype(cr)>;
             constexpr std::size_t D = dimension_v<decltype(cr)>;
             polyline<D, T> p;
+            if (tolerance) check_distance_tolerance(cr, *tolerance);  // below it, subdivision never ends
             {
                 py::gil_scoped_release nogil;
                 p = tolerance ? tessellate(cr, T(*tolerance)) : tessellate(cr);

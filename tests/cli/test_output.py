@@ -457,6 +457,24 @@ def test_plot_limits_and_axis_labels(tmp_path):
         assert p.stderr == f"crspline: {option}: expected two increasing numbers A,B, got '{value}'\n"
 
 
+def test_plot_axis_labels_from_the_csv_header(tmp_path):
+    """The header's names label the axes without --columns too (issue 20:
+    "axis labels from column names"); by 1-based index the chosen columns'
+    names; no header: x and y."""
+    src = tmp_path / "track.csv"
+    src.write_text("easting;northing\n" + "".join(f"{k};{(k * k) % 5}\n" for k in range(8)))
+    texts = svg_texts(ok(["plot", str(src)]))
+    assert "easting" in texts and "northing" in texts and "x" not in texts and "y" not in texts, texts
+    three = tmp_path / "t.csv"
+    three.write_text("time,lon,lat\n" + "".join(f"{k},{k * 0.5},{k % 3}\n" for k in range(8)))
+    texts = svg_texts(ok(["plot", "--columns", "3,2", str(three)]))
+    assert "lat" in texts and "lon" in texts and "time" not in texts, texts
+    bare = tmp_path / "bare.csv"
+    bare.write_text("".join(f"{k},{k % 3}\n" for k in range(8)))
+    texts = svg_texts(ok(["plot", str(bare)]))
+    assert "x" in texts and "y" in texts, texts
+
+
 def point_dots(svg):
     """Subpaths of the black-filled point markers (the legend's dot is one)."""
     out = []

@@ -26,6 +26,7 @@
 #include <crspline/certify.hpp>
 #include <crspline/intersections.hpp>
 #include <crspline/report.hpp>
+#include <crspline/resolution.hpp>
 
 #include <cmath>
 #include <limits>
@@ -411,6 +412,7 @@ public:
     val tessellate(double tolerance) const {
         return guarded([&] {
             return visit([&](const auto& c) {
+                if (tolerance > 0) cr::check_distance_tolerance(c.curve, tolerance);  // below it, subdivision never ends
                 const auto p = tolerance > 0 ? cr::tessellate(c.curve, tolerance) : cr::tessellate(c.curve);
                 val r = val::object();
                 r.set("points", points_array(p.points, c.dim));
@@ -447,7 +449,10 @@ public:
     // --- arc length -----------------------------------------------------------
     double arcLength() { return guarded([&] { return visit([](auto& c) { return c.lengths().total(); }); }); }
     double arcLengthAccuracy(double accuracy) const {
-        return guarded([&] { return visit([&](const auto& c) { return cr::arc_length(c.curve, accuracy); }); });
+        return guarded([&] {
+            cr::check_relative_accuracy(accuracy);
+            return visit([&](const auto& c) { return cr::arc_length(c.curve, accuracy); });
+        });
     }
     double arcLengthBetween(double ta, double tb) const {
         return guarded([&] { return visit([&](const auto& c) { return cr::arc_length(c.curve, ta, tb); }); });
@@ -463,6 +468,7 @@ public:
     val sampleArcLength(double n, double accuracy) const {
         return guarded([&] {
             return visit([&](const auto& c) {
+                cr::check_relative_accuracy(accuracy);
                 const auto smp = cr::sample_arc_length(c.curve, count(n), accuracy > 0 ? accuracy : cr::default_accuracy);
                 val r = val::object();
                 r.set("t", float64_array(smp.t));
