@@ -153,7 +153,7 @@ function endFromFile(e, where, dimension) {
 // curve: they are read past and named in `notKept`, which the editor shows.
 // Any other field is an error naming it, never dropped.
 const fileFields = ['points', 'alpha', 'grid', 'tension', 'end', 'kb', 'strict', 'format', 'dimension', 'options'];
-export const requestFields = ['t', 's', 'derivatives', 'accuracy', 'count', 'spacing', 'tolerance'];
+export const requestFields = ['t', 's', 'u', 'arc_fraction', 'knots', 'derivatives', 'accuracy', 'count', 'spacing', 'tolerance', 'summary', 'search'];
 
 function optionsFromFile(data, where, dimension) {
   for (const key of Object.keys(data)) {

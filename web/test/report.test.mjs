@@ -52,7 +52,7 @@ test('Spline.analyze() is the CLI\'s report, key for key and value for value', (
       assert.deepEqual(differences(s.analyze(), c.report, 1e-12), [], c.name);
       // The parts are the report's parts.
       const search = s.intersections();
-      assert.deepEqual(Object.keys(search), ['intersections', 'folds', 'complete', 'any']);
+      assert.deepEqual(Object.keys(search), ['intersections', 'overlaps', 'folds', 'complete', 'any']);
       assert.deepEqual(differences(search.intersections, c.report.intersections, 1e-12), [], c.name);
       const cert = s.certify({ searchOnFailure: false });
       assert.deepEqual(Object.keys(cert), Object.keys(c.report.certificate));
