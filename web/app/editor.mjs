@@ -1682,6 +1682,9 @@ window.editor = {
   length() { rebuild(); return totalLength(); },
   cusps() { rebuild(); return cache.cusps ? cache.cusps.filter(Boolean).flatMap((c) => Array.from(c)) : null; },
   global() { return global; },
+  /// True while the worker analyses (or has a request queued): its answer
+  /// redraws the crossings, ticks and volumes when it comes.
+  get analysing() { return workerBusy || queued; },
   idle() { return new Promise((resolve) => { idleWaiters.push(resolve); requestFrame(); }); },
   resetFrameStats() { frameTimes.length = 0; curveTimes.length = 0; frameIntervals.length = 0; latencies.length = 0; layerFrames = 0; },
   frameStats() { return { work: quantiles(frameTimes), curve: quantiles(curveTimes), interval: quantiles(frameIntervals), latency: quantiles(latencies), layerFrames }; },

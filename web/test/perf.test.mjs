@@ -85,6 +85,10 @@ test('the drag layer draws the pixels of a full redraw, mid-drag and after', asy
     await page.mouse.move(px, py);
     await page.mouse.down();
     await page.mouse.move(px + 40, py + 25, { steps: 5 });
+    // The worker's answer for the moved curve (the crossings of the closing
+    // segment on the closed spiral) must not land between the two pictures:
+    // wait for it, the button still down.
+    await page.waitForFunction(() => !window.editor.analysing, null, { timeout: 60000 });
     await page.evaluate(() => window.editor.redraw());
     const layered = await canvasPixels(page);
     const stats = await page.evaluate(() => window.editor.frameStats());
