@@ -35,7 +35,7 @@ int run_demo(const cli_options& o) {
     const std::string dir = o.output.empty() ? "." : o.output;
     curve_spec spec;
     spec.dimension = 2;
-    for (const auto& p : demo_polygon) spec.coords.insert(spec.coords.end(), {p[0], p[1]});
+    for (const auto& p : demo_polygon) spec.points.insert(spec.points.end(), {p[0], p[1]});
 
     figure f;
     f.title = "Uniform loops, chordal overshoots, centripetal neither";

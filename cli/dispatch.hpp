@@ -35,29 +35,6 @@ decltype(auto) with_dimension(std::size_t dimension, F&& f) {
     });
 }
 
-/// The core's specification of a validated description.
-inline crspline::curve_spec to_core_spec(const curve_spec& c) {
-    const auto end_of = [](const end_spec& e) {
-        crspline::end_spec r;
-        r.type = e.type == end_spec::kind::tangent   ? crspline::end_spec::kind::tangent
-                 : e.type == end_spec::kind::reflect ? crspline::end_spec::kind::reflect
-                                                     : crspline::end_spec::kind::natural;
-        r.velocity = e.velocity;
-        return r;
-    };
-    crspline::curve_spec s;
-    s.dimension = c.dimension;
-    s.points = c.coords;
-    s.alpha = c.alpha;
-    s.grid = c.grid;
-    s.closed = c.closed;
-    if (!c.closed) s.start = end_of(c.start), s.end = end_of(c.end);
-    s.tension = c.tension;
-    s.kb = {c.kb_tension, c.kb_continuity, c.kb_bias};
-    s.strict = c.strict;
-    return s;
-}
-
 /// Builds the curve of storage dimension D (the description's own, or the
 /// zero-padded wide one, see crspline/dispatch.hpp); the library throws
 /// invalid_input for what the description cannot rule out by itself
@@ -72,7 +49,7 @@ catmull_rom<D, double> make_curve(const curve_spec& c) {
         const std::vector<double>& given_in = c.tangents_in.empty() ? c.tangents_out : c.tangents_in;
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t k = 0; k < dim && k < D; ++k) {
-                pts[i][k] = c.coords[i * dim + k];
+                pts[i][k] = c.points[i * dim + k];
                 out[i][k] = c.tangents_out[i * dim + k];
                 in[i][k] = given_in[i * dim + k];
             }
@@ -81,7 +58,7 @@ catmull_rom<D, double> make_curve(const curve_spec& c) {
         return catmull_rom<D, double>::hermite(p, out, in, grid, c.closed);
     }
     try {
-        return crspline::make_curve<D, double>(to_core_spec(c));
+        return crspline::make_curve<D, double>(c.core());
     } catch (const crspline::spec_error& e) {  // coincident points in strict mode
         throw input_error(describe_spec_error(e, c));
     }

@@ -32,9 +32,17 @@ std::string index(const std::string& path, std::size_t i) { return path + "[" + 
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) { throw input_error(path + ": " + what); }
 
-double finite_number(const json& v, const std::string& path) {
+// A value of the curve's specification: a number, whatever its value (the
+// JSON parser already refuses literals beyond the double range; what the
+// value may be is the core's validate()).
+double number(const json& v, const std::string& path) {
     if (!v.is_number()) fail(path, "expected a finite number, got " + describe(v));
-    const double x = v.get<double>();
+    return v.get<double>();
+}
+
+// A value the subcommand reads itself (t, s, accuracy...): a finite number.
+double finite_number(const json& v, const std::string& path) {
+    const double x = number(v, path);
     if (!std::isfinite(x)) fail(path, "expected a finite number, got " + describe(v));
     return x;
 }
@@ -49,6 +57,14 @@ std::vector<double> finite_numbers(const json& v, const std::string& path) {
     std::vector<double> out;
     out.reserve(v.size());
     for (std::size_t i = 0; i < v.size(); ++i) out.push_back(finite_number(v[i], index(path, i)));
+    return out;
+}
+
+std::vector<double> numbers(const json& v, const std::string& path) {
+    array(v, path, "numbers");
+    std::vector<double> out;
+    out.reserve(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(number(v[i], index(path, i)));
     return out;
 }
 
@@ -75,39 +91,25 @@ void check_fields(const json& root, std::string_view command, std::initializer_l
     }
 }
 
-// "natural" | "reflect" | [dx/dt, ...] for one end of the object form.
-end_spec parse_end(const json& v, const std::string& path, std::size_t dim) {
-    const std::string expected = "expected \"natural\", \"reflect\" or a tangent [dx/dt, ...], got ";
-    end_spec e;
-    if (v.is_string()) {
-        const auto& s = v.get_ref<const std::string&>();
-        if (s == "natural") e.type = end_spec::kind::natural;
-        else if (s == "reflect") e.type = end_spec::kind::reflect;
-        else fail(path, expected + describe(v));
-        return e;
-    }
-    if (!v.is_array()) fail(path, expected + describe(v));
-    if (v.size() != dim)
-        fail(path, "expected a tangent of " + std::to_string(dim) + " coordinates like the points, got " +
-                       std::to_string(v.size()));
-    e.type = end_spec::kind::tangent;
-    e.velocity = finite_numbers(v, path);
-    return e;
+// "natural" | "reflect" | [dx/dt, ...] for one end: `which` is the core's
+// field ("start" or "end"), `path` what the user wrote (a JSON path or flag).
+// The name and the tangent's length and values are the core's to judge.
+crspline::end_spec parse_end(const json& v, const std::string& path, const char* which) {
+    if (v.is_string()) return end_from_name(which, v.get_ref<const std::string&>());
+    if (!v.is_array()) fail(path, "expected \"natural\", \"reflect\" or a tangent [dx/dt, ...], got " + describe(v));
+    return {crspline::end_spec::kind::tangent, numbers(v, path)};
 }
 
-// kb.tension / kb.continuity / kb.bias: one finite value per vertex; null
-// only where the library ignores the value (the end vertices of an open curve).
+// kb.tension / kb.continuity / kb.bias: one number per vertex, the count and
+// the values judged by the core. null stands where the library ignores the
+// value (the end vertices of an open curve: 0 there); anywhere else it is a
+// missing value (NaN, which the core refuses as not finite).
 std::vector<double> parse_kb_values(const json& v, const std::string& path, std::size_t n, bool closed) {
     array(v, path, "numbers, one per point");
-    if (v.size() != n)
-        fail(path, "expected " + std::to_string(n) + " values (one per point), got " + std::to_string(v.size()));
-    std::vector<double> out(n, 0.0);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (v[i].is_null() && !closed && (i == 0 || i + 1 == n)) continue;  // ignored end vertex
-        if (v[i].is_null())
-            fail(index(path, i), "expected a finite number, got null (null is allowed only at the two end "
-                                 "vertices of an open curve)");
-        out[i] = finite_number(v[i], index(path, i));
+    std::vector<double> out(v.size(), 0.0);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        if (v[i].is_null()) out[i] = !closed && (i == 0 || i + 1 == n) ? 0.0 : std::nan("");
+        else out[i] = number(v[i], index(path, i));
     }
     return out;
 }
@@ -197,9 +199,7 @@ std::optional<double> alpha_flag(const cli_options& f) {
     if (f.uniform) return 0.0;
     if (f.centripetal) return 0.5;
     if (f.chordal) return 1.0;
-    const double a = finite_number(scalar(f.alpha), "--alpha");
-    if (!(a >= 0 && a <= 1)) fail("--alpha", "must be in [0, 1], got " + format_number(a));
-    return a;
+    return number(scalar(f.alpha), "--alpha");  // its range is the core's
 }
 
 bool any_alpha_flag(const cli_options& f) { return f.uniform || f.centripetal || f.chordal || !f.alpha.empty(); }
@@ -219,21 +219,6 @@ std::optional<field_value> field(const json& root, const char* key, const cli_op
     return std::nullopt;
 }
 
-// The grid: N increasing finite values (N + 1 when closed).
-std::vector<double> parse_grid(const json& v, const std::string& name, std::size_t n, bool closed) {
-    std::vector<double> g = finite_numbers(v, name);
-    const std::size_t expected = closed ? n + 1 : n;
-    if (g.size() != expected)
-        fail(name, "expected " + std::to_string(expected) + " values (" +
-                       (closed ? "one per point plus one to close the curve" : "one per point") + "), got " +
-                       std::to_string(g.size()));
-    for (std::size_t i = 1; i < g.size(); ++i)
-        if (!(g[i] > g[i - 1]))
-            fail(index(name, i), "must be greater than grid[" + std::to_string(i - 1) + "] = " +
-                                     format_number(g[i - 1]) + ", got " + format_number(g[i]));
-    return g;
-}
-
 // A closed curve whose last point repeats the first (the GeoJSON and SVG
 // convention for rings): the repeat is dropped, since a closed curve joins
 // its last point to the first by itself; kept, it would be a duplicated
@@ -241,9 +226,9 @@ std::vector<double> parse_grid(const json& v, const std::string& name, std::size
 bool drop_closing_repeat(curve_spec& c) {
     const std::size_t n = c.point_count(), d = c.dimension;
     if (n < 3) return false;
-    if (!std::equal(c.coords.begin(), c.coords.begin() + std::ptrdiff_t(d), c.coords.end() - std::ptrdiff_t(d)))
+    if (!std::equal(c.points.begin(), c.points.begin() + std::ptrdiff_t(d), c.points.end() - std::ptrdiff_t(d)))
         return false;
-    c.coords.resize(c.coords.size() - d);
+    c.points.resize(c.points.size() - d);
     if (!c.lines.empty()) c.lines.pop_back();
     return true;
 }
@@ -267,7 +252,15 @@ std::string describe_spec_error(const crspline::spec_error& e, const curve_spec&
                    (c.lines.empty() ? "" : " (counted from 0)");
         return file + point_location(c, i) + ": " + what;
     }
-    return file + e.what();
+    // A Kochanek-Bartels null reaches the core as NaN (parse_kb_values): say
+    // where null may stand.
+    std::string what = e.what();
+    if (e.field().rfind("kb.", 0) == 0 && e.value() == "nan")
+        what += " (null is allowed only at the two end vertices of an open curve)";
+    // A field a flag set: the flag, then the core's words.
+    for (const auto& [field, flag] : c.flags)
+        if (field == e.field()) return flag + ": " + what;
+    return file + what;
 }
 
 curve_spec parse_curve(const document& doc, std::string_view command, std::initializer_list<std::string_view> extra) {
@@ -278,136 +271,143 @@ curve_spec parse_curve(const document& doc, std::string_view command, std::initi
     check_fields(root, command, extra);
     curve_spec c;
     c.file = doc.file;
+    const auto by_flag = [&c](const char* field, const std::string& flag) { c.flags.emplace_back(field, flag); };
 
-    // points: N x D finite numbers, D in 1..16 and the same for every point.
-    std::string points_name = "points";
+    // points: N lists of the same number of numbers (how many, and their
+    // values, are the core's to judge).
     if (doc.points) {
         c.dimension = doc.points->dimension;
-        c.coords = doc.points->coords;
+        c.points = doc.points->coords;
         c.lines = doc.points->lines;
         c.points_path = doc.points->path;
-        points_name = doc.points->name;
     } else if (!root.contains("points")) {
         throw input_error("missing field 'points'");
     }
-    static const json no_points = json::array();  // flat points were validated when read
+    static const json no_points = json::array();  // flat points were read already
     const json& pts = doc.points ? no_points : array(root["points"], "points", "points");
     for (std::size_t i = 0; i < pts.size(); ++i) {
         const std::string at = index("points", i);
         const json& p = array(pts[i], at, "coordinates");
-        if (i == 0 && (p.empty() || p.size() > max_runtime_dimension))
-            fail(at, "expected 1 to " + std::to_string(max_runtime_dimension) + " coordinates, got " +
-                         std::to_string(p.size()));
         if (i > 0 && p.size() != c.dimension)
             fail(at, "expected " + std::to_string(c.dimension) + " coordinates like points[0], got " +
                          std::to_string(p.size()));
         c.dimension = p.size();
-        for (std::size_t k = 0; k < p.size(); ++k) c.coords.push_back(finite_number(p[k], index(at, k)));
+        for (std::size_t k = 0; k < p.size(); ++k) c.points.push_back(number(p[k], index(at, k)));
     }
-    if (c.point_count() == 0) fail(points_name, "a curve needs at least 2 points, got 0");
+    // No points at all: no dimension either; any will do for the core to
+    // say that two points are needed.
+    if (pts.empty() && c.points.empty()) c.dimension = 1;
 
     // end: --closed, --start, --end, else "end": "natural" | "reflect" |
     // "closed" | {"start": E, "end": E}. A flag for one end leaves the other
     // end as the JSON says (an open curve).
     if (f && f->closed && (!f->start.empty() || !f->end.empty()))
         throw input_error("--closed: a closed curve has no end conditions (--start, --end)");
-    if (f && f->closed) {
-        c.closed = true;
-    } else if (root.contains("end")) {
-        const json& e = root["end"];
-        const std::string expected =
-            "expected \"natural\", \"reflect\", \"closed\" or {\"start\": ..., \"end\": ...}, got ";
-        if (e.is_string()) {
-            const auto& s = e.get_ref<const std::string&>();
-            if (s == "closed") c.closed = true;
-            else if (s == "natural") c.start.type = c.end.type = end_spec::kind::natural;
-            else if (s == "reflect") c.start.type = c.end.type = end_spec::kind::reflect;
-            else fail("end", expected + describe(e));
-        } else if (e.is_object()) {
-            for (const auto& [key, value] : e.items()) {
-                if (key == "start") c.start = parse_end(value, "end.start", c.dimension);
-                else if (key == "end") c.end = parse_end(value, "end.end", c.dimension);
-                else fail("end", "unknown field '" + key + "' (expected \"start\" and \"end\")");
+    // From here on the core judges the values (an end's name too): its
+    // spec_error is rendered with the file, the point or the flag.
+    try {
+        if (f && f->closed) {
+            c.closed = true;
+        } else if (root.contains("end")) {
+            const json& e = root["end"];
+            if (e.is_string()) {
+                set_ends(c, e.get_ref<const std::string&>());
+            } else if (e.is_object()) {
+                for (const auto& [key, value] : e.items()) {
+                    if (key == "start") c.start = parse_end(value, "end.start", "start");
+                    else if (key == "end") c.end = parse_end(value, "end.end", "end");
+                    else fail("end", "unknown field '" + key + "' (expected \"start\" and \"end\")");
+                }
+            } else {
+                fail("end", "expected \"natural\", \"reflect\", \"closed\" or {\"start\": ..., \"end\": ...}, got " +
+                                describe(e));
             }
+        }
+        if (f && (!f->start.empty() || !f->end.empty())) {
+            c.closed = false;
+            if (!f->start.empty()) {
+                by_flag("start", "--start");
+                c.start = parse_end(end_value("--start", f->start), "--start", "start");
+            }
+            if (!f->end.empty()) {
+                by_flag("end", "--end");
+                c.end = parse_end(end_value("--end", f->end), "--end", "end");
+            }
+        }
+        // A repeated first point is dropped where the closing comes from the
+        // command line (--closed on a CSV or JSON file); the JSON curve file's
+        // own "end": "closed" is taken as written (three.js and d3 keep such a
+        // point, and the reference tests compare with them).
+        if (c.closed && f && f->closed && c.point_count() > 0) {
+            const std::string last = point_location(c, c.point_count() - 1);
+            if (drop_closing_repeat(c))
+                doc.notes.push_back((c.file.empty() ? std::string() : c.file + ": ") + last +
+                                    ": repeats the first point; a closed curve joins its last point to the first by "
+                                    "itself, so the repeat is dropped");
+        }
+        const std::size_t n = c.point_count();
+
+        // alpha or grid (the core: not both; default alpha 0.5). A flag
+        // overrides the JSON: --alpha (or a preset) replaces "alpha" and "grid",
+        // --grid both.
+        const std::optional<double> flag_alpha = f ? alpha_flag(*f) : std::nullopt;
+        if (f && !f->grid.empty()) {
+            if (any_alpha_flag(*f) && f->command != "plot")
+                throw input_error("--grid: give --grid or an alpha (--alpha, --uniform, --centripetal, --chordal), not both");
+            c.grid = numbers(number_list("--grid", f->grid), "--grid");
+            by_flag("grid", "--grid");
+        } else if (flag_alpha) {
+            c.alpha = flag_alpha;
+            by_flag("alpha", f->alpha.empty() ? "--" + std::string(f->uniform ? "uniform" : f->chordal ? "chordal" : "centripetal") : "--alpha");
         } else {
-            fail("end", expected + describe(e));
+            if (root.contains("alpha")) c.alpha = number(root["alpha"], "alpha");
+            if (root.contains("grid")) c.grid = numbers(root["grid"], "grid");
         }
-    }
-    if (f && (!f->start.empty() || !f->end.empty())) {
-        c.closed = false;
-        if (!f->start.empty()) c.start = parse_end(end_value("--start", f->start), "--start", c.dimension);
-        if (!f->end.empty()) c.end = parse_end(end_value("--end", f->end), "--end", c.dimension);
-    }
-    // A repeated first point is dropped where the closing comes from the
-    // command line (--closed on a CSV or JSON file); the JSON curve file's
-    // own "end": "closed" is taken as written (three.js and d3 keep such a
-    // point, and the reference tests compare with them).
-    if (c.closed && f && f->closed && c.point_count() > 0) {
-        const std::string last = point_location(c, c.point_count() - 1);
-        if (drop_closing_repeat(c))
-            doc.notes.push_back((c.file.empty() ? std::string() : c.file + ": ") + last +
-                                ": repeats the first point; a closed curve joins its last point to the first by "
-                                "itself, so the repeat is dropped");
-    }
-    const std::size_t n = c.point_count(), needed = 2;  // closed too: a loop of two segments
-    if (n < needed)
-        fail(points_name, std::string(c.closed ? "a closed curve" : "a curve") + " needs at least " +
-                              std::to_string(needed) + " points, got " + std::to_string(n));
 
-    // alpha or grid (not both); default alpha 0.5. A flag overrides the
-    // JSON: --alpha (or a preset) replaces "alpha" and "grid", --grid both.
-    const std::optional<double> flag_alpha = f ? alpha_flag(*f) : std::nullopt;
-    if (f && !f->grid.empty()) {
-        if (any_alpha_flag(*f) && f->command != "plot")
-            throw input_error("--grid: give --grid or an alpha (--alpha, --uniform, --centripetal, --chordal), not both");
-        c.grid = parse_grid(number_list("--grid", f->grid), "--grid", n, c.closed);
-    } else if (flag_alpha) {
-        c.alpha = flag_alpha;
-    } else {
-        if (root.contains("alpha") && root.contains("grid")) fail("grid", "give alpha or grid, not both");
-        if (root.contains("alpha")) {
-            const double a = finite_number(root["alpha"], "alpha");
-            if (!(a >= 0 && a <= 1)) fail("alpha", "must be in [0, 1], got " + format_number(a));
-            c.alpha = a;
+        // tension: tangents scaled by 1 - tension.
+        if (const auto t = field(root, "tension", f, &cli_options::tension, "--tension")) {
+            c.tension = number(t->value, t->name);
+            if (t->flag) by_flag("tension", t->name);
         }
-        if (root.contains("grid")) c.grid = parse_grid(root["grid"], "grid", n, c.closed);
-    }
 
-    // tension: tangents scaled by 1 - tension.
-    if (const auto t = field(root, "tension", f, &cli_options::tension, "--tension")) {
-        c.tension = finite_number(t->value, t->name);
-        if (!(c.tension >= 0 && c.tension <= 1)) fail(t->name, "must be in [0, 1], got " + format_number(c.tension));
-    }
-
-    // kb: per-vertex Kochanek-Bartels values; a missing array means zeros;
-    // --kb-tension and the others replace one array each.
-    if (root.contains("kb")) {
-        const json& kb = root["kb"];
-        if (!kb.is_object())
-            fail("kb", "expected {\"tension\": [...], \"continuity\": [...], \"bias\": [...]}, got " + describe(kb));
-        for (const auto& [key, value] : kb.items()) {
-            const std::string path = "kb." + key;
-            if (key == "tension") c.kb_tension = parse_kb_values(value, path, n, c.closed);
-            else if (key == "continuity") c.kb_continuity = parse_kb_values(value, path, n, c.closed);
-            else if (key == "bias") c.kb_bias = parse_kb_values(value, path, n, c.closed);
-            else fail("kb", "unknown field '" + key + "' (expected \"tension\", \"continuity\", \"bias\")");
+        // kb: per-vertex Kochanek-Bartels values; a missing array means zeros;
+        // --kb-tension and the others replace one array each.
+        if (root.contains("kb")) {
+            const json& kb = root["kb"];
+            if (!kb.is_object())
+                fail("kb", "expected {\"tension\": [...], \"continuity\": [...], \"bias\": [...]}, got " + describe(kb));
+            for (const auto& [key, value] : kb.items()) {
+                const std::string path = "kb." + key;
+                if (key == "tension") c.kb.tension = parse_kb_values(value, path, n, c.closed);
+                else if (key == "continuity") c.kb.continuity = parse_kb_values(value, path, n, c.closed);
+                else if (key == "bias") c.kb.bias = parse_kb_values(value, path, n, c.closed);
+                else fail("kb", "unknown field '" + key + "' (expected \"tension\", \"continuity\", \"bias\")");
+            }
         }
-    }
-    if (f) {
-        const std::tuple<const std::string*, const char*, std::vector<double>*> kb_flags[] = {
-            {&f->kb_tension, "--kb-tension", &c.kb_tension},
-            {&f->kb_continuity, "--kb-continuity", &c.kb_continuity},
-            {&f->kb_bias, "--kb-bias", &c.kb_bias}};
-        for (const auto& [text, flag, values] : kb_flags)
-            if (!text->empty()) *values = parse_kb_values(number_list(flag, *text, true), flag, n, c.closed);
-    }
+        if (f) {
+            const std::tuple<const std::string*, const char*, const char*, std::vector<double>*> kb_flags[] = {
+                {&f->kb_tension, "--kb-tension", "kb.tension", &c.kb.tension},
+                {&f->kb_continuity, "--kb-continuity", "kb.continuity", &c.kb.continuity},
+                {&f->kb_bias, "--kb-bias", "kb.bias", &c.kb.bias}};
+            for (const auto& [text, flag, field_name, values] : kb_flags)
+                if (!text->empty()) {
+                    *values = parse_kb_values(number_list(flag, *text, true), flag, n, c.closed);
+                    by_flag(field_name, flag);
+                }
+        }
 
-    if (f && f->strict) {
-        c.strict = true;
-    } else if (root.contains("strict")) {
-        const json& s = root["strict"];
-        if (!s.is_boolean()) fail("strict", "expected true or false, got " + describe(s));
-        c.strict = s.get<bool>();
+        if (f && f->strict) {
+            c.strict = true;
+        } else if (root.contains("strict")) {
+            const json& s = root["strict"];
+            if (!s.is_boolean()) fail("strict", "expected true or false, got " + describe(s));
+            c.strict = s.get<bool>();
+        }
+
+        // The values: the core's rules, the core's words.
+        crspline::validate(c.core());
+    } catch (const crspline::spec_error& e) {
+        throw input_error(describe_spec_error(e, c));
     }
 
     // tangents: [[dx/dt, ...] per point], or {"in": [...], "out": [...]} when
@@ -570,7 +570,7 @@ sample_spec parse_sample(const document& doc) {
         // Below what the coordinates resolve, tessellation would subdivide
         // without end (resolution.hpp): say the smallest meaningful value.
         double largest = 0;
-        for (const double x : s.curve.coords) largest = std::max(largest, std::abs(x));
+        for (const double x : s.curve.points) largest = std::max(largest, std::abs(x));
         if (const std::string why = tolerance_floor_problem(s.tolerance, largest); !why.empty())
             fail(tolerance->name, why);
         s.by = sample_spec::kind::tolerance;

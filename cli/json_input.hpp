@@ -4,12 +4,16 @@
 // JSON, so that every message names what the user wrote: the JSON field's
 // path or the flag.
 //
-// Every problem with the input is reported as an input_error whose message
-// names the field (or flag), the index and the offending value, e.g.
-//   points[3][1]: expected a finite number, got "abc"
-//   --alpha: must be in [0, 1], got 1.5
-// main() prints it as one line, "crspline: <message>", and exits with 2.
-// Reading and parsing the text is json_parser.hpp's and csv_input.hpp's.
+// The contract checks shapes only (an array where an array belongs, a number
+// where a number does, known field names); what the values must be (alpha
+// in [0, 1], an increasing grid of the right length, two points at least...)
+// is the core's validate() (crspline/spec.hpp), whose spec_error is rendered
+// here with the file, the point's line or JSON path, or the flag:
+//   points[3][1]: expected a finite number, got "abc"       (shape)
+//   --alpha: alpha must be in [0, 1], got 1.5                (the core's words)
+// Every problem is an input_error; main() prints it as one line,
+// "crspline: <message>", and exits with 2. Reading and parsing the text is
+// json_parser.hpp's and csv_input.hpp's.
 #pragma once
 
 #include <cstddef>
@@ -17,35 +21,25 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <crspline/error.hpp>
+#include <crspline/spec.hpp>
 #include <nlohmann/json.hpp>
 
 #include "json_parser.hpp"
 
 namespace crspline::cli {
 
-/// One end of an open curve.
-struct end_spec {
-    enum class kind { natural, reflect, tangent };
-    kind type = kind::natural;
-    std::vector<double> velocity;  ///< dx/dt, one value per dimension, for kind::tangent
-};
-
-/// Everything needed to build a curve, in run-time form.
-struct curve_spec {
-    std::size_t dimension = 0;        ///< 1..16
-    std::vector<double> coords;       ///< the points, flat (point_set layout)
-    std::size_t point_count() const noexcept { return dimension == 0 ? 0 : coords.size() / dimension; }
-    std::optional<double> alpha;      ///< none with a grid; default 0.5 otherwise
-    std::optional<std::vector<double>> grid;
-    bool closed = false;
-    end_spec start, end;
-    double tension = 0;
-    std::vector<double> kb_tension, kb_continuity, kb_bias;  ///< empty = zeros
-    bool strict = false;
-    /// Given tangents dx/dt per point (flat, like coords): the curve is the
+/// A curve as the command line describes it: the core's specification
+/// (crspline/spec.hpp: points, alpha or grid, ends, tension, Kochanek-Bartels
+/// values, strict), which the core validates and builds, plus what only the
+/// command line has: given tangents (a Hermite curve), where the points came
+/// from, and which fields a flag set, so that the core's messages name the
+/// flag the user wrote.
+struct curve_spec : crspline::curve_spec {
+    /// Given tangents dx/dt per point (flat, like points): the curve is the
     /// cubic Hermite curve through the points with them (catmull_rom::hermite).
     /// Empty: tangents computed. tangents_in empty: incoming = outgoing.
     std::vector<double> tangents_out, tangents_in;
@@ -54,6 +48,10 @@ struct curve_spec {
     std::string file;
     std::vector<std::size_t> lines;
     std::string points_path = "points";
+    /// The specification's fields set by a flag: {"alpha", "--alpha"}, ...
+    std::vector<std::pair<std::string, std::string>> flags;
+
+    const crspline::curve_spec& core() const noexcept { return *this; }
 };
 
 /// Where point i (0-based) of the curve is, as a user finds it: "line 7
@@ -61,7 +59,8 @@ struct curve_spec {
 std::string point_location(const curve_spec& c, std::size_t i);
 
 /// The core's spec_error about the description rendered for the command
-/// line: a point by its file and location, a field by its JSON path or flag.
+/// line: the core's words after the file, a point's location as the user
+/// finds it (line, or JSON path), or the flag that set the field.
 std::string describe_spec_error(const crspline::spec_error& e, const curve_spec& c);
 
 /// `crspline eval`: the curve, the parameters (t, or arc lengths s) and the

@@ -43,7 +43,11 @@ std::vector<double> alpha_values(const cli_options& o) {
         for (std::size_t i = 0; i < list.size(); ++i) {
             const double x = list[i].get<double>();
             const std::string at = list.size() > 1 ? "--alpha[" + std::to_string(i) + "]" : "--alpha";
-            if (!(x >= 0 && x <= 1)) throw input_error(at + ": must be in [0, 1], got " + format_number(x));
+            try {
+                check_alpha(x);  // the core's rule and words
+            } catch (const spec_error& e) {
+                throw input_error(at + ": " + e.what());
+            }
             a.push_back(x);
         }
     }

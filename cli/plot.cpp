@@ -205,7 +205,7 @@ int run_plot(const cli_options& o) {
     const curve_spec spec = parse_analyze(in.curves.front());
     if (spec.dimension != 2)
         throw input_error("plot: needs 2-D points, got " + std::to_string(spec.dimension) + "-D (choose two with --columns)");
-    for (std::size_t i = 0; i < spec.point_count(); ++i) f.points.push_back({spec.coords[2 * i], spec.coords[2 * i + 1]});
+    for (std::size_t i = 0; i < spec.point_count(); ++i) f.points.push_back({spec.points[2 * i], spec.points[2 * i + 1]});
     f.closed = spec.closed;
     if (alphas.empty()) alphas.push_back(spec.grid ? NAN : spec.alpha.value_or(0.5));
     for (std::size_t i = 0; i < alphas.size(); ++i) {

@@ -38,4 +38,4 @@ def test_every_dimension_matches_one_coordinate_at_a_time():
 def test_seventeen_is_refused():
     p = run(["length", "-"], json.dumps({"points": [[0] * 17, [1] * 17]}))
     assert p.returncode == 2
-    assert p.stderr == "crspline: points[0]: expected 1 to 16 coordinates, got 17\n"
+    assert p.stderr == "crspline: <stdin>: dimension must be 1 to 16, got 17\n"

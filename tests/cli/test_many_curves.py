@@ -92,7 +92,7 @@ def test_json_list_of_curves_with_ids_and_options():
 
 def test_errors_name_the_curve(tmp_path):
     curves = [{"id": "good", "points": [[0, 0], [1, 1]]}, {"id": "bad", "points": [[0, 0], [1, 1]], "alpha": 3}]
-    check(run(["length", "-"], json.dumps(curves)), "<stdin>: curve bad: alpha: must be in [0, 1], got 3")
+    check(run(["length", "-"], json.dumps(curves)), "<stdin>: curve bad: alpha must be in [0, 1], got 3")
     path = tmp_path / "dup.csv"
     path.write_text("id,x,y\nA,0,0\nA,1,1\nB,0,0\nB,1,1\nB,1,1\nB,2,0\n")
     check(run(["length", "--strict", "--curve-column", "id", str(path)]),

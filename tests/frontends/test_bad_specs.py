@@ -89,3 +89,28 @@ def test_a_message_without_the_words_is_caught():
     assert carries("crspline: grid[1]: expected a finite number, got 1e999", case) == []
     assert carries("crspline: grid[11]: expected a finite number", case) == ["index 1"]
     assert carries("crspline: grid: bad", case) == ["finite", "index 1"]
+
+
+# The values of a curve are judged once, by the core: where the command line
+# can be given the bad value (JSON text holds no infinity: 1e999 is refused
+# by the JSON reader with its line and column, before any rule), its line is
+# the file's name and the core's sentence, the very sentence Python raises.
+# The names of the ends and the dimension are the core's to judge too
+# (end_from_name, set_ends, validate).
+SAME_SENTENCE = [c for c in PYTHON_CASES
+                 if (c["core"] and "Infinity" not in json.dumps(c["spec"]))
+                 or c["name"] in ("bad_end_name", "bad_start_name", "dimension_seventeen")]
+
+
+def test_same_sentence_cases():
+    # Every value rule of the catalogue Python can be given, but the three
+    # infinities, plus the three above.
+    assert len(SAME_SENTENCE) == 14, [c["name"] for c in SAME_SENTENCE]
+
+
+@pytest.mark.parametrize("case", SAME_SENTENCE, ids=[c["name"] for c in SAME_SENTENCE])
+def test_cli_speaks_the_cores_sentence(case):
+    with pytest.raises((ValueError, TypeError)) as e:
+        python_call(case["spec"])()
+    p = cli(["bezier", "-"], json.dumps(case["spec"]))
+    assert p.stderr == f"crspline: <stdin>: {e.value}\n", (p.stderr, str(e.value))
