@@ -70,6 +70,8 @@ function checkPoints(points, where) {
     }
     for (let k = 0; k < dim; ++k) {
       const v = typeof xy[k] === 'number' ? xy[k] : NaN;
+      // The editor holds and draws points before there is a curve (one
+      // point while drawing one): they must be finite here already.
       if (!Number.isFinite(v)) throw new Error(`${where}: point ${i}, coordinate ${k} is not a finite number (${JSON.stringify(xy[k]) ?? xy[k]})`);
       flat[dim * i + k] = v;
     }
@@ -77,32 +79,36 @@ function checkPoints(points, where) {
   return { flat: flat ?? new Float64Array(0), dimension: dim || 2 };
 }
 
+// The shape of the options (a number where a number belongs, known names);
+// what the values may be (alpha and tension in [0, 1], a grid's length and
+// order, a tangent's length, where a KB null may stand) is the library's to
+// judge, in its words: the editor builds the curve when it imports a file
+// (editor.mjs importFile), as the command line and Python do.
 function checkOptions(o, where) {
   const out = { ...defaultOptions };
   if (o == null) return out;
   if (typeof o !== 'object') throw new Error(`${where}: "options" must be an object`);
   for (const key of ['alpha', 'tension']) {
     if (o[key] === undefined) continue;
-    const v = Number(o[key]);
-    if (!(v >= 0 && v <= 1)) throw new Error(`${where}: ${key} must be in [0, 1], got ${o[key]}`);
-    out[key] = v;
+    if (typeof o[key] !== 'number') throw new Error(`${where}: ${key} must be a number, got ${JSON.stringify(o[key])}`);
+    out[key] = o[key];
   }
   if (o.closed !== undefined) out.closed = Boolean(o.closed);
   for (const key of ['start', 'end']) {
     if (o[key] === undefined) continue;
-    const tangent = Array.isArray(o[key]) && o[key].length > 0 && o[key].every((v) => typeof v === 'number' && Number.isFinite(v));
+    const tangent = Array.isArray(o[key]) && o[key].length > 0 && o[key].every((v) => typeof v === 'number');
     if (!endKinds.includes(o[key]) && !tangent) {
       throw new Error(`${where}: ${key} must be one of ${endKinds.join(', ')} or a tangent [dx/dt, ...], got ${JSON.stringify(o[key])}`);
     }
     out[key] = tangent ? [...o[key]] : o[key];
   }
   // Numbers of a list (null: NaN where `nulls`); the core checks the rest
-  // (count, order, where NaN may be).
+  // (count, order, finiteness, where NaN may be).
   const list = (a, path, nulls) => {
     if (!Array.isArray(a)) throw new Error(`${where}: ${path} must be an array of numbers, got ${JSON.stringify(a)}`);
     return a.map((v, i) => {
-      if ((v === null || Number.isNaN(v)) && nulls) return NaN;
-      if (typeof v !== 'number' || !Number.isFinite(v)) throw new Error(`${where}: ${path}[${i}] is not a finite number (${JSON.stringify(v)})`);
+      if (v === null && nulls) return NaN;
+      if (typeof v !== 'number') throw new Error(`${where}: ${path}[${i}] is not a number (${JSON.stringify(v)})`);
       return v;
     });
   };
@@ -130,10 +136,10 @@ function endFromFile(e, where, dimension) {
   const zero = `[${new Array(dimension).fill(0).join(', ')}]`;
   const one = (x, path) => {
     if (x === 'natural' || x === 'reflect') return x;
-    if (Array.isArray(x) && x.length === dimension && x.every((v) => typeof v === 'number' && Number.isFinite(v))) {
-      return x.every((v) => v === 0) ? 'zero' : [...x];
+    if (Array.isArray(x) && x.length > 0 && x.every((v) => typeof v === 'number')) {
+      return x.length === dimension && x.every((v) => v === 0) ? 'zero' : [...x];  // its length: the library's
     }
-    throw new Error(`${where}: ${path}: expected "natural", "reflect" or a tangent of ${dimension} numbers like ${zero}, got ${JSON.stringify(x)}`);
+    throw new Error(`${where}: ${path}: expected "natural", "reflect" or a tangent like ${zero}, got ${JSON.stringify(x)}`);
   };
   if (e === 'closed') return { closed: true };
   if (typeof e === 'string') return { closed: false, start: one(e, 'end'), end: one(e, 'end') };
