@@ -112,8 +112,6 @@ def _as_points(points):
         a = a.reshape(-1, 1)  # a sequence of numbers: points in 1-D
     elif a.ndim != 2:
         raise ValueError(f"points must be an N x dim array (one row per point), got shape {a.shape}")
-    if a.shape[1] == 0:
-        raise ValueError(f"points must have 1 to {max_dimension} coordinates each, got 0")
     return _np.ascontiguousarray(a, dtype=dtype)
 
 

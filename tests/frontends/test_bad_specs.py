@@ -99,13 +99,13 @@ def test_a_message_without_the_words_is_caught():
 # (end_from_name, set_ends, validate).
 SAME_SENTENCE = [c for c in PYTHON_CASES
                  if (c["core"] and "Infinity" not in json.dumps(c["spec"]))
-                 or c["name"] in ("bad_end_name", "bad_start_name", "dimension_seventeen")]
+                 or c["name"] in ("bad_end_name", "bad_start_name", "dimension_zero", "dimension_seventeen")]
 
 
 def test_same_sentence_cases():
     # Every value rule of the catalogue Python can be given, but the three
-    # infinities, plus the three above.
-    assert len(SAME_SENTENCE) == 14, [c["name"] for c in SAME_SENTENCE]
+    # infinities, plus the four above.
+    assert len(SAME_SENTENCE) == 15, [c["name"] for c in SAME_SENTENCE]
 
 
 @pytest.mark.parametrize("case", SAME_SENTENCE, ids=[c["name"] for c in SAME_SENTENCE])

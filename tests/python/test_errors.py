@@ -27,7 +27,7 @@ P = [[0, 0], [1, 2], [3, 2], [4, 0]]
      "start tangent coordinate 0 is not finite (nan)"),
     ((np.zeros((3, 17)),), {}, crspline.SpecError, "dimension must be 1 to 16, got 17"),
     ((np.zeros((2, 2, 2)),), {}, ValueError, "points must be an N x dim array"),
-    ((np.zeros((3, 0)),), {}, ValueError, "1 to 16 coordinates each, got 0"),
+    ((np.zeros((3, 0)),), {}, ValueError, "dimension must be 1 to 16, got 0"),
     ((P,), {"endconditions": "periodic"}, crspline.SpecError,
      "end conditions must be 'natural', 'reflect', 'closed' or one for each end, got 'periodic'"),
     ((P,), {"endconditions": ("natural", "closed")}, crspline.SpecError,
