@@ -193,7 +193,7 @@ test('errors are Error objects with the core words and field / index / component
     [() => catmullRom([[0, 0], [1, 1]], { alpha: 1.5 }), /^alpha must be in \[0, 1\], got 1.5$/, { field: 'alpha', value: '1.5' }],
     [() => catmullRom([[0, 0], [1, 1], [2, 2]], { grid: [0, 2, 1] }), /^grid must be strictly increasing/, { field: 'grid', index: 2 }],
     [() => catmullRom([[0, 0], [1, 1]], { tension: 2 }), /^tension must be in \[0, 1\], got 2$/, { field: 'tension' }],
-    [() => catmullRom([[0, 0], [1, 1]], { start: 'clamped' }), /^start end condition must be/, { field: 'start' }],
+    [() => catmullRom([[0, 0], [1, 1]], { start: 'clamped' }), /^start condition must be 'natural', 'reflect' or a tangent, got 'clamped'$/, { field: 'start' }],
     [() => catmullRom([[0, 0], [1, 1]], { end: { tangent: [1, 2, 3] } }), /^end tangent has 3 coordinates, expected 2/, { field: 'end' }],
     [() => catmullRom([[0, 0], [1, 1]], { closed: true, start: 'reflect' }), /^a closed curve takes no end conditions$/, { field: 'start' }],
     [() => catmullRom([Array(17).fill(0), Array(17).fill(1)]), /^dimension must be 1 to 16, got 17$/, { field: 'dimension', value: '17' }],

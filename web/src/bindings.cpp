@@ -176,14 +176,7 @@ cr::end_spec end_from(const val& e, const char* which) {
     if (is_nullish(e)) return r;
     if (e.isString()) {
         const std::string s = e.as<std::string>();
-        if (s == "natural") return r;
-        if (s == "reflect") {
-            r.type = cr::end_spec::kind::reflect;
-            return r;
-        }
-        cr::detail::spec_fail(which, std::nullopt, std::nullopt, s,
-                              std::string(which) + " end condition must be \"natural\", \"reflect\" or " +
-                                  "{tangent: [...]}, got \"" + s + "\"");
+        return cr::end_from_name(which, s);  // the core's names and words
     }
     r.type = cr::end_spec::kind::tangent;
     r.velocity = numbers(is_nullish(e["tangent"]) ? e : e["tangent"], "tangent");

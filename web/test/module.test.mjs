@@ -195,7 +195,7 @@ test('errors: a C++ exception arrives as a JavaScript Error with the core messag
     [() => new M.Spline([0, 0, 1], 2, {}), /points has 3 coordinates, not a whole number of points of dimension 2/],
     [() => new M.Spline([[0, 0], [1, 1]], 17, {}), /dimension must be 1 to 16, got 17/],
     [() => new M.Spline([[0, 0], [1, 1]], 0, {}), /dimension must be 1 to 16, got 0/],
-    [() => new M.Spline([[0, 0], [1, 1]], 2, { start: 'clamped' }), /start end condition must be/],
+    [() => new M.Spline([[0, 0], [1, 1]], 2, { start: 'clamped' }), /^start condition must be 'natural', 'reflect' or a tangent, got 'clamped'$/],
     [() => new M.Spline([[0, 0], [1, 1], [2, 0]], 2, { grid: [0, 1, 1] }), /grid must be strictly increasing/],
     [() => withSpline([[0, 0], [1, 1]], 2, {}, (s) => s.evaluate(7)), /t = 7 is outside the domain/],
     [() => withSpline([[0, 0], [1, 1]], 2, {}, (s) => s.evaluate(0.5, 4)), /derivative order must be 0, 1, 2 or 3, got 4/],
