@@ -71,12 +71,13 @@ std::vector<vec<D, T>> sample_t(const catmull_rom<D, T>& c, std::size_t n) {
 /// (1) is exact for a parabola-like piece; (2) sees that acceleration along
 /// the chord (a change of speed, not of direction) adds no distance.
 /// Computed relative to s.at(u0), so to within rounding of the coordinates.
+/// `k0` is |C''(u0)| (tessellate() tests many pieces from one u0).
 template <std::size_t D, class T>
-T flatness_bound(const cubic_segment<D, T>& s, T u0, T u1) {
+T flatness_bound(const cubic_segment<D, T>& s, T u0, T u1, T k0) {
     using point = vec<D, T>;
     const T w = u1 - u0;
     // 1. (u1 - u0)^2 / 8 times |C''| at the worse end.
-    const T curvature = std::max(norm(s.du(u0, 2)), norm(s.du(u1, 2)));
+    const T curvature = std::max(k0, norm(s.du(u1, 2)));
     const T by_second_difference = w * w / T(8) * curvature;
     // 2. Bézier points of the piece relative to Q0: Q1 = Q0 + w/3 C'(u0),
     //    Q2 = Q3 - w/3 C'(u1), and Q3 - Q0 = C(u1) - C(u0) factored as
@@ -87,10 +88,26 @@ T flatness_bound(const cubic_segment<D, T>& s, T u0, T u1) {
     const T len2 = dot(chord, chord);
     auto to_chord = [&](const point& q) __attribute__((always_inline)) {
         const T f = len2 > 0 ? std::clamp(dot(q, chord) / len2, T(0), T(1)) : T(0);
-        return norm(q - f * chord);
+        return q - f * chord;
     };
-    const T by_hull = std::max(to_chord(q1), to_chord(q2));
+    const point e1 = to_chord(q1), e2 = to_chord(q2);
+    // max(|e1|, |e2|) with one square root where norm() takes the plain
+    // formula for both (sqrt is monotone: the same number).
+    T by_hull;
+    if constexpr (D == 1) {
+        by_hull = std::max(norm(e1), norm(e2));
+    } else {
+        const T m = std::max(max_abs(e1), max_abs(e2));
+        by_hull = detail::plain_norm_range<D>(m) ? std::sqrt(std::max(dot(e1, e1), dot(e2, e2)))
+                                                 : std::max(norm(e1), norm(e2));
+    }
     return std::min(by_second_difference, by_hull);
+}
+
+/// flatness_bound for a piece from u0 alone.
+template <std::size_t D, class T>
+T flatness_bound(const cubic_segment<D, T>& s, T u0, T u1) {
+    return flatness_bound(s, u0, u1, norm(s.du(u0, 2)));
 }
 
 /// Number of equal pieces in u that bound (1) of flatness_bound proves
@@ -147,6 +164,17 @@ polyline<D, T> tessellate(const catmull_rom<D, T>& c, std::type_identity_t<T> to
         out.t.push_back(t);
         out.points.push_back(s.dt(s.local(t), 0));
     };
+    // Room for the most vertices there can be (uniform_piece_count per
+    // segment bounds them), capped: the pages never written are never
+    // touched, and the vectors neither grow nor copy on the way.
+    {
+        std::size_t most = 2;
+        for (std::size_t i = 0; i < c.segment_count() && most < (std::size_t(1) << 24); ++i)
+            most += uniform_piece_count(c.segment(i), tolerance);
+        most = std::min(most, std::size_t(1) << 24);
+        out.t.reserve(most);
+        out.points.reserve(most);
+    }
     add(c.t_min());
     const auto grid = c.grid();
     for (std::size_t i = 0; i < c.segment_count(); ++i) {
@@ -173,7 +201,7 @@ polyline<D, T> tessellate(const catmull_rom<D, T>& c, std::type_identity_t<T> to
             T lo = a, hi = t_end, f = 0, f_hi = 0;
             bool end_failed = false;
             auto test = [&](T t) {
-                const T ft = flatness_bound(s, u0, u_of(t));
+                const T ft = flatness_bound(s, u0, u_of(t), k0);
                 if (ft <= tolerance) {
                     lo = t, f = ft;
                     return true;
