@@ -380,9 +380,7 @@ void catmull_rom<D, T>::build_hermite(std::span<const point> p, std::span<const 
     options_.closed = closed;
     // 1. Validate at the boundary: enough points, finite values, a tangent
     //    per vertex, an increasing grid of the right length.
-    if (n < 2)
-        throw invalid_input(std::string(closed ? "a closed curve" : "a curve") + " needs at least 2 points, got " +
-                            std::to_string(n));
+    detail::check_point_count(n, closed);
     check_finite(p);
     const std::size_t nseg = closed ? n : n - 1;
     const std::pair<std::span<const point>, const char*> given[2] = {{outgoing, "outgoing"}, {incoming, "incoming"}};
