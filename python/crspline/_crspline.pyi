@@ -42,6 +42,9 @@ def _make_curve(
 ) -> _Curve:
     """Build a curve from its specification, validated by the core."""
 
+def _check_grid(grid: list[float]) -> None:
+    """The core's check of a given grid's values (finite, strictly increasing)."""
+
 def _make_hermite(
     points: _A,
     outgoing: _A,

@@ -85,14 +85,8 @@ def _vertices(vertices):
 
 def _check_increasing(grid):
     """A given grid: finite and strictly increasing (splines does not check;
-    its curve would divide by zero)."""
-    g = _float_array(grid, "grid").reshape(-1)
-    for i, v in enumerate(g):
-        if not _np.isfinite(v):
-            raise ValueError(f"grid[{i}] is not finite ({_num(v)})")
-        if i > 0 and not v > g[i - 1]:
-            raise ValueError(f"grid must be strictly increasing: grid[{i}] = {_num(v)} is not greater than "
-                             f"grid[{i - 1}] = {_num(g[i - 1])}")
+    its curve would divide by zero), by the core's rule and in its words."""
+    _crspline._check_grid([float(v) for v in _float_array(grid, "grid").reshape(-1)])
 
 
 def _check_vertices(vertices, closed):

@@ -94,6 +94,13 @@ void bind_curve(py::module_& m, py::class_<curve>& cls) {
           "Build a curve from its specification, validated by the core (crspline::validate): points (N, dim),\n"
           "alpha or grid, ends ('natural', 'reflect', 'closed' or (start, end), each a name or a tangent),\n"
           "tension, per-vertex Kochanek-Bartels values (or empty lists) and strict.");
+    m.def(
+        "_check_grid",
+        [](const std::vector<double>& grid) {
+            detail::check_grid_values(std::span<const double>(grid), grid.size(), false);
+        },
+        py::arg("grid"),
+        "The core's check of a given grid's values (finite, strictly increasing): the spec error, or nothing.");
     cls.def("spec", &spec_dict, "The specification the curve was built from (crspline::to_spec), as a dict.");
 
     cls.def_property_readonly("dim", [](const curve& c) {
