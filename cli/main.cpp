@@ -290,6 +290,10 @@ void add_options(CLI::App* sub, std::string_view name, cli_options& o) {
         sub->add_option("--xlim", o.xlim, "Visible x range A,B (default: fitted to the data)")->group(fig);
         sub->add_option("--ylim", o.ylim, "Visible y range A,B (default: fitted to the data)")->group(fig);
         sub->add_flag("--no-points", o.no_points, "No point markers (they shrink with density otherwise)")->group(fig);
+        sub->add_option("--pair", o.pair,
+                        "Of 3-D and higher points, the two coordinates drawn, I,J counted from 1 (default 1,2): the "
+                        "projection of the whole curve")
+            ->group(fig);
     }
 }
 

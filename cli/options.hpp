@@ -38,6 +38,7 @@ struct cli_options {
     bool knots = false;
     bool summary = false, no_search = false;  ///< analyze
     std::string aspect, xlim, ylim;           ///< plot: equal | auto; A,B ranges
+    std::string pair;                         ///< plot: the two coordinates drawn of a 3-D or higher curve, "I,J" from 1
     bool no_points = false;                   ///< plot: no point markers
     // plot.
     std::string title, size, png, ticks, comb;

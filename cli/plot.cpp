@@ -2,6 +2,7 @@
 // computed by the library (cusps, self-intersections, the paper's bounding
 // volumes, a curvature comb, Bézier handles, arc-length ticks).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cctype>
 #include <iostream>
@@ -136,6 +137,55 @@ figure_curve make_figure_curve(const curve_spec& spec, const overlay_options& ov
 
 namespace {
 
+// --pair "I,J": two different coordinates of a `dimension`-D point,
+// counted from 1; returned from 0.
+std::array<std::size_t, 2> pair_option(const std::string& text, std::size_t dimension) {
+    const auto comma = text.find(',');
+    const auto a = comma == std::string::npos ? std::nullopt : parse_number(text.substr(0, comma));
+    const auto b = comma == std::string::npos ? std::nullopt : parse_number(text.substr(comma + 1));
+    const auto valid = [dimension](const std::optional<double>& x) {
+        return x && *x >= 1 && *x <= double(dimension) && *x == std::floor(*x);
+    };
+    if (!valid(a) || !valid(b) || *a == *b)
+        throw input_error("--pair: expected two different coordinates I,J from 1 to " + std::to_string(dimension) +
+                          ", got '" + text + "'");
+    return {std::size_t(*a) - 1, std::size_t(*b) - 1};
+}
+
+// The projection on coordinates (i, j) of the curve `full` describes: each
+// coordinate of a Catmull-Rom curve is the 1-D curve of that coordinate on
+// the same knots (the tangents, ends, tension and Kochanek-Bartels values
+// act on each coordinate alone), so the plane curve through the projected
+// points on the full curve's knots is the projection (up to the rounding
+// of the knots' running sums).
+curve_spec projection(const curve_spec& full, std::array<std::size_t, 2> pair) {
+    const std::size_t d = full.dimension, n = full.point_count();
+    curve_spec p = full;
+    p.dimension = 2;
+    p.points.clear();
+    for (std::size_t i = 0; i < n; ++i) p.points.insert(p.points.end(), {full.points[i * d + pair[0]], full.points[i * d + pair[1]]});
+    for (auto* e : {&p.start, &p.end})
+        if (e->type == crspline::end_spec::kind::tangent) e->velocity = {e->velocity[pair[0]], e->velocity[pair[1]]};
+    p.grid = with_dimension(d, [&](auto dim) {
+        const auto curve = make_curve<decltype(dim)::value>(full);
+        const auto g = curve.grid();
+        return std::vector<double>(g.begin(), g.end());
+    });
+    p.alpha.reset();
+    // Coincidence was judged on the whole points (strict); projected points
+    // may meet where the curve's do not.
+    p.strict = false;
+    p.tangents_out.clear(), p.tangents_in.clear();
+    if (!full.tangents_out.empty())
+        throw input_error("plot: a curve with given tangents is drawn in 2-D only (choose two columns with --columns)");
+    for (std::size_t k = 1; k < p.grid->size(); ++k)
+        if (!((*p.grid)[k] > (*p.grid)[k - 1]))
+            throw input_error("plot: the curve has coincident consecutive points (knots " + std::to_string(k - 1) +
+                              " and " + std::to_string(k) + " are equal); its projection cannot be drawn: choose "
+                              "two coordinates with --columns, or alpha 0");
+    return p;
+}
+
 // --xlim / --ylim: "A,B" with A < B, finite.
 std::array<double, 2> range_option(const std::string& option, const std::string& text) {
     const auto comma = text.find(',');
@@ -203,9 +253,24 @@ int run_plot(const cli_options& o) {
         throw input_error("plot: one curve per figure, and " + in.name + " holds " + std::to_string(in.curves.size()) +
                           " curves");
     const curve_spec spec = parse_analyze(in.curves.front());
-    if (spec.dimension != 2)
-        throw input_error("plot: needs 2-D points, got " + std::to_string(spec.dimension) + "-D (choose two with --columns)");
-    for (std::size_t i = 0; i < spec.point_count(); ++i) f.points.push_back({spec.points[2 * i], spec.points[2 * i + 1]});
+    const std::size_t dim = spec.dimension;
+    if (dim < 2) throw input_error("plot: needs 2 or more coordinates per point, got 1");
+    if (dim == 2 && !o.pair.empty()) throw input_error("--pair: for points of 3 or more coordinates; these have 2");
+    // Of a 3-D or higher curve, the projection on two coordinates (1 and 2
+    // unless --pair says otherwise), named on the axes and in the subtitle.
+    const std::array<std::size_t, 2> pair = dim > 2 && !o.pair.empty() ? pair_option(o.pair, dim) : std::array<std::size_t, 2>{0, 1};
+    if (dim > 2) {
+        const auto name = [&](std::size_t k) {
+            const auto& pts = in.curves.front().points;
+            if (pts && pts->column_names.size() == dim && !pts->column_names[k].empty()) return pts->column_names[k];
+            return dim <= 4 ? std::string(1, "xyzw"[k]) : "x" + std::to_string(k + 1);
+        };
+        f.xlabel = name(pair[0]), f.ylabel = name(pair[1]);
+        f.subtitle = std::to_string(dim) + "-D curve shown as its projection on " + f.xlabel + ", " + f.ylabel +
+                     " (coordinates " + std::to_string(pair[0] + 1) + " and " + std::to_string(pair[1] + 1) + ")";
+    }
+    for (std::size_t i = 0; i < spec.point_count(); ++i)
+        f.points.push_back({spec.points[dim * i + pair[0]], spec.points[dim * i + pair[1]]});
     f.closed = spec.closed;
     if (alphas.empty()) alphas.push_back(spec.grid ? NAN : spec.alpha.value_or(0.5));
     for (std::size_t i = 0; i < alphas.size(); ++i) {
@@ -216,6 +281,7 @@ int run_plot(const cli_options& o) {
             s.alpha = a;
             s.grid.reset();
         }
+        if (dim > 2) s = projection(s, pair);
         figure_curve c = make_figure_curve(s, ov);
         std::tie(c.label, c.colour) = curve_style(a, i);
         f.curves.push_back(std::move(c));

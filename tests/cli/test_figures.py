@@ -210,3 +210,70 @@ def test_demo_polygon_is_the_example_polygon():
     ex = re.findall(num, open(example).read().split("polygon = {")[1].split("};")[0])
     de = re.findall(num, open(demo).read().split("demo_polygon[][2] = {")[1].split("};")[0])
     assert ex and ex == de
+
+
+# A 3-D curve is drawn as its projection on two coordinates (--pair, from 1;
+# default 1,2). Each coordinate of a Catmull-Rom curve is its own 1-D curve
+# on the same knots, so the plane curve through the projected points on the
+# 3-D curve's knots is the projection: checked on the Bézier points, then
+# the plot draws exactly that plane curve.
+CURVE_3D = {"points": [[0, 0, 1], [1, 2, -1], [3, 1, 0.5], [4, 3, 2], [5, 0, 0], [6, 1, -2]], "alpha": 0.5,
+            "tension": 0.2, "end": {"start": [1, 0, 0.5], "end": "reflect"}}
+
+
+def plane_of(doc, pair):
+    knots = json.loads(ok(["eval", "--t", "0", "--knots", "-"], json.dumps(doc)))["grid"]
+    plane = {"points": [[p[pair[0]], p[pair[1]]] for p in doc["points"]], "grid": knots, "tension": doc["tension"],
+             "end": {"start": [doc["end"]["start"][pair[0]], doc["end"]["start"][pair[1]]], "end": "reflect"}}
+    return plane
+
+
+def test_a_3d_curve_is_plotted_as_its_projection(tmp_path):
+    pair = (0, 2)
+    plane = plane_of(CURVE_3D, pair)
+    full = json.loads(ok(["bezier", "-"], json.dumps(CURVE_3D)))["segments"]
+    flat = json.loads(ok(["bezier", "-"], json.dumps(plane)))["segments"]
+    assert len(full) == len(flat) == 5
+    # The knots' running sums are rounded once more in the plane curve's
+    # intervals: 1e-14 of the coordinates' scale (a few ulps of 6).
+    for a, b in zip(full, flat):
+        for p, q in zip(a, b):
+            assert math.dist([p[pair[0]], p[pair[1]]], q) <= 1e-14, (p, q)
+    svg3, svg2 = tmp_path / "p3.svg", tmp_path / "p2.svg"
+    ok(["plot", "--pair", "1,3", "--handles", "--ticks", "-o", str(svg3), "-"], json.dumps(CURVE_3D))
+    ok(["plot", "--handles", "--ticks", "-o", str(svg2), "-"], json.dumps(plane))
+    # The two figures differ in layout (the projection's subtitle takes room),
+    # so the map from one to the other is a scale and a shift (equal aspect),
+    # found from the extent of the curve's path (its 16 Bézier points, drawn
+    # in centripetal blue, and in the first palette colour for the plane
+    # curve on its explicit grid); then every point agrees within 0.05 px
+    # (cairo writes 1/256 px; the plane curve through the projected points
+    # with alpha 0.5 instead of the 3-D knots is up to 10 px away).
+    def drawn(path, colour):
+        pts = []
+        for style, d in re.findall(r'<path style="([^"]*)" d="([^"]*)"', path.read_text()):
+            if f"stroke:rgb({colour})" in style:
+                nums = [float(v) for v in re.findall(r"-?\d+(?:\.\d+)?", d)]
+                if " C " in d:  # the curve (ticks and the legend's line keep their pixel size)
+                    pts += list(zip(nums[0::2], nums[1::2]))
+        return pts
+    a3, a2 = drawn(svg3, "12%,47%,71%"), drawn(svg2, "58%,40%,74%")
+    assert len(a3) == len(a2) == 16  # 5 cubic pieces
+    lo3, lo2 = [min(p[k] for p in a3) for k in (0, 1)], [min(p[k] for p in a2) for k in (0, 1)]
+    scale = (max(p[0] for p in a3) - lo3[0]) / (max(p[0] for p in a2) - lo2[0])
+    worst = max(math.dist(p, [lo3[0] + scale * (q[0] - lo2[0]), lo3[1] + scale * (q[1] - lo2[1])]) for p, q in zip(a3, a2))
+    assert worst <= 0.05, worst
+    text = svg3.read_text()
+    assert "3-D curve shown as its projection on x, z (coordinates 1 and 3)" in text
+
+
+def test_plot_pair_errors():
+    doc = json.dumps(CURVE_3D)
+    for args, line in [(["--pair", "1,4"], "--pair: expected two different coordinates I,J from 1 to 3, got '1,4'"),
+                       (["--pair", "2,2"], "--pair: expected two different coordinates I,J from 1 to 3, got '2,2'")]:
+        p = run(["plot"] + args + ["-"], doc)
+        assert p.returncode == 2 and p.stderr == f"crspline: {line}\n", p.stderr
+    p = run(["plot", "--pair", "1,2", "-"], json.dumps({"points": LOOP}))
+    assert p.returncode == 2 and p.stderr == "crspline: --pair: for points of 3 or more coordinates; these have 2\n"
+    p = run(["plot", "-"], json.dumps({"points": [[0], [1], [3]]}))
+    assert p.returncode == 2 and p.stderr == "crspline: plot: needs 2 or more coordinates per point, got 1\n"
