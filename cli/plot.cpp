@@ -254,7 +254,7 @@ int run_plot(const cli_options& o) {
                           " curves");
     const curve_spec spec = parse_analyze(in.curves.front());
     const std::size_t dim = spec.dimension;
-    if (dim < 2) throw input_error("plot: needs 2 or more coordinates per point, got 1");
+    if (dim < 2) throw input_error("plot: needs 2 or more coordinates per point, got 1 (choose two with --columns)");
     if (dim == 2 && !o.pair.empty()) throw input_error("--pair: for points of 3 or more coordinates; these have 2");
     // Of a 3-D or higher curve, the projection on two coordinates (1 and 2
     // unless --pair says otherwise), named on the axes and in the subtitle.

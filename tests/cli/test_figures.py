@@ -276,4 +276,4 @@ def test_plot_pair_errors():
     p = run(["plot", "--pair", "1,2", "-"], json.dumps({"points": LOOP}))
     assert p.returncode == 2 and p.stderr == "crspline: --pair: for points of 3 or more coordinates; these have 2\n"
     p = run(["plot", "-"], json.dumps({"points": [[0], [1], [3]]}))
-    assert p.returncode == 2 and p.stderr == "crspline: plot: needs 2 or more coordinates per point, got 1\n"
+    assert p.returncode == 2 and p.stderr == "crspline: plot: needs 2 or more coordinates per point, got 1 (choose two with --columns)\n"

@@ -147,7 +147,7 @@ def test_unwritable_outputs_leave_nothing(d):
           "1 and 2 (counted from 0)")
     check(run(["bezier", "--format", "svg", "--columns", "1", src, "-o", str(d / "x.svg")]),
           "--format svg: needs 2-D points, got 1-D (use json or csv)")
-    check(run(["plot", "--columns", "1", src, "-o", str(d / "x.png")]), "plot: needs 2-D points, got 1-D (choose two with --columns)")
+    check(run(["plot", "--columns", "1", src, "-o", str(d / "x.png")]), "plot: needs 2 or more coordinates per point, got 1 (choose two with --columns)")
     check(run(["demo", "-o", str(d / "p.csv")]), f"{d / 'p.csv'}: cannot create the folder: Not a directory")
     assert sorted(os.listdir(d)) == ["adir", "dup.csv", "p.csv"]
     assert os.listdir(d / "adir") == []
