@@ -279,7 +279,7 @@ template <std::size_t D>
 curve_of<D> make_hermite_curve(const cr::curve_spec& s, const val& o, double alpha) {
     for (const char* key : {"tension", "kb", "strict", "start", "end"})
         if (!is_nullish(o[key])) throw cr::invalid_input(std::string("given tangents take no '") + key + "'");
-    if (s.alpha && s.grid) throw cr::invalid_input("give alpha or grid, not both");
+    cr::detail::check_alpha_or_grid(s.alpha.has_value(), s.grid.has_value());
     const std::size_t dim = s.dimension;
     const std::vector<cr::vec<D>> p = to_points<D>(s.points, "points", dim);
     const std::vector<cr::vec<D>> out = to_points<D>(numbers(o["tangents"], "tangents"), "tangents", dim);

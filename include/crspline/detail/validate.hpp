@@ -38,6 +38,10 @@ inline void check_point_count(std::size_t n, bool closed) {
                       std::to_string(n));
 }
 
+inline void check_alpha_or_grid(bool alpha, bool grid) {
+    if (alpha && grid) spec_fail("grid", std::nullopt, std::nullopt, "", "give alpha or grid, not both");
+}
+
 /// coord(i, k): coordinate k of point i, for i < n, k < dim.
 template <class Coord>
 void check_coordinates(std::size_t n, std::size_t dim, Coord&& coord) {
@@ -88,7 +92,7 @@ void validate_description(std::size_t n, std::size_t dim, Coord&& coord, const s
                           const std::vector<T>& kb_continuity, const std::vector<T>& kb_bias) {
     check_point_count(n, closed);
     check_coordinates(n, dim, coord);
-    if (alpha && grid) spec_fail("grid", std::nullopt, std::nullopt, "", "give alpha or grid, not both");
+    check_alpha_or_grid(alpha.has_value(), grid.has_value());
     if (!(tension >= 0 && tension <= 1))
         spec_fail("tension", std::nullopt, std::nullopt, num(tension),
                   "tension must be in [0, 1], got " + num(tension));
