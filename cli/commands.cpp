@@ -201,7 +201,7 @@ constexpr command all_commands[] = {
     {"sample", "Points evenly spaced in t or arc length, or within a tolerance", sample_details, &run_sample,
      "json csv tsv svg svg-path geojson", &stream_sample},
     {"analyze", "Cusps, self-intersections, distances to the polygon, certificate", analyze_details, &run_analyze,
-     "json"},
+     "json", &stream_analyze},
     {"plot", "A figure of the curve(s) with overlays, as SVG or PNG", plot_details, nullptr, "svg png"},
     {"demo", "Uniform vs centripetal vs chordal: the paper's figure and a table", demo_details, nullptr, ""},
 };

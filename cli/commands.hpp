@@ -47,6 +47,9 @@ output_json run_analyze(const document& input);
 void stream_eval(const document& input, const output_settings& settings, output_stream& out);
 void stream_bezier(const document& input, const output_settings& settings, output_stream& out);
 void stream_sample(const document& input, const output_settings& settings, output_stream& out);
+/// analyze, written as JSON text without a document tree (run_analyze is
+/// this, parsed back).
+void stream_analyze(const document& input, const output_settings& settings, output_stream& out);
 
 /// The output of a JSON-producing subcommand in another format: "csv",
 /// "tsv", "svg" (a figure of the curve, 2-D) or "svg-path" (bezier).
