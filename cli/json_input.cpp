@@ -52,21 +52,16 @@ const json& array(const json& v, const std::string& path, const char* of_what) {
     return v;
 }
 
-std::vector<double> finite_numbers(const json& v, const std::string& path) {
+// An array of numbers, each read by `one` (number or finite_number).
+std::vector<double> list_of(const json& v, const std::string& path, double (*one)(const json&, const std::string&)) {
     array(v, path, "numbers");
     std::vector<double> out;
     out.reserve(v.size());
-    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(finite_number(v[i], index(path, i)));
+    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(one(v[i], index(path, i)));
     return out;
 }
-
-std::vector<double> numbers(const json& v, const std::string& path) {
-    array(v, path, "numbers");
-    std::vector<double> out;
-    out.reserve(v.size());
-    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(number(v[i], index(path, i)));
-    return out;
-}
+std::vector<double> finite_numbers(const json& v, const std::string& path) { return list_of(v, path, finite_number); }
+std::vector<double> numbers(const json& v, const std::string& path) { return list_of(v, path, number); }
 
 // Top-level fields the other subcommands take, for a helpful message.
 struct foreign_field {
