@@ -11,6 +11,7 @@ node -e "import('$root/web/test/support.mjs').then((m) => m.ensureBuilt())" >&2
 mkdir -p "$here/dist"
 cp "$root/web/dist/crspline.mjs" "$root/web/dist/crspline.wasm" "$here/dist/"
 if [[ $# -gt 0 ]]; then
-    mkdir -p "$1"
-    (cd "$here" && npm pack --silent --pack-destination "$1") | tail -n 1 | sed "s|^|$1/|"
+    # Absolute: npm pack runs in js/, and a relative PACK_DIR is the caller's.
+    dest="$(mkdir -p "$1" && cd "$1" && pwd)"
+    (cd "$here" && npm pack --silent --pack-destination "$dest") | tail -n 1 | sed "s|^|$dest/|"
 fi
