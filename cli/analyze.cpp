@@ -171,10 +171,6 @@ void stream_analyze(const document& input, const output_settings& settings, outp
     });
 }
 
-output_json run_analyze(const document& input) {
-    output_stream text = output_stream::in_memory();
-    stream_analyze(input, {}, text);
-    return output_json::parse(std::move(text).take());
-}
+output_json run_analyze(const document& input) { return run_streamed(&stream_analyze, input); }
 
 }  // namespace crspline::cli

@@ -108,10 +108,6 @@ void stream_bezier(const document& input, const output_settings& settings, outpu
     });
 }
 
-output_json run_bezier(const document& input) {
-    output_stream text = output_stream::in_memory();
-    stream_bezier(input, {}, text);
-    return output_json::parse(std::move(text).take());
-}
+output_json run_bezier(const document& input) { return run_streamed(&stream_bezier, input); }
 
 }  // namespace crspline::cli

@@ -224,6 +224,13 @@ std::string first_non_finite(const output_json& v, const std::string& path) {
 
 std::span<const command> commands() { return all_commands; }
 
+output_json run_streamed(void (*stream)(const document&, const output_settings&, output_stream&),
+                         const document& input) {
+    output_stream text = output_stream::in_memory();
+    stream(input, {}, text);
+    return output_json::parse(std::move(text).take());
+}
+
 std::string render(const output_json& out, const number_format& numbers) {
     if (const std::string bad = first_non_finite(out, ""); !bad.empty())
         throw input_error(bad + ": the result is not finite (the input's coordinates or knot intervals are "

@@ -51,6 +51,11 @@ void stream_sample(const document& input, const output_settings& settings, outpu
 /// this, parsed back).
 void stream_analyze(const document& input, const output_settings& settings, output_stream& out);
 
+/// A streaming subcommand's JSON output, written to memory and parsed back
+/// (run_eval, run_bezier, run_sample and run_analyze are this).
+output_json run_streamed(void (*stream)(const document&, const output_settings&, output_stream&),
+                         const document& input);
+
 /// The output of a JSON-producing subcommand in another format: "csv",
 /// "tsv", "svg" (a figure of the curve, 2-D) or "svg-path" (bezier).
 /// Numbers rounded to `numbers.precision` significant digits.

@@ -166,10 +166,6 @@ void stream_eval(const document& input, const output_settings& settings, output_
     });
 }
 
-output_json run_eval(const document& input) {
-    output_stream text = output_stream::in_memory();
-    stream_eval(input, {}, text);
-    return output_json::parse(std::move(text).take());
-}
+output_json run_eval(const document& input) { return run_streamed(&stream_eval, input); }
 
 }  // namespace crspline::cli

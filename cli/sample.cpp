@@ -154,10 +154,6 @@ void stream_sample(const document& input, const output_settings& settings, outpu
     });
 }
 
-output_json run_sample(const document& input) {
-    output_stream text = output_stream::in_memory();
-    stream_sample(input, {}, text);
-    return output_json::parse(std::move(text).take());
-}
+output_json run_sample(const document& input) { return run_streamed(&stream_sample, input); }
 
 }  // namespace crspline::cli
