@@ -87,20 +87,13 @@ void stream_eval(const document& input, const output_settings& settings, output_
         if (settings.format == "json") {
             // {"grid": [...] (with "knots"), "t_of_s": [...] (or t_of_u, ...), "values": {"0": [[x, y], ...], ...}}
             std::string& buf = out.buffer();
-            const auto list = [&](const char* key, std::span<const double> xs, bool comma) {
-                buf += comma ? ",\"" : "\"";
-                buf += key;
-                buf += "\":[";
-                for (std::size_t i = 0; i < xs.size(); ++i) {
-                    if (i) buf += ',';
-                    out.number(xs[i], nf, true, [&] { return key + ("[" + std::to_string(i) + "]"); });
-                    out.written();
-                }
-                buf += ']';
+            const auto list = [&](const std::string& key, std::span<const double> xs, bool comma) {
+                if (comma) buf += ',';
+                out.json_list(key, xs, nf);
             };
             buf += '{';
             if (spec.knots) list("grid", curve.grid(), false);
-            if (given != "t") list(("t_of_" + given).c_str(), t_of, spec.knots);
+            if (given != "t") list("t_of_" + given, t_of, spec.knots);
             buf += (spec.knots || given != "t") ? ",\"values\":{" : "\"values\":{";
             for (std::size_t o = 0; o < spec.derivatives.size(); ++o) {
                 const int order = spec.derivatives[o];

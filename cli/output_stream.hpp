@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -83,6 +84,19 @@ public:
         else append_number(buf_, x, f);
     }
     [[noreturn]] static void not_finite(const std::string& where);
+    /// "key":[x0,x1,...] in JSON, each number checked and written as number()
+    /// does (a non-finite one named key[i]).
+    void json_list(std::string_view key, std::span<const double> xs, const number_format& f) {
+        buf_ += '"';
+        buf_ += key;
+        buf_ += "\":[";
+        for (std::size_t i = 0; i < xs.size(); ++i) {
+            if (i) buf_ += ',';
+            number(xs[i], f, true, [&] { return std::string(key) + "[" + std::to_string(i) + "]"; });
+            written();
+        }
+        buf_ += ']';
+    }
 
 private:
     void flush();

@@ -159,6 +159,8 @@ std::array<std::size_t, 2> pair_option(const std::string& text, std::size_t dime
 // points on the full curve's knots is the projection (up to the rounding
 // of the knots' running sums).
 curve_spec projection(const curve_spec& full, std::array<std::size_t, 2> pair) {
+    if (!full.tangents_out.empty())
+        throw input_error("plot: a curve with given tangents is drawn in 2-D only (choose two columns with --columns)");
     const std::size_t d = full.dimension, n = full.point_count();
     curve_spec p = full;
     p.dimension = 2;
@@ -175,9 +177,6 @@ curve_spec projection(const curve_spec& full, std::array<std::size_t, 2> pair) {
     // Coincidence was judged on the whole points (strict); projected points
     // may meet where the curve's do not.
     p.strict = false;
-    p.tangents_out.clear(), p.tangents_in.clear();
-    if (!full.tangents_out.empty())
-        throw input_error("plot: a curve with given tangents is drawn in 2-D only (choose two columns with --columns)");
     for (std::size_t k = 1; k < p.grid->size(); ++k)
         if (!((*p.grid)[k] > (*p.grid)[k - 1]))
             throw input_error("plot: the curve has coincident consecutive points (knots " + std::to_string(k - 1) +

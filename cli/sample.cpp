@@ -67,15 +67,8 @@ void stream_sample(const document& input, const output_settings& settings, outpu
                        [&] { return "points[" + std::to_string(i) + "][" + std::to_string(k) + "]"; });
         };
         const auto list = [&](const char* key, const std::vector<double>& xs) {
-            buf += '"';
-            buf += key;
-            buf += "\":[";
-            for (std::size_t i = 0; i < xs.size(); ++i) {
-                if (i) buf += ',';
-                out.number(xs[i], nf, true, [&] { return key + ("[" + std::to_string(i) + "]"); });
-                out.written();
-            }
-            buf += "],";
+            out.json_list(key, xs, nf);
+            buf += ',';
         };
         const auto point_list = [&] {
             buf += '[';
