@@ -2,9 +2,10 @@
 //
 // Lengths come from Gauss-Legendre quadrature of the speed |C'(u)|. The fast
 // path (detail/speed_quadrature.hpp) proves, before integrating, which rule
-// of 8 to 32 points meets the accuracy on a segment (or on its halves) from
-// a bound of the distance of the speed's complex singularities: one rule
-// evaluation per piece, no search, no allocation. Pieces it cannot prove
+// of 8 to 48 points meets the accuracy on a segment (or on the pieces it is
+// cut into) from the speed's complex singularities, found for several
+// segments at once and checked by Rouche's theorem: one rule evaluation per
+// piece, no search, no allocation. Pieces it cannot prove
 // (the speed vanishes in or near them) take the slower path: each is first split where |C'|^2 has a critical point, so that a
 // zero of the speed (a cusp, a fold, tension 1, a coincident neighbour) sits
 // at the end of a piece, where sqrt(|C'|^2) is analytic: the quadrature then
@@ -222,18 +223,18 @@ inline constexpr int max_depth = 10;
 /// with the length estimated as half the speed at the middle times the
 /// width (the bound is checked against the computed length after).
 template <class T>
-rule_choice first_rule(const speed_model& sm, const std::complex<double> (&z)[2], T a, T b, double eff) noexcept {
+rule_choice first_rule(const speed_model& sm, const branch_points& bp, T a, T b, double eff) noexcept {
     const T m = a + (b - a) / 2;
     const double estimate = double(b - a) * std::sqrt(std::max(horner(sm.q, double(m)), 0.0)) / 2;
-    return estimate > 0 ? choose_rule(sm, z, double(a), double(b), eff, estimate) : rule_choice{};
+    return estimate > 0 ? choose_rule(sm, bp, double(a), double(b), eff, estimate) : rule_choice{};
 }
 
 /// The fast path over [a, b] of segment s, whose speed's branch points are
-/// z, with rc = first_rule(sm, z, a, b, eff): the smallest rule proved for
+/// bp, with rc = first_rule(sm, bp, a, b, eff): the smallest rule proved for
 /// [a, b], else its halves, recursively; slow(a, b) for what it cannot prove.
 template <std::size_t D, class T, class F, class Slow>
-void fast_length_pieces(const cubic_segment<D, T>& s, const speed_model& sm, const std::complex<double> (&z)[2], T a,
-                        T b, double eff, F& emit, Slow& slow, int depth, const rule_choice& rc) {
+void fast_length_pieces(const cubic_segment<D, T>& s, const speed_model& sm, const branch_points& bp, T a, T b,
+                        double eff, F& emit, Slow& slow, int depth, const rule_choice& rc) {
     if (rc.n) {
         const T len = gauss_length_rule(s, a, b, rc.n);
         if (rc.bound <= eff * double(len)) {
@@ -246,8 +247,8 @@ void fast_length_pieces(const cubic_segment<D, T>& s, const speed_model& sm, con
     const T w = b - a;
     const T m = rc.cut > double(a + w / 16) && rc.cut < double(b - w / 16) ? T(rc.cut) : a + w / 2;
     if (depth < max_depth && m > a && m < b) {
-        fast_length_pieces(s, sm, z, a, m, eff, emit, slow, depth + 1, first_rule(sm, z, a, m, eff));
-        fast_length_pieces(s, sm, z, m, b, eff, emit, slow, depth + 1, first_rule(sm, z, m, b, eff));
+        fast_length_pieces(s, sm, bp, a, m, eff, emit, slow, depth + 1, first_rule(sm, bp, a, m, eff));
+        fast_length_pieces(s, sm, bp, m, b, eff, emit, slow, depth + 1, first_rule(sm, bp, m, b, eff));
         return;
     }
     slow(a, b);
@@ -273,20 +274,21 @@ void for_each_length_piece(const cubic_segment<D, T>& s, T a, T b, T acc, F&& em
     const double eff = effective_accuracy(acc);
     auto slow = [&](T u0, T u1) { slow_length_pieces(s, u0, u1, eff, emit); };
     const speed_model sm(s);
-    std::complex<double> z[2];
-    if (!speed_branch_points(sm, z)) {
+    const branch_points bp = speed_branch_points(sm);
+    if (!bp.ok) {
         slow(a, b);
         return;
     }
-    fast_length_pieces(s, sm, z, a, b, eff, emit, slow, 0, first_rule(sm, z, a, b, eff));
+    fast_length_pieces(s, sm, bp, a, b, eff, emit, slow, 0, first_rule(sm, bp, a, b, eff));
 }
 
 /// for_each_length_piece over the whole of segments 0 .. n-1 (segment_at(i)
 /// gives segment i), with the same pieces bit for bit, calling emit(i, u0,
 /// u1, length, rule_choice). Eight segments at a time: their branch points
-/// and first rule choices side by side (speed_branch_points_block), since
-/// one segment's are chains of dependent divisions and square roots that
-/// leave the processor waiting; then each segment's pieces, in order.
+/// and first rule choices side by side in vector lanes (speed_branch_points,
+/// first_rules), since one segment's are chains of dependent divisions and
+/// square roots that leave the processor waiting; then each segment's
+/// pieces, in order.
 template <class T, class SegmentAt, class F>
 void for_each_segment_length_piece(std::size_t n, const SegmentAt& segment_at, T acc, F&& emit) {
     constexpr int L = 8;
@@ -294,8 +296,7 @@ void for_each_segment_length_piece(std::size_t n, const SegmentAt& segment_at, T
     const double eff = effective_accuracy(acc);
     segment seg[L];
     speed_model sm[L];
-    std::complex<double> z[L][2];
-    bool ok[L];
+    branch_points bp[L];
     rule_choice rc[L];
     for (std::size_t i0 = 0; i0 < n; i0 += L) {
         const int count = int(std::min<std::size_t>(L, n - i0));
@@ -303,13 +304,13 @@ void for_each_segment_length_piece(std::size_t n, const SegmentAt& segment_at, T
             seg[l] = segment_at(i0 + std::size_t(l));
             sm[l] = speed_model(seg[l]);
         }
-        speed_branch_points_block<L>(sm, count, z, ok);
-        for (int l = 0; l < count; ++l) rc[l] = ok[l] ? first_rule(sm[l], z[l], T(0), T(1), eff) : rule_choice{};
+        speed_branch_points(sm, count, bp);
+        first_rules(sm, bp, count, eff, rc);
         for (int l = 0; l < count; ++l) {
             const std::size_t i = i0 + std::size_t(l);
             auto emit_i = [&](T u0, T u1, T len, const rule_choice& r) { emit(i, u0, u1, len, r); };
             auto slow = [&](T u0, T u1) { slow_length_pieces(seg[l], u0, u1, eff, emit_i); };
-            if (ok[l]) fast_length_pieces(seg[l], sm[l], z[l], T(0), T(1), eff, emit_i, slow, 0, rc[l]);
+            if (bp[l].ok) fast_length_pieces(seg[l], sm[l], bp[l], T(0), T(1), eff, emit_i, slow, 0, rc[l]);
             else slow(T(0), T(1));
         }
     }

@@ -55,13 +55,15 @@ TEST(ArcLengthRules, BranchPointsAreTheSpeedsComplexZeros) {
     std::size_t checked = 0;
     for (const auto& seg : c.segments()) {
         const detail::speed_model sm(seg);
-        std::complex<double> z[2];
-        if (!detail::speed_branch_points(sm, z)) continue;
+        const detail::branch_points bp = detail::speed_branch_points(sm);
+        if (!bp.ok) continue;
+        const auto& z = bp.z;
         for (const auto& x : z) {
             std::complex<double> qz = 0, scale = 0;
             for (std::size_t k = 5; k-- > 0;) qz = qz * x + sm.q[k], scale = scale * std::abs(x) + std::abs(sm.q[k]);
-            // Newton stops at a relative step of 1e-8, so the root is good to
-            // about 1e-16 relative; q there is a few ulps of its terms' size.
+            // Newton stops at a step of 1e-6 of the root's imaginary part, so
+            // the root is good to about 1e-12 of it; q there is far below
+            // 1e-10 of its terms' size.
             EXPECT_LE(std::abs(qz), 1e-10 * std::abs(scale)) << "root " << x;
         }
         double rho_fast = std::min(detail::ellipse_parameter(z[0], 0, 1), detail::ellipse_parameter(z[1], 0, 1));
@@ -120,6 +122,61 @@ TEST(ArcLengthRules, RandomWalkSegmentsMeetEveryAccuracy) {
     EXPECT_LE(double(std::abs(arc_length(c, 1e-12) - total_ref)), 1e-12 * double(total_ref));
     const arc_length_table<3> table(c, 1e-12);
     EXPECT_LE(double(std::abs(table.total() - total_ref)), 1e-12 * double(total_ref));
+}
+
+TEST(ArcLengthRules, RoucheTestRejectsAWrongRoot) {
+    // choose_rule trusts no root: it proves q zero-free in its ellipse from
+    // the deflation's remainder. Given a root whose imaginary part is 1.5 or
+    // 3 times the true one (with the remainder deflation by it leaves), it
+    // must pick no rule, or a rho below the true nearest branch point's.
+    CRSPLINE_SEEDED(s, 1603);
+    std::mt19937_64 rng(s);
+    const catmull_rom<3> c(walk(rng, 1001));
+    std::size_t checked = 0, rejected = 0;
+    for (const auto& seg : c.segments()) {
+        const detail::speed_model sm(seg);
+        const detail::branch_points bp = detail::speed_branch_points(sm);
+        if (!bp.ok) continue;
+        const double rho_true = std::min(detail::ellipse_parameter(bp.z[0], 0, 1), detail::ellipse_parameter(bp.z[1], 0, 1));
+        const double c4 = sm.q[4];
+        const double mc[4] = {sm.q[0] / c4, sm.q[1] / c4, sm.q[2] / c4, sm.q[3] / c4};
+        for (double factor : {1.5, 3.0}) {
+            detail::branch_points wrong;
+            if (!detail::branch_points_finish(mc, bp.z[0].real(), factor * bp.z[0].imag(), wrong)) continue;
+            const auto rc = detail::choose_rule(sm, wrong, 0.0, 1.0, 1e-12, 1.0);
+            EXPECT_TRUE(rc.n == 0 || rc.rho < rho_true) << "factor " << factor << ": rho " << rc.rho << " >= " << rho_true;
+            rejected += rc.n == 0 || rc.rho < 1 + 0.9 * (std::min(detail::ellipse_parameter(wrong.z[0], 0, 1),
+                                                                   detail::ellipse_parameter(wrong.z[1], 0, 1)) - 1);
+            ++checked;
+        }
+    }
+    // Two tries per segment; a wrong root often leaves a quadratic with real
+    // roots, which finish() refuses before any rule (944 of 2000 here).
+    EXPECT_GE(checked, c.segment_count() / 2);
+    // Every wrong root is refused (no rho from it is proved).
+    EXPECT_EQ(rejected, checked);
+}
+
+TEST(ArcLengthRules, EveryPathGivesTheSameBits) {
+    // Segments in groups of lanes (AVX2 where the CPU has it, else the
+    // baseline's two-wide instructions) and one at a time: the same pieces,
+    // so the same lengths bit for bit.
+    CRSPLINE_SEEDED(s, 1604);
+    std::mt19937_64 rng(s);
+    const catmull_rom<3> c(walk(rng, 1003));
+    const std::vector<double> grouped = segment_arc_lengths(c, 1e-12);
+    ASSERT_EQ(grouped.size(), c.segment_count());
+    std::size_t checked = 0;
+    for (std::size_t i = 0; i < c.segment_count(); ++i, ++checked)
+        ASSERT_EQ(grouped[i], arc_length(c.segment(i), 1e-12)) << "segment " << i;
+#if CRSPLINE_X86_DISPATCH
+    const bool was = detail::avx2_enabled();
+    detail::avx2_enabled() = !was;
+    const std::vector<double> other = segment_arc_lengths(c, 1e-12);
+    detail::avx2_enabled() = was;
+    for (std::size_t i = 0; i < c.segment_count(); ++i) ASSERT_EQ(grouped[i], other[i]) << "segment " << i;
+#endif
+    EXPECT_EQ(checked, c.segment_count());
 }
 
 }  // namespace

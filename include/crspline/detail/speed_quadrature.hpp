@@ -1,31 +1,26 @@
 // crspline internal: the fast path of arc length. Gauss-Legendre rules of
-// 8, 16, 24 and 32 points, the speed |C'(u)| of a segment evaluated at all
-// of a rule's nodes in one loop, and an a-priori error bound that picks the
-// rule for a piece of a segment without finding the speed's singularities.
+// 8 to 48 points, the speed |C'(u)| of a segment evaluated at all of a
+// rule's nodes in one loop, the speed's complex branch points, and an
+// a-priori error bound that picks the rule for a piece of a segment.
 //
 // Why the bound holds. With P(u) = C'(u) = A + B u + C u^2 (A = c1,
-// B = 2 c2, C = 3 c3), the speed is sqrt(q), q(u) = P(u).P(u), a quartic.
-// For z = x + i y, P(z) = P(x) - y^2 C + i y P'(x), so
-//   Re q(z) = |P(x) - y^2 C|^2 - y^2 |P'(x)|^2
-//          >= (|P(x)| - y^2 |C|)^2 - y^2 |P'(x)|^2,
-// which is > 0 when |P(x)| - y^2 |C| > |y| |P'(x)|. The Bernstein ellipse
-// E_rho of a piece [a, b] (half-width r) lies in the rectangle
-// |x - mid| <= r (rho + 1/rho)/2, |y| <= Y = r (rho - 1/rho)/2. If
-//   m > Y^2 |C| + Y M1,
-// with m a lower bound of |P| on the rectangle's real side (the smallest
-// Bernstein coefficient of q there, square-rooted) and M1 the largest |P'|
-// there (|P'| is convex in x: its larger end value), then Re q > 0 on the
-// whole rectangle, so the principal sqrt(q) is analytic inside E_rho and
-// |sqrt(q(z))| <= |P(z)| <= Mq + Y M1 + Y^2 |C| =: M, Mq from the largest
-// Bernstein coefficient. Gauss-Legendre with n points then errs by at most
+// B = 2 c2, C = 3 c3), the speed is sqrt(q), q(u) = P(u).P(u), a quartic
+// with real coefficients; its complex zeros (two conjugate pairs) are the
+// branch points of the speed. speed_branch_points finds them (Newton on q,
+// deflation, a quadratic), four segments at a time in vector lanes.
+// choose_rule then takes the Bernstein ellipse E_rho of the piece just
+// inside the nearest of them and proves, by Rouche's theorem with the
+// deflation's remainder, that q has no zero in E_rho, so that sqrt(q) is
+// analytic there, bounded by M = |A| + |B| |u| + |C| |u|^2. Gauss-Legendre
+// with n points then errs by at most
 //   r * 64 M / (15 (rho^2 - 1) rho^(2n))
 // (Trefethen, "Is Gauss quadrature better than Clenshaw-Curtis?", SIAM
-// Review 50 (2008), Theorem 4.5), and the piece is at least 2 r m long, so
-// a rule meets relative accuracy acc on the piece when that bound is at most
-// acc * 2 r m. Pieces for which no candidate rho proves a rule of at most
-// 32 points are halved; the few that still fail (speed zeros inside: cusps,
-// folds, tension 1) go to the slower path that cuts at the speed's
-// critical points and singularities.
+// Review 50 (2008), Theorem 4.5), r the piece's half-width; the smallest
+// rule whose bound is below the accuracy times the length it computes is
+// the piece's. Pieces with no rule of at most 48 points proved are cut at
+// the nearest branch point's real part; the few that still fail (speed
+// zeros inside: cusps, folds, tension 1) go to the slower path that cuts
+// at the speed's critical points and singularities.
 #pragma once
 
 #include <algorithm>
@@ -33,6 +28,7 @@
 #include <cmath>
 #include <complex>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -42,6 +38,7 @@
 
 #include "../segment.hpp"
 #include "polynomial.hpp"
+#include "x86_kernels.hpp"
 
 namespace crspline::detail {
 
@@ -210,10 +207,9 @@ T gauss_length_rule(const cubic_segment<D, T>& s, T a, T b, int n) noexcept {
 }
 
 /// The speed squared of a segment as scalars: q(u) = |P(u)|^2 in the power
-/// basis and |P'(u)|^2 = pp0 + pp1 u + pp2 u^2, with |C| for the bound.
+/// basis, with |A|, |B| and |C| for the bound.
 struct speed_model {
     std::array<double, 5> q{};
-    double pp0 = 0, pp1 = 0, pp2 = 0;
     double a_norm = 0, b_norm = 0, c_norm = 0;
 
     speed_model() = default;
@@ -225,28 +221,8 @@ struct speed_model {
             AA += A * A, AB += A * B, AC += A * C, BB += B * B, BC += B * C, CC += C * C;
         }
         q[0] = AA, q[1] = 2 * AB, q[2] = BB + 2 * AC, q[3] = 2 * BC, q[4] = CC;
-        // P' = B + 2 C u
-        pp0 = BB, pp1 = 4 * BC, pp2 = 4 * CC;
         a_norm = std::sqrt(AA), b_norm = std::sqrt(BB), c_norm = std::sqrt(CC);
     }
-
-    /// Lower and upper bounds of the quartic p on [lo, hi]: its extreme
-    /// Bernstein coefficients on that interval.
-    static void bernstein_range(const std::array<double, 5>& p, double lo, double hi, double& qmin,
-                                double& qmax) noexcept {
-        // Taylor shift to lo and scale to s in [0, 1]: c_j = p^(j)(lo)/j! w^j.
-        double c[5] = {p[0], p[1], p[2], p[3], p[4]};
-        for (int i = 0; i < 4; ++i)
-            for (int j = 3; j >= i; --j) c[j] += lo * c[j + 1];
-        const double w = hi - lo;
-        double wj = w;
-        for (int j = 1; j < 5; ++j) c[j] *= wj, wj *= w;
-        const double b[5] = {c[0], c[0] + c[1] / 4, c[0] + c[1] / 2 + c[2] / 6,
-                             c[0] + 0.75 * c[1] + c[2] / 2 + c[3] / 4, c[0] + c[1] + c[2] + c[3] + c[4]};
-        qmin = std::min({b[0], b[1], b[2], b[3], b[4]});
-        qmax = std::max({b[0], b[1], b[2], b[3], b[4]});
-    }
-    double dspeed_sq(double x) const noexcept { return pp0 + x * (pp1 + x * pp2); }
 };
 
 /// The rule a piece needs (0 when none was proved), the rho that proved it
@@ -275,112 +251,246 @@ struct rule_choice {
     }
 };
 
-/// speed_branch_points' Newton iteration for one segment: the monic
-/// quartic, the current root estimate and whether it is still moving.
-struct branch_newton {
-    double c0 = 0, c1 = 0, c2 = 0, c3 = 0;
-    double xr = 0.5, xi = 0.6;
-    int state = -1;  ///< 0: moving, 1: settled, -1: failed
+/// The speed's branch points for one segment as speed_branch_points finds
+/// them: one of each conjugate pair of q's complex roots, z[0] from Newton
+/// and z[1] from the quadratic left by deflation, with bounds of the
+/// remainder of that deflation (q / q4 - (u^2 + p u + s)(u^2 + e u + f) =
+/// r3 u^3 + r2 u^2 + r1 u + r0, |r_k| <= rem[k], rounding included). The
+/// remainder is what choose_rule's Rouche test needs: it proves that q has
+/// no zero in the ellipse it picks, however accurate the roots are.
+struct branch_points {
+    std::complex<double> z[2];
+    double rem[4] = {0, 0, 0, 0};
+    bool ok = false;
 };
 
-/// The iteration's start for segment model sm (state -1 when q is not a
-/// true quartic).
-inline branch_newton branch_newton_start(const speed_model& sm) noexcept {
-    branch_newton n;
-    const auto& q = sm.q;
-    const double scale = q[0] + q[2] + q[4];
-    if (!(q[4] > 1e-12 * scale && scale < 1e280 && q[4] > 1e-280)) return n;
-    n.c0 = q[0] / q[4], n.c1 = q[1] / q[4], n.c2 = q[2] / q[4], n.c3 = q[3] / q[4];
-    // Start: a root of q's quadratic Taylor model at the smallest of five
-    // samples of q on [0, 1] (near the closest pair when there is one: a few
-    // Newton steps then suffice), else 0.5 + 0.6 i.
-    double u = 0, low = q[0];
-    for (double v : {0.25, 0.5, 0.75, 1.0}) {
-        const double qv = horner(q, v);
-        if (qv < low) low = qv, u = v;
-    }
-    const double q1 = ((4 * q[4] * u + 3 * q[3]) * u + 2 * q[2]) * u + q[1];
-    const double q2h = (6 * q[4] * u + 3 * q[3]) * u + q[2];  // q''(u) / 2
-    const double disc = 4 * low * q2h - q1 * q1;
-    if (q2h > 0 && disc > 0) n.xr = u - q1 / (2 * q2h), n.xi = std::sqrt(disc) / (2 * q2h);
-    n.state = 0;
-    return n;
+/// Lanes of doubles for speed_branch_points_lanes: four side by side with
+/// the GCC/Clang vector extension (two SSE2 instructions each on the x86-64
+/// baseline, one in the AVX2 clone), else one. Every operation is the
+/// scalar one lane by lane (no FMA contraction: the library is built
+/// without it), so a segment gets the same bits in any lane width.
+#if defined(__GNUC__) || defined(__clang__)
+#define CRSPLINE_LANES4 1
+inline constexpr int lanes_width = 4;
+using lanes = double __attribute__((vector_size(8 * lanes_width)));
+using lanes_mask = long long __attribute__((vector_size(8 * lanes_width)));
+// (Operands by reference: a 32-byte vector by value changes the calling
+// convention without AVX, which GCC warns about.)
+[[gnu::always_inline]] inline void lanes_set(lanes& x, const lanes_mask& m, const lanes& a) noexcept {
+    x = lanes((lanes_mask(a) & m) | (lanes_mask(x) & ~m));
 }
+[[gnu::always_inline]] inline bool lanes_any(const lanes_mask& m) noexcept {
+    long long any = 0;
+    for (int l = 0; l < lanes_width; ++l) any |= m[l];
+    return any != 0;
+}
+[[gnu::always_inline]] inline void lanes_clear(lanes_mask& m, const lanes_mask& off) noexcept { m = m & ~off; }
+[[gnu::always_inline]] inline void lanes_sqrt(lanes& x) noexcept {
+#if defined(__SSE2__)
+    // Two halves in registers (through memory they would stall the AVX2
+    // clone on store forwarding), each one SSE2 square root.
+    static_assert(lanes_width == 4);
+    const __m128d lo = _mm_sqrt_pd(__m128d(__builtin_shufflevector(x, x, 0, 1)));
+    const __m128d hi = _mm_sqrt_pd(__m128d(__builtin_shufflevector(x, x, 2, 3)));
+    x = __builtin_shufflevector(lo, hi, 0, 1, 2, 3);
+#else
+    for (int l = 0; l < lanes_width; ++l) x[l] = std::sqrt(x[l]);
+#endif
+}
+#else
+#define CRSPLINE_LANES4 0
+#endif
+/// x = a in the lanes where m holds.
+[[gnu::always_inline]] inline void lanes_set(double& x, bool m, double a) noexcept {
+    if (m) x = a;
+}
+[[gnu::always_inline]] inline bool lanes_any(bool m) noexcept { return m; }
+/// m = m and not off.
+[[gnu::always_inline]] inline void lanes_clear(bool& m, bool off) noexcept { m = m && !off; }
+/// x = sqrt(x) (x >= 0), lane by lane.
+[[gnu::always_inline]] inline void lanes_sqrt(double& x) noexcept { x = std::sqrt(x); }
 
-/// One Newton step of a moving iteration. Complex arithmetic written out:
-/// std::complex's division and abs() guard against overflow (hypot,
-/// __divdc3) at several times the cost, and the coefficients here are
-/// within range (checked by branch_newton_start). Settles when a step is
-/// below 1e-8 of |x|: Newton's error after it is about its square, and the
-/// rule needs rho only to a few per cent.
-[[gnu::always_inline]] inline void branch_newton_step(branch_newton& n) noexcept {
-    const double xr = n.xr, xi = n.xi, c0 = n.c0, c1 = n.c1, c2 = n.c2, c3 = n.c3;
-    // f = (((x + c3) x + c2) x + c1) x + c0, df = ((4 x + 3 c3) x + 2 c2) x + c1
-    double fr = xr + c3, fi = xi, dr = 4 * xr + 3 * c3, di = 4 * xi, t;
-    t = fr * xr - fi * xi + c2, fi = fr * xi + fi * xr, fr = t;
-    t = dr * xr - di * xi + 2 * c2, di = dr * xi + di * xr, dr = t;
-    t = fr * xr - fi * xi + c1, fi = fr * xi + fi * xr, fr = t;
-    t = dr * xr - di * xi + c1, di = dr * xi + di * xr, dr = t;
-    t = fr * xr - fi * xi + c0, fi = fr * xi + fi * xr, fr = t;
-    const double dd = dr * dr + di * di;
-    if (!(dd > 0)) {
-        n.state = -1;
-        return;
-    }
-    const double sr = (fr * dr + fi * di) / dd, si = (fi * dr - fr * di) / dd;
-    n.xr = xr - sr, n.xi = xi - si;
-    if (sr * sr + si * si <= 1e-16 * (1 + n.xr * n.xr + n.xi * n.xi)) n.state = 1;
-}
 
 /// Newton's iterations at most.
 inline constexpr int branch_newton_steps = 60;
 
-/// The two branch points from a finished iteration: false unless it
-/// settled on a root off the real axis and the quadratic left by deflation
-/// has one too.
-inline bool branch_newton_finish(const branch_newton& n, std::complex<double> (&z)[2]) noexcept {
-    const double xr = n.xr, xi = n.xi;
-    if (n.state != 1 || !(xi * xi > 1e-18 * (1 + xr * xr + xi * xi))) return false;
-    // x^4 + c3 x^3 + c2 x^2 + c1 x + c0 = (x^2 + p x + s)(x^2 + e x + f)
-    const double p = -2 * xr, sq = xr * xr + xi * xi;
-    const double e = n.c3 - p, f = n.c2 - sq - p * e;
+/// The core of speed_branch_points for W segments in the lanes of V (M
+/// its comparison mask): q's coefficients in, the monic quartic's, the root
+/// Newton settled on (xi its imaginary part) and whether it settled out.
+/// Start: a root of q's quadratic Taylor model at the smallest of five
+/// samples of q on [0, 1] (near the closest pair when there is one), else
+/// 0.5 + 0.6 i. Newton then runs until its step is below 1e-6 of the
+/// root's imaginary part (or 1e-16 of its size): the error after such a
+/// step is about its square, and choose_rule checks whatever it gets. The
+/// complex arithmetic is written out (std::complex guards its division and
+/// abs() against overflow at several times the cost; the coefficients are
+/// in range, checked first). A lane stops when it settles or fails, so each
+/// segment takes its own steps, whatever the others in its group do.
+template <class V, class M>
+struct branch_newton {
+    V c[4], xr, xi;
+    M moving, settled;
+};
+
+template <class V, class M>
+[[gnu::always_inline]] inline void branch_newton_start(const V (&q)[5], branch_newton<V, M>& n) noexcept {
+    const V zero = q[0] - q[0];
+    const V scale = q[0] + q[2] + q[4];
+    n.moving = (q[4] > 1e-12 * scale) & (scale < 1e280) & (q[4] > 1e-280);
+    for (int k = 0; k < 4; ++k) n.c[k] = q[k] / q[4];
+    V u = zero, low = q[0];
+    for (double v : {0.25, 0.5, 0.75, 1.0}) {
+        const V qv = (((q[4] * v + q[3]) * v + q[2]) * v + q[1]) * v + q[0];
+        const M lower = qv < low;
+        lanes_set(low, lower, qv);
+        lanes_set(u, lower, zero + v);
+    }
+    const V q1 = ((4 * q[4] * u + 3 * q[3]) * u + 2 * q[2]) * u + q[1];
+    const V q2h = (6 * q[4] * u + 3 * q[3]) * u + q[2];  // q''(u) / 2
+    const V disc = 4 * low * q2h - q1 * q1;
+    const M model = (q2h > 0) & (disc > 0);
+    V root = zero;
+    lanes_set(root, model, disc);
+    lanes_sqrt(root);
+    n.xr = zero + 0.5, n.xi = zero + 0.6;
+    lanes_set(n.xr, model, u - q1 / (2 * q2h));
+    lanes_set(n.xi, model, root / (2 * q2h));
+    n.settled = n.moving;
+    lanes_clear(n.settled, n.moving);
+}
+
+template <class V, class M>
+[[gnu::always_inline]] inline void branch_newton_step(branch_newton<V, M>& n) noexcept {
+    const V xr = n.xr, xi = n.xi;
+    const V(&c)[4] = n.c;
+    // f = (((x + c3) x + c2) x + c1) x + c0, df = ((4 x + 3 c3) x + 2 c2) x + c1
+    V fr = xr + c[3], fi = xi, dr = 4 * xr + 3 * c[3], di = 4 * xi, t;
+    t = fr * xr - fi * xi + c[2], fi = fr * xi + fi * xr, fr = t;
+    t = dr * xr - di * xi + 2 * c[2], di = dr * xi + di * xr, dr = t;
+    t = fr * xr - fi * xi + c[1], fi = fr * xi + fi * xr, fr = t;
+    t = dr * xr - di * xi + c[1], di = dr * xi + di * xr, dr = t;
+    t = fr * xr - fi * xi + c[0], fi = fr * xi + fi * xr, fr = t;
+    const V dd = dr * dr + di * di;
+    n.moving = n.moving & (dd > 0);  // a failed lane stops, unsettled
+    const V sr = (fr * dr + fi * di) / dd, si = (fi * dr - fr * di) / dd;
+    lanes_set(n.xr, n.moving, xr - sr);
+    lanes_set(n.xi, n.moving, xi - si);
+    const V step = sr * sr + si * si;
+    const M done = n.moving & ((step <= 1e-12 * (n.xi * n.xi)) | (step <= 1e-32 * (1 + n.xr * n.xr + n.xi * n.xi)));
+    n.settled = n.settled | done;
+    lanes_clear(n.moving, done);
+}
+
+/// G groups of lanes side by side (independent chains the processor
+/// overlaps), each lane until it settles or fails.
+template <int G, class V, class M>
+[[gnu::always_inline]] inline void branch_newton_run(branch_newton<V, M> (&n)[G]) noexcept {
+    for (int it = 0; it < branch_newton_steps; ++it) {
+        bool any = false;
+        for (int g = 0; g < G; ++g)
+            if (lanes_any(n[g].moving)) {
+                branch_newton_step(n[g]);
+                any = true;
+            }
+        if (!any) break;
+    }
+}
+
+/// The branch points from a settled Newton root (xr, xi) of the monic
+/// quartic c: false unless the root is off the real axis and the quadratic
+/// left by deflation has a pair off it too (a real root is a zero of the
+/// speed: the slower path cuts there).
+inline bool branch_points_finish(const double (&c)[4], double xr, double xi, branch_points& bp) noexcept {
+    if (!(xi * xi > 1e-18 * (1 + xr * xr + xi * xi))) return false;
+    // u^4 + c3 u^3 + c2 u^2 + c1 u + c0 = (u^2 + p u + s)(u^2 + e u + f) + remainder
+    const double p = -2 * xr, s = xr * xr + xi * xi;
+    const double e = c[3] - p, f = c[2] - s - p * e;
     const double disc = f - e * e / 4;
-    if (!(disc > 1e-18 * (1 + f))) return false;
-    z[0] = std::complex<double>(xr, xi);
-    z[1] = std::complex<double>(-e / 2, std::sqrt(disc));
+    if (!(disc > 1e-18 * (1 + std::abs(f)))) return false;
+    bp.z[0] = std::complex<double>(xr, std::abs(xi));
+    bp.z[1] = std::complex<double>(-e / 2, std::sqrt(disc));
+    // Each remainder coefficient as computed, plus the rounding of its terms
+    // and of p, s, e, f (a few ulps of the largest term: 1e-15 relative).
+    const double tol = 1e-15;
+    const double t3 = std::abs(c[3]) + std::abs(p) + std::abs(e);
+    const double t2 = std::abs(c[2]) + std::abs(s) + std::abs(p * e) + std::abs(f);
+    const double t1 = std::abs(c[1]) + std::abs(p * f) + std::abs(s * e);
+    const double t0 = std::abs(c[0]) + std::abs(s * f);
+    bp.rem[3] = std::abs(c[3] - p - e) + tol * t3;
+    bp.rem[2] = std::abs(c[2] - s - p * e - f) + tol * t2;
+    bp.rem[1] = std::abs(c[1] - (p * f + s * e)) + tol * t1;
+    bp.rem[0] = std::abs(c[0] - s * f) + tol * t0;
+    bp.ok = true;
     return true;
 }
 
-/// The complex roots of q (the speed's branch points), one of each
-/// conjugate pair, in the segment's local u. Newton on the monic quartic
-/// from a point off the real axis, deflation by the pair found, the other
-/// pair from the quadratic left. False when q is not a true quartic, when
-/// Newton does not settle, or when a root is (numerically) real: the speed
-/// vanishes there, and the slower path cuts at it.
-inline bool speed_branch_points(const speed_model& sm, std::complex<double> (&z)[2]) noexcept {
-    branch_newton n = branch_newton_start(sm);
-    for (int it = 0; it < branch_newton_steps && n.state == 0; ++it) branch_newton_step(n);
-    return branch_newton_finish(n, z);
+/// speed_branch_points for count <= G W segments in G groups of W lanes of V.
+template <int G, class V, class M>
+[[gnu::always_inline]] inline void branch_points_group(const speed_model* sm, int count, branch_points* out) noexcept {
+    constexpr int W = std::is_same_v<V, double> ? 1 : int(sizeof(V) / sizeof(double));
+    branch_newton<V, M> n[G];
+    for (int g = 0; g < G; ++g) {
+        V q[5] = {};
+        for (int k = 0; k < 5; ++k) {
+            if constexpr (W == 1) q[k] = sm[g < count ? g : 0].q[std::size_t(k)];
+            else
+                for (int l = 0; l < W; ++l) q[k][l] = sm[g * W + l < count ? g * W + l : 0].q[std::size_t(k)];
+        }
+        branch_newton_start(q, n[g]);
+    }
+    branch_newton_run<G>(n);
+    for (int i = 0; i < count && i < G * W; ++i) {
+        const int g = i / W, l = i % W;
+        out[i] = branch_points{};
+        if constexpr (W == 1) {
+            const double cc[4] = {n[g].c[0], n[g].c[1], n[g].c[2], n[g].c[3]};
+            if (n[g].settled) branch_points_finish(cc, n[g].xr, n[g].xi, out[i]);
+        } else {
+            const double cc[4] = {n[g].c[0][l], n[g].c[1][l], n[g].c[2][l], n[g].c[3][l]};
+            if (n[g].settled[l]) branch_points_finish(cc, n[g].xr[l], n[g].xi[l], out[i]);
+        }
+    }
 }
 
-/// speed_branch_points for count <= L segments at once, the same steps and
-/// the same results bit for bit: the iterations run side by side, so the
-/// processor overlaps their chains of dependent divisions, which one
-/// segment alone leaves waiting.
-template <int L>
-void speed_branch_points_block(const speed_model* sm, int count, std::complex<double> (*z)[2], bool* ok) noexcept {
-    branch_newton n[L];
-    for (int l = 0; l < count; ++l) n[l] = branch_newton_start(sm[l]);
-    for (int it = 0; it < branch_newton_steps; ++it) {
-        bool moving = false;
-        for (int l = 0; l < count; ++l)
-            if (n[l].state == 0) {
-                branch_newton_step(n[l]);
-                moving = true;
-            }
-        if (!moving) break;
-    }
-    for (int l = 0; l < count; ++l) ok[l] = branch_newton_finish(n[l], z[l]);
+/// speed_branch_points for count segments, four at a time: the AVX2 clone
+/// where the CPU has it (detail/x86_kernels.hpp), else the same code on the
+/// baseline's two-wide instructions (one at a time without the vector
+/// extension). The same bits either way.
+inline void branch_points_portable(const speed_model* sm, int count, branch_points* out) noexcept {
+#if CRSPLINE_LANES4
+    for (int i = 0; i < count; i += 2 * lanes_width)
+        branch_points_group<2, lanes, lanes_mask>(sm + i, std::min(2 * lanes_width, count - i), out + i);
+#else
+    for (int i = 0; i < count; i += 2) branch_points_group<2, double, bool>(sm + i, std::min(2, count - i), out + i);
+#endif
+}
+#if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
+CRSPLINE_TARGET_AVX2 inline void branch_points_avx2(const speed_model* sm, int count, branch_points* out) noexcept {
+    for (int i = 0; i < count; i += 2 * lanes_width)
+        branch_points_group<2, lanes, lanes_mask>(sm + i, std::min(2 * lanes_width, count - i), out + i);
+}
+#endif
+
+/// The complex roots of q (the speed's branch points) of count segments,
+/// one of each conjugate pair, in each segment's local u (out[i].ok false
+/// when q is not a true quartic, when Newton does not settle, or when a
+/// root is numerically real: the speed vanishes there, and the slower path
+/// cuts at it). Newton on the monic quartic, deflation by the pair found,
+/// the other pair from the quadratic left. Four segments side by side: one
+/// segment's Newton steps are a chain of dependent multiplications and
+/// divisions that leaves the processor waiting.
+inline void speed_branch_points(const speed_model* sm, int count, branch_points* out) noexcept {
+#if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
+    if (avx2_enabled()) return branch_points_avx2(sm, count, out);
+#endif
+    branch_points_portable(sm, count, out);
+}
+
+/// speed_branch_points of one segment (the same bits as in a group).
+inline branch_points speed_branch_points(const speed_model& sm) noexcept {
+    branch_points bp;
+    speed_branch_points(&sm, 1, &bp);
+    return bp;
 }
 
 /// Bernstein-ellipse parameter of z for [a, b]: rho + 1/rho is the sum of
@@ -391,59 +501,179 @@ inline double ellipse_parameter(std::complex<double> z, double a, double b) noex
     return s + std::sqrt(std::max(s * s - 1, 0.0));
 }
 
-/// The smallest rule of 8, 12, ..., 32, 40 or 48 points whose error bound on [a, b]
-/// is at most eff * length, from the branch points z (Trefethen's bound with
-/// rho 10% closer to 1 than the nearest branch point, as a margin for the
-/// roots' rounding, and M = |A| + |B| |u| + |C| |u|^2 >= |P(u)| >=
-/// |sqrt q(u)| over that ellipse).
-inline rule_choice choose_rule(const speed_model& sm, const std::complex<double> (&z)[2], double a, double b,
-                               double eff, double length) noexcept {
-    rule_choice best;
-    // ellipse_parameter of both points, their square roots two at a time
-    // (square roots and divisions are most of this function's time).
-    double e[2];
-    {
-        const double w = b - a;
-        double d[4], sq[2];
-        for (int k = 0; k < 2; ++k) {
-            const double y2 = z[k].imag() * z[k].imag(), da = z[k].real() - a, db = z[k].real() - b;
-            d[k] = da * da + y2, d[2 + k] = db * db + y2;
-        }
-#if defined(__SSE2__)
-        _mm_storeu_pd(d, _mm_sqrt_pd(_mm_loadu_pd(d)));
-        _mm_storeu_pd(d + 2, _mm_sqrt_pd(_mm_loadu_pd(d + 2)));
-#else
-        for (double& x : d) x = std::sqrt(x);
-#endif
-        for (int k = 0; k < 2; ++k) e[k] = (d[k] + d[2 + k]) / w, sq[k] = std::max(e[k] * e[k] - 1, 0.0);
-#if defined(__SSE2__)
-        _mm_storeu_pd(sq, _mm_sqrt_pd(_mm_loadu_pd(sq)));
-#else
-        for (double& x : sq) x = std::sqrt(x);
-#endif
-        for (int k = 0; k < 2; ++k) e[k] += sq[k];
+/// The smallest rule of 8, 12, ..., 32, 40 or 48 points whose error bound on
+/// [a, b] is at most eff * length, from the branch points bp: Trefethen's
+/// bound on the Bernstein ellipse E_rho with rho 1% closer to 1 than the
+/// nearest branch point (10% when that fails the test below), and M = |A| +
+/// |B| |u| + |C| |u|^2 >= |P(u)| >= |sqrt q(u)| over that ellipse.
+///
+/// Why sqrt q is analytic in E_rho (Rouche). q / q4 = Q + R with Q = (u -
+/// z0)(u - conj z0)(u - z1)(u - conj z1) and R the deflation's remainder
+/// (branch_points::rem). Every root of Q has ellipse parameter rho_k > rho,
+/// and a point J(w) = mid + r (w + 1/w) / 2 with |w| = rho is at least r/2
+/// (rho_k - rho)(1 - 1/(rho rho_k)) from the root J(w_k), |w_k| = rho_k
+/// (|w - w_k| >= rho_k - rho, |1 - 1/(w w_k)| >= 1 - 1/(rho rho_k)). So on
+/// the ellipse |Q| >= (d0 d1)^2 with those distances, and if |R| <= sum
+/// rem_k |u|^k is below it there, q has as many zeros inside as Q: none.
+///
+/// Written for lanes (as branch_newton_lanes): the first rules of four
+/// segments at once (choose_rules), and one piece's with V = double, the
+/// same operations in the same order. No branch on the data: which rule,
+/// and whether any, is a count of the rules that fail.
+template <class V, class M>
+[[gnu::always_inline]] inline void choose_rule_lanes(const V& a, const V& b, const V (&zr)[2], const V (&zi)[2],
+                                                     const V (&rem)[4], const V& a_norm, const V& b_norm,
+                                                     const V& c_norm, double eff, const V& length, V& n, V& rho_out,
+                                                     V& ratio, V& bound, V& cut) noexcept {
+    const V zero = a - a, w = b - a;
+    V e[2] = {}, d[4] = {};
+    for (int k = 0; k < 2; ++k) {
+        const V y2 = zi[k] * zi[k], da = zr[k] - a, db = zr[k] - b;
+        d[k] = da * da + y2, d[2 + k] = db * db + y2;
     }
-    const double rho_z = std::min(e[0], e[1]);
-    best.cut = (e[0] <= e[1] ? z[0] : z[1]).real();
-    const double rho = 1 + 0.9 * (rho_z - 1);
-    if (!(rho > 1.05)) return best;
-    const double r = (b - a) / 2, mid = a + r;
-    const double reach = std::abs(mid) + r * (rho + 1 / rho) / 2;
-    const double M = sm.a_norm + reach * (sm.b_norm + reach * sm.c_norm);
-    // The bound is K / rho^(2n), K = r 64 M / (15 (rho^2 - 1)) = k_num / k_den.
-    const double k_num = r * 64 * M, k_den = 15 * (rho * rho - 1);
-    // rho^(2n) for n = 8, 12, ..., 32, 40, 48 by products (no pow or log
-    // per piece); the test K / rho^(2n) <= eff length without a division.
-    const double r2 = rho * rho, r4 = r2 * r2, r8 = r4 * r4;
-    const double scale = k_den * eff * length;
-    double grow = r8 * r8;
-    for (int n = 8; n <= max_rule; n += n < 32 ? 4 : 8, grow *= n <= 32 ? r8 : r8 * r8)
-        if (grow * scale >= k_num) {
-            best.n = n, best.rho = rho, best.ratio = 2 * r * M / length;
-            best.bound = k_num / (k_den * grow);
-            break;
-        }
-    return best;
+    for (V& x : d) lanes_sqrt(x);  // two at a time with SSE2
+    V sq[2] = {};
+    for (int k = 0; k < 2; ++k) {
+        e[k] = (d[k] + d[2 + k]) / w, sq[k] = e[k] * e[k] - 1;
+        lanes_set(sq[k], sq[k] < 0, zero);
+        lanes_sqrt(sq[k]);
+        e[k] += sq[k];
+    }
+    const M first = e[0] <= e[1];
+    V rho_z = e[1];
+    lanes_set(rho_z, first, e[0]);
+    cut = zr[1];
+    lanes_set(cut, first, zr[0]);
+    const V r = w / 2, mid = a + r;
+    V amid = mid;
+    lanes_set(amid, mid < 0, -mid);
+    // rho and the reach of its ellipse for the first margin that passes.
+    V rho = zero, reach = zero;
+    M found = rho_z < rho_z;
+    for (double keep : {0.99, 0.9}) {
+        const V rk = 1 + keep * (rho_z - 1);
+        const V reach_k = amid + r * (rk + 1 / rk) / 2;
+        const V rem_k = ((rem[3] * reach_k + rem[2]) * reach_k + rem[1]) * reach_k + rem[0];
+        // The distances less 1e-12 of the roots' size (|z| <= (1 + |z|^2) / 2),
+        // for the rounding of the ellipse parameters and of Q's roots.
+        const V slack = 1e-12 * (reach_k + 1 + zr[0] * zr[0] + zi[0] * zi[0] + zr[1] * zr[1] + zi[1] * zi[1]);
+        const V d0 = r / 2 * (e[0] - rk) * (1 - 1 / (rk * e[0])) - slack;
+        const V d1 = r / 2 * (e[1] - rk) * (1 - 1 / (rk * e[1])) - slack;
+        const V prod = (d0 * d1) * (d0 * d1);
+        M pass = (rk > 1.05) & (d0 > 0) & (d1 > 0) & (rem_k < prod * (1 - 1e-12));
+        lanes_clear(pass, found);
+        lanes_set(rho, pass, rk);
+        lanes_set(reach, pass, reach_k);
+        found = found | pass;
+    }
+    const V M_bound = a_norm + reach * (b_norm + reach * c_norm);
+    // The bound is K / rho^(2n), K = r 64 M / (15 (rho^2 - 1)) = k_num / k_den;
+    // rho^(2n) for n = 8, 12, ..., 32, 40, 48 by products of r8 = rho^8 (no
+    // pow or log); a rule passes when K / rho^(2n) <= eff length.
+    const V k_num = r * 64 * M_bound, k_den = 15 * (rho * rho - 1);
+    const V r2 = rho * rho, r4 = r2 * r2, r8 = r4 * r4;
+    const V scale = k_den * eff * length;
+    V grow[9];
+    grow[0] = r8 * r8;
+    for (int k = 1; k < 7; ++k) grow[k] = grow[k - 1] * r8;  // n = 12 .. 32
+    grow[7] = grow[6] * (r8 * r8), grow[8] = grow[7] * (r8 * r8);  // n = 40, 48
+    constexpr double rules[9] = {8, 12, 16, 20, 24, 28, 32, 40, 48};
+    static_assert(rules[8] == max_rule);
+    n = zero, rho_out = zero, ratio = zero, bound = zero;
+    V g = grow[8];
+    for (int k = 9; k-- > 0;) {
+        const M pass = found & (grow[k] * scale >= k_num);
+        lanes_set(n, pass, zero + rules[k]);
+        lanes_set(g, pass, grow[k]);
+    }
+    const M chosen = n > 0;
+    lanes_set(rho_out, chosen, rho);
+    lanes_set(ratio, chosen, 2 * r * M_bound / length);
+    lanes_set(bound, chosen, k_num / (k_den * g));
+}
+
+/// choose_rule_lanes for one piece.
+inline rule_choice choose_rule(const speed_model& sm, const branch_points& bp, double a, double b, double eff,
+                               double length) noexcept {
+    const double zr[2] = {bp.z[0].real(), bp.z[1].real()}, zi[2] = {bp.z[0].imag(), bp.z[1].imag()};
+    const double rem[4] = {bp.rem[0], bp.rem[1], bp.rem[2], bp.rem[3]};
+    double n, rho, ratio, bound, cut;
+    choose_rule_lanes<double, bool>(a, b, zr, zi, rem, sm.a_norm, sm.b_norm, sm.c_norm, eff, length, n, rho, ratio,
+                                    bound, cut);
+    rule_choice rc;
+    rc.n = int(n), rc.rho = rho, rc.ratio = ratio, rc.bound = bound, rc.cut = cut;
+    return rc;
+}
+
+/// The first rule of each of count segments over their whole [0, 1] with
+/// the length estimated as half the speed at the middle (the estimate is
+/// checked against the computed length after), four at a time; the same
+/// bits as first_rule(sm[i], bp[i], 0, 1, eff) one by one.
+template <class V, class M>
+[[gnu::always_inline]] inline void first_rules_group(const speed_model* sm, const branch_points* bp, int count,
+                                                     double eff, rule_choice* out) noexcept {
+    constexpr int W = sizeof(V) / sizeof(double);
+    // The inputs lane by lane in plain arrays, then as lanes (lane l holds
+    // segment l, or segment 0 again past count).
+    constexpr int F = 17;  // zr[2], zi[2], rem[4], a_norm, b_norm, c_norm, q[5]
+    double t[F][W];
+    for (int l = 0; l < W; ++l) {
+        const int i = l < count ? l : 0;
+        const double f[F] = {bp[i].z[0].real(), bp[i].z[1].real(), bp[i].z[0].imag(), bp[i].z[1].imag(),
+                             bp[i].rem[0],      bp[i].rem[1],      bp[i].rem[2],      bp[i].rem[3],
+                             sm[i].a_norm,      sm[i].b_norm,      sm[i].c_norm,      sm[i].q[0],
+                             sm[i].q[1],        sm[i].q[2],        sm[i].q[3],        sm[i].q[4],
+                             0};
+        for (int k = 0; k < F; ++k) t[k][l] = f[k];
+    }
+    V v[F];
+    static_assert(sizeof(V) == sizeof(t[0]));
+    std::memcpy(v, t, sizeof v);
+    const V zr[2] = {v[0], v[1]}, zi[2] = {v[2], v[3]}, rem[4] = {v[4], v[5], v[6], v[7]};
+    const V &an = v[8], &bn = v[9], &cn = v[10], (&q)[5] = reinterpret_cast<const V(&)[5]>(v[11]);
+    const V zero = an - an, one = zero + 1;
+    V speed2 = (((q[4] * 0.5 + q[3]) * 0.5 + q[2]) * 0.5 + q[1]) * 0.5 + q[0];
+    lanes_set(speed2, speed2 < 0, zero);
+    lanes_sqrt(speed2);
+    const V estimate = one * speed2 / 2;
+    V n, rho, ratio, bound, cut;
+    choose_rule_lanes<V, M>(zero, one, zr, zi, rem, an, bn, cn, eff, estimate, n, rho, ratio, bound, cut);
+    for (int l = 0; l < count && l < W; ++l) {
+        rule_choice& rc = out[l];
+        rc = rule_choice{};
+        if (!bp[l].ok || !(estimate[l] > 0)) continue;
+        rc.n = int(n[l]), rc.rho = rho[l], rc.ratio = ratio[l], rc.bound = bound[l], rc.cut = cut[l];
+    }
+}
+
+/// first_rules_group for count segments, four at a time (AVX2 clone or
+/// baseline, as speed_branch_points), or first_rule one by one without the
+/// vector extension: the same bits every way.
+inline void first_rules_portable(const speed_model* sm, const branch_points* bp, int count, double eff,
+                                 rule_choice* out) noexcept {
+#if CRSPLINE_LANES4
+    for (int i = 0; i < count; i += lanes_width)
+        first_rules_group<lanes, lanes_mask>(sm + i, bp + i, std::min(lanes_width, count - i), eff, out + i);
+#else
+    for (int i = 0; i < count; ++i) {
+        const double estimate = std::sqrt(std::max(horner(sm[i].q, 0.5), 0.0)) / 2;
+        out[i] = bp[i].ok && estimate > 0 ? choose_rule(sm[i], bp[i], 0.0, 1.0, eff, estimate) : rule_choice{};
+    }
+#endif
+}
+#if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
+CRSPLINE_TARGET_AVX2 inline void first_rules_avx2(const speed_model* sm, const branch_points* bp, int count,
+                                                  double eff, rule_choice* out) noexcept {
+    for (int i = 0; i < count; i += lanes_width)
+        first_rules_group<lanes, lanes_mask>(sm + i, bp + i, std::min(lanes_width, count - i), eff, out + i);
+}
+#endif
+inline void first_rules(const speed_model* sm, const branch_points* bp, int count, double eff,
+                        rule_choice* out) noexcept {
+#if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
+    if (avx2_enabled()) return first_rules_avx2(sm, bp, count, eff, out);
+#endif
+    first_rules_portable(sm, bp, count, eff, out);
 }
 
 }  // namespace crspline::detail
