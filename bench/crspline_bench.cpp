@@ -546,6 +546,13 @@ void arc_length_walk(benchmark::State& state) {
     state.SetItemsProcessed(std::int64_t(state.iterations() * c.segment_count()));  // per segment
     const long double ref = walk20k_reference();
     state.counters["rel_err"] = double(std::abs((long double)L - ref) / ref);
+    // Quadrature nodes per segment, over the pieces arc_length integrates.
+    const auto segments = c.segments();
+    double nodes = 0;
+    crspline::detail::for_each_segment_length_piece(
+        c.segment_count(), [&](std::size_t i) { return segments[i]; }, 1e-12,
+        [&](std::size_t, double, double, double, const crspline::detail::rule_choice& rc) { nodes += rc.n; });
+    state.counters["nodes_per_segment"] = nodes / double(c.segment_count());
 }
 
 void arc_length_walk_gl16(benchmark::State& state) {

@@ -219,16 +219,6 @@ double effective_accuracy(T acc) noexcept {
 /// Halvings of a piece before the fast path gives it to the slower one.
 inline constexpr int max_depth = 10;
 
-/// The rule the fast path tries first on [a, b] of segment s: choose_rule
-/// with the length estimated as half the speed at the middle times the
-/// width (the bound is checked against the computed length after).
-template <class T>
-rule_choice first_rule(const speed_model& sm, const branch_points& bp, T a, T b, double eff) noexcept {
-    const T m = a + (b - a) / 2;
-    const double estimate = double(b - a) * std::sqrt(std::max(horner(sm.q, double(m)), 0.0)) / 2;
-    return estimate > 0 ? choose_rule(sm, bp, double(a), double(b), eff, estimate) : rule_choice{};
-}
-
 /// The fast path over [a, b] of segment s, whose speed's branch points are
 /// bp, with rc = first_rule(sm, bp, a, b, eff): the smallest rule proved for
 /// [a, b], else its halves, recursively; slow(a, b) for what it cannot prove.

@@ -264,7 +264,7 @@ struct branch_points {
     bool ok = false;
 };
 
-/// Lanes of doubles for speed_branch_points_lanes: four side by side with
+/// Lanes of doubles for the branch points and the first rule choices: four side by side with
 /// the GCC/Clang vector extension (two SSE2 instructions each on the x86-64
 /// baseline, one in the AVX2 clone), else one. Every operation is the
 /// scalar one lane by lane (no FMA contraction: the library is built
@@ -309,7 +309,6 @@ using lanes_mask = long long __attribute__((vector_size(8 * lanes_width)));
 [[gnu::always_inline]] inline void lanes_clear(bool& m, bool off) noexcept { m = m && !off; }
 /// x = sqrt(x) (x >= 0), lane by lane.
 [[gnu::always_inline]] inline void lanes_sqrt(double& x) noexcept { x = std::sqrt(x); }
-
 
 /// Newton's iterations at most.
 inline constexpr int branch_newton_steps = 60;
@@ -452,22 +451,32 @@ template <int G, class V, class M>
     }
 }
 
-/// speed_branch_points for count segments, four at a time: the AVX2 clone
-/// where the CPU has it (detail/x86_kernels.hpp), else the same code on the
-/// baseline's two-wide instructions (one at a time without the vector
-/// extension). The same bits either way.
-inline void branch_points_portable(const speed_model* sm, int count, branch_points* out) noexcept {
+/// speed_branch_points for count segments: two groups of lanes at a time
+/// (one when no more are left), else one segment per lane of double
+/// without the vector extension. The same bits either way. Inlined into
+/// the baseline function and into its AVX2 clone (detail/x86_kernels.hpp).
+[[gnu::always_inline]] inline void branch_points_all(const speed_model* sm, int count, branch_points* out) noexcept {
 #if CRSPLINE_LANES4
-    for (int i = 0; i < count; i += 2 * lanes_width)
-        branch_points_group<2, lanes, lanes_mask>(sm + i, std::min(2 * lanes_width, count - i), out + i);
+    using V = lanes;
+    using M = lanes_mask;
+    constexpr int W = lanes_width;
 #else
-    for (int i = 0; i < count; i += 2) branch_points_group<2, double, bool>(sm + i, std::min(2, count - i), out + i);
+    using V = double;
+    using M = bool;
+    constexpr int W = 1;
 #endif
+    for (int i = 0; i < count; i += 2 * W) {
+        const int left = std::min(2 * W, count - i);
+        if (left > W) branch_points_group<2, V, M>(sm + i, left, out + i);
+        else branch_points_group<1, V, M>(sm + i, left, out + i);
+    }
+}
+inline void branch_points_portable(const speed_model* sm, int count, branch_points* out) noexcept {
+    branch_points_all(sm, count, out);
 }
 #if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
 CRSPLINE_TARGET_AVX2 inline void branch_points_avx2(const speed_model* sm, int count, branch_points* out) noexcept {
-    for (int i = 0; i < count; i += 2 * lanes_width)
-        branch_points_group<2, lanes, lanes_mask>(sm + i, std::min(2 * lanes_width, count - i), out + i);
+    branch_points_all(sm, count, out);
 }
 #endif
 
@@ -646,26 +655,36 @@ template <class V, class M>
     }
 }
 
-/// first_rules_group for count segments, four at a time (AVX2 clone or
-/// baseline, as speed_branch_points), or first_rule one by one without the
-/// vector extension: the same bits every way.
-inline void first_rules_portable(const speed_model* sm, const branch_points* bp, int count, double eff,
-                                 rule_choice* out) noexcept {
+/// The rule the fast path tries first on [a, b] of a segment: choose_rule
+/// with the length estimated as half the speed at the middle times the
+/// width (the bound is checked against the computed length after).
+template <class T>
+rule_choice first_rule(const speed_model& sm, const branch_points& bp, T a, T b, double eff) noexcept {
+    const T m = a + (b - a) / 2;
+    const double estimate = double(b - a) * std::sqrt(std::max(horner(sm.q, double(m)), 0.0)) / 2;
+    return estimate > 0 ? choose_rule(sm, bp, double(a), double(b), eff, estimate) : rule_choice{};
+}
+
+/// first_rule over [0, 1] for count segments, four at a time with the
+/// vector extension (first_rules_group), else one by one: the same bits
+/// every way. Inlined into the baseline function and its AVX2 clone.
+[[gnu::always_inline]] inline void first_rules_all(const speed_model* sm, const branch_points* bp, int count,
+                                                   double eff, rule_choice* out) noexcept {
 #if CRSPLINE_LANES4
     for (int i = 0; i < count; i += lanes_width)
         first_rules_group<lanes, lanes_mask>(sm + i, bp + i, std::min(lanes_width, count - i), eff, out + i);
 #else
-    for (int i = 0; i < count; ++i) {
-        const double estimate = std::sqrt(std::max(horner(sm[i].q, 0.5), 0.0)) / 2;
-        out[i] = bp[i].ok && estimate > 0 ? choose_rule(sm[i], bp[i], 0.0, 1.0, eff, estimate) : rule_choice{};
-    }
+    for (int i = 0; i < count; ++i) out[i] = bp[i].ok ? first_rule(sm[i], bp[i], 0.0, 1.0, eff) : rule_choice{};
 #endif
+}
+inline void first_rules_portable(const speed_model* sm, const branch_points* bp, int count, double eff,
+                                 rule_choice* out) noexcept {
+    first_rules_all(sm, bp, count, eff, out);
 }
 #if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
 CRSPLINE_TARGET_AVX2 inline void first_rules_avx2(const speed_model* sm, const branch_points* bp, int count,
                                                   double eff, rule_choice* out) noexcept {
-    for (int i = 0; i < count; i += lanes_width)
-        first_rules_group<lanes, lanes_mask>(sm + i, bp + i, std::min(lanes_width, count - i), eff, out + i);
+    first_rules_all(sm, bp, count, eff, out);
 }
 #endif
 inline void first_rules(const speed_model* sm, const branch_points* bp, int count, double eff,
