@@ -2,7 +2,7 @@
 //
 // Lengths come from Gauss-Legendre quadrature of the speed |C'(u)|. The fast
 // path (detail/speed_quadrature.hpp) proves, before integrating, which rule
-// of 8 to 48 points meets the accuracy on a segment (or on the pieces it is
+// of 8 to 64 points meets the accuracy on a segment (or on the pieces it is
 // cut into) from the speed's complex singularities, found for several
 // segments at once and checked by Rouche's theorem: one rule evaluation per
 // piece, no search, no allocation. Pieces it cannot prove
@@ -275,8 +275,8 @@ void for_each_length_piece(const cubic_segment<D, T>& s, T a, T b, T acc, F&& em
 /// for_each_length_piece over the whole of segments 0 .. n-1 (segment_at(i)
 /// gives segment i), with the same pieces bit for bit, calling emit(i, u0,
 /// u1, length, rule_choice). Eight segments at a time: their branch points
-/// and first rule choices side by side in vector lanes (speed_branch_points,
-/// first_rules), since one segment's are chains of dependent divisions and
+/// and first rule choices side by side in vector lanes (speed_first_pass),
+/// since one segment's are chains of dependent divisions and
 /// square roots that leave the processor waiting; then each segment's
 /// pieces, in order.
 template <class T, class SegmentAt, class F>
@@ -294,8 +294,7 @@ void for_each_segment_length_piece(std::size_t n, const SegmentAt& segment_at, T
             seg[l] = segment_at(i0 + std::size_t(l));
             sm[l] = speed_model(seg[l]);
         }
-        speed_branch_points(sm, count, bp);
-        first_rules(sm, bp, count, eff, rc);
+        speed_first_pass(sm, count, eff, bp, rc);
         for (int l = 0; l < count; ++l) {
             const std::size_t i = i0 + std::size_t(l);
             auto emit_i = [&](T u0, T u1, T len, const rule_choice& r) { emit(i, u0, u1, len, r); };

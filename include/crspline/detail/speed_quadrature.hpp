@@ -1,5 +1,5 @@
 // crspline internal: the fast path of arc length. Gauss-Legendre rules of
-// 8 to 48 points, the speed |C'(u)| of a segment evaluated at all of a
+// 8 to 64 points, the speed |C'(u)| of a segment evaluated at all of a
 // rule's nodes in one loop, the speed's complex branch points, and an
 // a-priori error bound that picks the rule for a piece of a segment.
 //
@@ -11,13 +11,14 @@
 // choose_rule then takes the Bernstein ellipse E_rho of the piece just
 // inside the nearest of them and proves, by Rouche's theorem with the
 // deflation's remainder, that q has no zero in E_rho, so that sqrt(q) is
-// analytic there, bounded by M = |A| + |B| |u| + |C| |u|^2. Gauss-Legendre
+// analytic there, bounded by M = |P(m)| + |P'(m)| R + |C| R^2 (m the piece's
+// middle, R the ellipse's semi-major axis). Gauss-Legendre
 // with n points then errs by at most
 //   r * 64 M / (15 (rho^2 - 1) rho^(2n))
 // (Trefethen, "Is Gauss quadrature better than Clenshaw-Curtis?", SIAM
 // Review 50 (2008), Theorem 4.5), r the piece's half-width; the smallest
 // rule whose bound is below the accuracy times the length it computes is
-// the piece's. Pieces with no rule of at most 48 points proved are cut at
+// the piece's. Pieces with no rule of at most 64 points proved are cut at
 // the nearest branch point's real part; the few that still fail (speed
 // zeros inside: cusps, folds, tension 1) go to the slower path that cuts
 // at the speed's critical points and singularities.
@@ -146,6 +147,74 @@ struct gauss_legendre<48, T> {
                                 T(0.015579315722943848728177), T(0.0114772345792345394895927), T(0.00732755390127626210238398), T(0.00315334605230583863267731)};
 };
 
+template <class T>
+struct gauss_legendre<36, T> {
+    static constexpr T x[18] = {T(0.043018198473708607226969), T(0.128736103809384788651993), T(0.213500892316865578943226), T(0.296684995344028270503239),
+                              T(0.377672547119689216322736), T(0.455863944433420267207218), T(0.530680285926245161640709), T(0.601567658135980535079945),
+                              T(0.668001236585521062097191), T(0.72948917159355658209026), T(0.785576230132206512827769), T(0.835847166992475306418821),
+                              T(0.879929800890397131982427), T(0.917497774515659066075867), T(0.948272984399507545202474), T(0.972027691049697949335605),
+                              T(0.988586478902212238073395), T(0.997830462484085836198828)};
+    static constexpr T w[18] = {T(0.0859832756703947474900852), T(0.0853466857393386274918505), T(0.0840782189796619349334576), T(0.0821872667043397095172235),
+                              T(0.0796878289120716019087247), T(0.0765984106458706745287577), T(0.0729418850056530613538734), T(0.0687453238357364426136896),
+                              T(0.0640397973550154895563848), T(0.0588601442453248173096754), T(0.0532447139777599190920256), T(0.0472350834902659784166168),
+                              T(0.0408757509236448954741145), T(0.0342138107703072299212451), T(0.0272986214985687790944172), T(0.0201815152977354715320989),
+                              T(0.0129159472840655744045034), T(0.00556571966424504536125598)};
+};
+
+template <class T>
+struct gauss_legendre<44, T> {
+    static constexpr T x[22] = {T(0.0352892369641353590581967), T(0.105691901708653247117306), T(0.175568014775516785746508), T(0.244569456928201251507302),
+                              T(0.312352466502785812236545), T(0.378579352014707132511765), T(0.442920174525411483834827), T(0.505054391388202317982798),
+                              T(0.564672453185470768424637), T(0.621477345903575847802425), T(0.675186070666122365333699), T(0.725531053660717002606965),
+                              T(0.772261479248755899017759), T(0.815144539645135010487438), T(0.853966595004710378728302), T(0.888534238286043202338368),
+                              T(0.918675259984175774323001), T(0.944239509118194099203255), T(0.965099650422493139394398), T(0.981151833077913966662749),
+                              T(0.992316392138515808483338), T(0.998540200636774224936057)};
+    static constexpr T w[22] = {T(0.0705491577893540688113383), T(0.070197685473558212587142), T(0.0694964918615725780370841), T(0.0684490702693666609854587),
+                              T(0.0670606389062936523957049), T(0.0653381148791814349842409), T(0.0632900797332038549501389), T(0.0609267367015619680385578),
+                              T(0.0582598598775954953342107), T(0.0553027355637280525487466), T(0.0520700960917044618812318), T(0.0485780464483520375276394),
+                              T(0.0448439840819700314462432), T(0.0408865123103462189084472), T(0.0367253478138088736429093), T(0.0323812228120698208808469),
+                              T(0.0278757828212810100811143), T(0.0232314819020192106289583), T(0.0184714817368147491720422), T(0.0136195867555799855202051),
+                              T(0.00870048136752484412256562), T(0.00374540480311277751517378)};
+};
+
+template <class T>
+struct gauss_legendre<56, T> {
+    static constexpr T x[28] = {T(0.0277970352872754370940612), T(0.0833051868224353744402874), T(0.138555846810376242012887), T(0.193378238635275258240185),
+                              T(0.247602909434337203972967), T(0.301062253867220669053094), T(0.353591032174954520969707), T(0.405026880927091278118867),
+                              T(0.455210814878459578948832), T(0.503987718384381714195224), T(0.551206824855534618754364), T(0.596722182770663320104135),
+                              T(0.640393106807006894267939), T(0.682084612694470455501561), T(0.721667834450188083522594), T(0.759020422705128902202413),
+                              T(0.794026922893866498030008), T(0.826579132142881651672127), T(0.856576433762748635402991), T(0.883926108327827540789012),
+                              T(0.908543620420655490846107), T(0.930352880247496300547273), T(0.949286479561962635646738), T(0.965285901905490183626195),
+                              T(0.978301709140256383376991), T(0.988293715540161511089925), T(0.995231226081069747216309), T(0.999094343801465584353154)};
+    static constexpr T w[28] = {T(0.0555797463065143958462734), T(0.0554079525032451232177934), T(0.0550648959017624257963046), T(0.0545516368708894210617507),
+                              T(0.0538697618657144857089544), T(0.0530213785240107639679916), T(0.0520091091517413998430523), T(0.050836082617798480560124),
+                              T(0.049505924683047578919966), T(0.0480227467936002581207355), T(0.0463911333730018967621902), T(0.0446161276526922832134152),
+                              T(0.0427032160846670865110386), T(0.040658311384744517880125), T(0.0384877342592476624868256), T(0.0361981938723151860358845),
+                              T(0.0337967671156117612954266), T(0.0312908767473104478678355), T(0.0286882684738227417298859), T(0.0259969870583919521918194),
+                              T(0.0232253515625653169372582), T(0.020381929882402572634806), T(0.0174755129114009465049594), T(0.0145150892780214718077707),
+                              T(0.0115098243403833821737728), T(0.00846906316330788766162711), T(0.00540252224601533776131126), T(0.00232385537577321550110228)};
+};
+
+template <class T>
+struct gauss_legendre<64, T> {
+    static constexpr T x[32] = {T(0.0243502926634244325089558), T(0.0729931217877990394495429), T(0.121462819296120554470376), T(0.169644420423992818037314),
+                              T(0.217423643740007084149649), T(0.264687162208767416373964), T(0.311322871990210956157513), T(0.357220158337668115950443),
+                              T(0.402270157963991603695767), T(0.446366017253464087984948), T(0.489403145707052957478526), T(0.531279464019894545658014),
+                              T(0.571895646202634034283878), T(0.611155355172393250248853), T(0.648965471254657339857761), T(0.685236313054233242563558),
+                              T(0.71988185017161082684894), T(0.752819907260531896611864), T(0.783972358943341407610221), T(0.813265315122797559741923),
+                              T(0.840629296252580362751692), T(0.865999398154092819760783), T(0.889315445995114105853404), T(0.910522137078502805756381),
+                              T(0.92956917213193957582149), T(0.946411374858402816062481), T(0.961008799652053718918614), T(0.973326827789910963741854),
+                              T(0.983336253884625956931299), T(0.991013371476744320739382), T(0.996340116771955279346925), T(0.999305041735772139456906)};
+    static constexpr T w[32] = {T(0.0486909570091397203833654), T(0.0485754674415034269347991), T(0.0483447622348029571697695), T(0.0479993885964583077281262),
+                              T(0.0475401657148303086622822), T(0.0469681828162100173253263), T(0.0462847965813144172959532), T(0.045491627927418144479771),
+                              T(0.0445905581637565630601347), T(0.0435837245293234533768279), T(0.0424735151236535890073398), T(0.0412625632426235286101563),
+                              T(0.0399537411327203413866569), T(0.0385501531786156291289625), T(0.0370551285402400460404151), T(0.0354722132568823838106931),
+                              T(0.0338051618371416093915655), T(0.0320579283548515535854675), T(0.0302346570724024788679741), T(0.0283396726142594832275113),
+                              T(0.0263774697150546586716918), T(0.0243527025687108733381776), T(0.0222701738083832541592983), T(0.0201348231535302093723403),
+                              T(0.0179517157756973430850453), T(0.015726030476024719321966), T(0.0134630478967186425980608), T(0.0111681394601311288185905),
+                              T(0.00884675982636394772303091), T(0.00650445796897836285611736), T(0.00414703326056246763528754), T(0.00178328072169643294729608)};
+};
+
 /// q[i] = sqrt(q[i]) for non-negative q: two at a time with SSE2 for
 /// double (std::sqrt keeps errno semantics, which stops the compiler from
 /// vectorizing it).
@@ -187,13 +256,26 @@ T gauss_length_n(const cubic_segment<D, T>& s, T a, T b) noexcept {
     return sum * r;
 }
 
+/// The rules the fast path chooses from, by points: every fourth up to 48,
+/// then 56 and 64.
+inline constexpr int rule_sizes[] = {8, 12, 16, 20, 24, 28, 32, 36, 40, 44, 48, 56, 64};
+inline constexpr int rule_count = int(std::size(rule_sizes));
 /// The most points of a rule the fast path uses.
-inline constexpr int max_rule = 48;
+inline constexpr int max_rule = rule_sizes[rule_count - 1];
+static_assert([] {
+    for (int n : rule_sizes)
+        if (n % 4 != 0) return false;  // choose_rule_lanes steps by rho^8
+    return true;
+}());
 
-/// Integral of the speed by a rule chosen at run time (8, 12, ..., 32, 40, 48).
+/// Integral of the speed by a rule of rule_sizes chosen at run time.
 template <std::size_t D, class T>
 T gauss_length_rule(const cubic_segment<D, T>& s, T a, T b, int n) noexcept {
     switch (n) {
+        case 36: return gauss_length_n<36>(s, a, b);
+        case 44: return gauss_length_n<44>(s, a, b);
+        case 56: return gauss_length_n<56>(s, a, b);
+        case 64: return gauss_length_n<64>(s, a, b);
         case 12: return gauss_length_n<12>(s, a, b);
         case 16: return gauss_length_n<16>(s, a, b);
         case 20: return gauss_length_n<20>(s, a, b);
@@ -206,11 +288,14 @@ T gauss_length_rule(const cubic_segment<D, T>& s, T a, T b, int n) noexcept {
     }
 }
 
-/// The speed squared of a segment as scalars: q(u) = |P(u)|^2 in the power
-/// basis, with |A|, |B| and |C| for the bound.
+/// The speed squared of a segment as scalars: q(u) = |P(u)|^2 and
+/// |P'(u)|^2 = |B + 2 C u|^2 in the power basis, |C|, and the relative
+/// rounding of those coefficients (for the bound's slack).
 struct speed_model {
     std::array<double, 5> q{};
-    double a_norm = 0, b_norm = 0, c_norm = 0;
+    std::array<double, 3> dq{};  ///< |P'(u)|^2 = dq[0] + dq[1] u + dq[2] u^2
+    double c_norm = 0;           ///< |C|, rounded up
+    double err = 0;              ///< rounding of q and dq relative to |A|^2 + |B|^2 u^2 + |C|^2 u^4
 
     speed_model() = default;
     template <std::size_t D, class T>
@@ -221,8 +306,15 @@ struct speed_model {
             AA += A * A, AB += A * B, AC += A * C, BB += B * B, BC += B * C, CC += C * C;
         }
         q[0] = AA, q[1] = 2 * AB, q[2] = BB + 2 * AC, q[3] = 2 * BC, q[4] = CC;
-        a_norm = std::sqrt(AA), b_norm = std::sqrt(BB), c_norm = std::sqrt(CC);
+        dq[0] = BB, dq[1] = 4 * BC, dq[2] = 4 * CC;
+        // A sum of D products errs by (D + 1) eps times the sum of their
+        // magnitudes, each |X.Y| <= (|X|^2 + |Y|^2) / 2; Horner at |u| <= 2
+        // adds 8 eps of (|A| + |B| |u| + |C| u^2)^2 <= 3 (|A|^2 + |B|^2 u^2 +
+        // |C|^2 u^4). Ten times that covers both with room.
+        err = 30 * double(D + 9) * std::numeric_limits<double>::epsilon();
+        c_norm = std::sqrt(CC * (1 + err));
     }
+
 };
 
 /// The rule a piece needs (0 when none was proved), the rho that proved it
@@ -285,6 +377,13 @@ using lanes_mask = long long __attribute__((vector_size(8 * lanes_width)));
     return any != 0;
 }
 [[gnu::always_inline]] inline void lanes_clear(lanes_mask& m, const lanes_mask& off) noexcept { m = m & ~off; }
+[[gnu::always_inline]] inline void lanes_add_abs(lanes& acc, const lanes& x) noexcept {
+    acc += lanes(lanes_mask(x) & (lanes_mask{} + 0x7fffffffffffffffLL));
+}
+template <class V>
+[[gnu::always_inline]] inline auto lanes_get(const V& x, int l) noexcept -> std::remove_cvref_t<decltype(x[0])> {
+    return x[l];
+}
 [[gnu::always_inline]] inline void lanes_sqrt(lanes& x) noexcept {
 #if defined(__SSE2__)
     // Two halves in registers (through memory they would stall the AVX2
@@ -309,6 +408,26 @@ using lanes_mask = long long __attribute__((vector_size(8 * lanes_width)));
 [[gnu::always_inline]] inline void lanes_clear(bool& m, bool off) noexcept { m = m && !off; }
 /// x = sqrt(x) (x >= 0), lane by lane.
 [[gnu::always_inline]] inline void lanes_sqrt(double& x) noexcept { x = std::sqrt(x); }
+/// acc += |x|, lane by lane.
+[[gnu::always_inline]] inline void lanes_add_abs(double& acc, double x) noexcept { acc += std::abs(x); }
+/// Lane l of x (x itself for one lane).
+[[gnu::always_inline]] inline double lanes_get(double x, int) noexcept { return x; }
+[[gnu::always_inline]] inline bool lanes_get(bool x, int) noexcept { return x; }
+
+/// Upper bounds on |P(m)| and |P'(m)| of a speed_model's segment (their
+/// computed squares plus the rounding speed_model::err covers), for the
+/// bound on |P| over an ellipse about m in [0, 1].
+template <class V>
+[[gnu::always_inline]] inline void middle_norms(const V (&q)[5], const V (&dq)[3], const V& err, const V& m, V& pm,
+                                                V& dpm) noexcept {
+    const V m2 = m * m, zero = m - m;
+    pm = (((q[4] * m + q[3]) * m + q[2]) * m + q[1]) * m + q[0] + err * (q[0] + dq[0] * m2 + dq[2] * m2 * m2);
+    dpm = (dq[2] * m + dq[1]) * m + dq[0] + err * (dq[0] + dq[2] * m2);
+    lanes_set(pm, pm < zero, zero);
+    lanes_set(dpm, dpm < zero, zero);
+    lanes_sqrt(pm);
+    lanes_sqrt(dpm);
+}
 
 /// Newton's iterations at most.
 inline constexpr int branch_newton_steps = 60;
@@ -395,111 +514,51 @@ template <int G, class V, class M>
     }
 }
 
-/// The branch points from a settled Newton root (xr, xi) of the monic
-/// quartic c: false unless the root is off the real axis and the quadratic
-/// left by deflation has a pair off it too (a real root is a zero of the
-/// speed: the slower path cuts there).
-inline bool branch_points_finish(const double (&c)[4], double xr, double xi, branch_points& bp) noexcept {
-    if (!(xi * xi > 1e-18 * (1 + xr * xr + xi * xi))) return false;
+/// The branch points from settled Newton roots (xr, xi) of the monic
+/// quartics c, lane by lane: z[0] = (xr, |xi|), z[1] from the quadratic
+/// left by deflation, and bounds of the deflation's remainder (see
+/// branch_points). ok is false in a lane unless the root is off the real axis and
+/// the quadratic has a pair off it too (a real root is a zero of the speed:
+/// the slower path cuts there).
+template <class V, class M>
+[[gnu::always_inline]] inline void deflate_lanes(const V (&c)[4], const V& xr, const V& xi, V (&zr)[2], V (&zi)[2],
+                                                V (&rem)[4], M& ok) noexcept {
+    const V zero = xr - xr;
     // u^4 + c3 u^3 + c2 u^2 + c1 u + c0 = (u^2 + p u + s)(u^2 + e u + f) + remainder
-    const double p = -2 * xr, s = xr * xr + xi * xi;
-    const double e = c[3] - p, f = c[2] - s - p * e;
-    const double disc = f - e * e / 4;
-    if (!(disc > 1e-18 * (1 + std::abs(f)))) return false;
-    bp.z[0] = std::complex<double>(xr, std::abs(xi));
-    bp.z[1] = std::complex<double>(-e / 2, std::sqrt(disc));
+    const V p = -2 * xr, s = xr * xr + xi * xi;
+    const V e = c[3] - p, f = c[2] - s - p * e;
+    const V disc = f - e * e / 4;
+    V abs_f = zero;
+    lanes_add_abs(abs_f, f);
+    ok = (xi * xi > 1e-18 * (1 + s)) & (disc > 1e-18 * (1 + abs_f));
+    zr[0] = xr, zi[0] = zero, zr[1] = -e / 2, zi[1] = disc;
+    lanes_add_abs(zi[0], xi);
+    lanes_set(zi[1], disc < zero, zero);
+    lanes_sqrt(zi[1]);
     // Each remainder coefficient as computed, plus the rounding of its terms
     // and of p, s, e, f (a few ulps of the largest term: 1e-15 relative).
     const double tol = 1e-15;
-    const double t3 = std::abs(c[3]) + std::abs(p) + std::abs(e);
-    const double t2 = std::abs(c[2]) + std::abs(s) + std::abs(p * e) + std::abs(f);
-    const double t1 = std::abs(c[1]) + std::abs(p * f) + std::abs(s * e);
-    const double t0 = std::abs(c[0]) + std::abs(s * f);
-    bp.rem[3] = std::abs(c[3] - p - e) + tol * t3;
-    bp.rem[2] = std::abs(c[2] - s - p * e - f) + tol * t2;
-    bp.rem[1] = std::abs(c[1] - (p * f + s * e)) + tol * t1;
-    bp.rem[0] = std::abs(c[0] - s * f) + tol * t0;
+    const V pe = p * e, pf = p * f, se = s * e, sf = s * f;
+    const V terms[4][4] = {{c[0], sf, zero, zero}, {c[1], pf, se, zero}, {c[2], s, pe, f}, {c[3], p, e, zero}};
+    const V left[4] = {c[0] - sf, c[1] - (pf + se), c[2] - s - pe - f, c[3] - p - e};
+    for (int k = 0; k < 4; ++k) {
+        V t = zero;
+        for (const V& x : terms[k]) lanes_add_abs(t, x);
+        rem[k] = tol * t;
+        lanes_add_abs(rem[k], left[k]);
+    }
+}
+
+/// deflate_lanes for one root into bp (false, bp unchanged, when it fails).
+inline bool branch_points_finish(const double (&c)[4], double xr, double xi, branch_points& bp) noexcept {
+    double zr[2], zi[2], rem[4];
+    bool ok;
+    deflate_lanes<double, bool>(c, xr, xi, zr, zi, rem, ok);
+    if (!ok) return false;
+    for (int k = 0; k < 2; ++k) bp.z[k] = {zr[k], zi[k]};
+    for (int k = 0; k < 4; ++k) bp.rem[k] = rem[k];
     bp.ok = true;
     return true;
-}
-
-/// speed_branch_points for count <= G W segments in G groups of W lanes of V.
-template <int G, class V, class M>
-[[gnu::always_inline]] inline void branch_points_group(const speed_model* sm, int count, branch_points* out) noexcept {
-    constexpr int W = std::is_same_v<V, double> ? 1 : int(sizeof(V) / sizeof(double));
-    branch_newton<V, M> n[G];
-    for (int g = 0; g < G; ++g) {
-        V q[5] = {};
-        for (int k = 0; k < 5; ++k) {
-            if constexpr (W == 1) q[k] = sm[g < count ? g : 0].q[std::size_t(k)];
-            else
-                for (int l = 0; l < W; ++l) q[k][l] = sm[g * W + l < count ? g * W + l : 0].q[std::size_t(k)];
-        }
-        branch_newton_start(q, n[g]);
-    }
-    branch_newton_run<G>(n);
-    for (int i = 0; i < count && i < G * W; ++i) {
-        const int g = i / W, l = i % W;
-        out[i] = branch_points{};
-        if constexpr (W == 1) {
-            const double cc[4] = {n[g].c[0], n[g].c[1], n[g].c[2], n[g].c[3]};
-            if (n[g].settled) branch_points_finish(cc, n[g].xr, n[g].xi, out[i]);
-        } else {
-            const double cc[4] = {n[g].c[0][l], n[g].c[1][l], n[g].c[2][l], n[g].c[3][l]};
-            if (n[g].settled[l]) branch_points_finish(cc, n[g].xr[l], n[g].xi[l], out[i]);
-        }
-    }
-}
-
-/// speed_branch_points for count segments: two groups of lanes at a time
-/// (one when no more are left), else one segment per lane of double
-/// without the vector extension. The same bits either way. Inlined into
-/// the baseline function and into its AVX2 clone (detail/x86_kernels.hpp).
-[[gnu::always_inline]] inline void branch_points_all(const speed_model* sm, int count, branch_points* out) noexcept {
-#if CRSPLINE_LANES4
-    using V = lanes;
-    using M = lanes_mask;
-    constexpr int W = lanes_width;
-#else
-    using V = double;
-    using M = bool;
-    constexpr int W = 1;
-#endif
-    for (int i = 0; i < count; i += 2 * W) {
-        const int left = std::min(2 * W, count - i);
-        if (left > W) branch_points_group<2, V, M>(sm + i, left, out + i);
-        else branch_points_group<1, V, M>(sm + i, left, out + i);
-    }
-}
-inline void branch_points_portable(const speed_model* sm, int count, branch_points* out) noexcept {
-    branch_points_all(sm, count, out);
-}
-#if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
-CRSPLINE_TARGET_AVX2 inline void branch_points_avx2(const speed_model* sm, int count, branch_points* out) noexcept {
-    branch_points_all(sm, count, out);
-}
-#endif
-
-/// The complex roots of q (the speed's branch points) of count segments,
-/// one of each conjugate pair, in each segment's local u (out[i].ok false
-/// when q is not a true quartic, when Newton does not settle, or when a
-/// root is numerically real: the speed vanishes there, and the slower path
-/// cuts at it). Newton on the monic quartic, deflation by the pair found,
-/// the other pair from the quadratic left. Four segments side by side: one
-/// segment's Newton steps are a chain of dependent multiplications and
-/// divisions that leaves the processor waiting.
-inline void speed_branch_points(const speed_model* sm, int count, branch_points* out) noexcept {
-#if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
-    if (avx2_enabled()) return branch_points_avx2(sm, count, out);
-#endif
-    branch_points_portable(sm, count, out);
-}
-
-/// speed_branch_points of one segment (the same bits as in a group).
-inline branch_points speed_branch_points(const speed_model& sm) noexcept {
-    branch_points bp;
-    speed_branch_points(&sm, 1, &bp);
-    return bp;
 }
 
 /// Bernstein-ellipse parameter of z for [a, b]: rho + 1/rho is the sum of
@@ -510,11 +569,15 @@ inline double ellipse_parameter(std::complex<double> z, double a, double b) noex
     return s + std::sqrt(std::max(s * s - 1, 0.0));
 }
 
-/// The smallest rule of 8, 12, ..., 32, 40 or 48 points whose error bound on
+/// The smallest rule of rule_sizes (8 to 64 points) whose error bound on
 /// [a, b] is at most eff * length, from the branch points bp: Trefethen's
 /// bound on the Bernstein ellipse E_rho with rho 1% closer to 1 than the
-/// nearest branch point (10% when that fails the test below), and M = |A| +
-/// |B| |u| + |C| |u|^2 >= |P(u)| >= |sqrt q(u)| over that ellipse.
+/// nearest branch point (10% when that fails the test below), and M >=
+/// |P(u)| >= |sqrt q(u)| over that ellipse from P's Taylor expansion about
+/// the middle m of [a, b]: M = |P(m)| + |P'(m)| R + |C| R^2, R = r (rho +
+/// 1/rho) / 2 the ellipse's semi-major axis (pm and dpm bound |P(m)| and
+/// |P'(m)|: middle_norms). (|q(u)| = |P(u).P(u)| <= |P(u)|^2, the Hermitian
+/// norm of the complex vector P(u).)
 ///
 /// Why sqrt q is analytic in E_rho (Rouche). q / q4 = Q + R with Q = (u -
 /// z0)(u - conj z0)(u - z1)(u - conj z1) and R the deflation's remainder
@@ -531,8 +594,8 @@ inline double ellipse_parameter(std::complex<double> z, double a, double b) noex
 /// and whether any, is a count of the rules that fail.
 template <class V, class M>
 [[gnu::always_inline]] inline void choose_rule_lanes(const V& a, const V& b, const V (&zr)[2], const V (&zi)[2],
-                                                     const V (&rem)[4], const V& a_norm, const V& b_norm,
-                                                     const V& c_norm, double eff, const V& length, V& n, V& rho_out,
+                                                     const V (&rem)[4], const V& pm, const V& dpm, const V& c_norm,
+                                                     double eff, const V& length, V& n, V& rho_out,
                                                      V& ratio, V& bound, V& cut) noexcept {
     const V zero = a - a, w = b - a;
     V e[2] = {}, d[4] = {};
@@ -557,11 +620,11 @@ template <class V, class M>
     V amid = mid;
     lanes_set(amid, mid < 0, -mid);
     // rho and the reach of its ellipse for the first margin that passes.
-    V rho = zero, reach = zero;
+    V rho = zero, reach = zero, semi = zero;
     M found = rho_z < rho_z;
     for (double keep : {0.99, 0.9}) {
         const V rk = 1 + keep * (rho_z - 1);
-        const V reach_k = amid + r * (rk + 1 / rk) / 2;
+        const V semi_k = r * (rk + 1 / rk) / 2, reach_k = amid + semi_k;
         const V rem_k = ((rem[3] * reach_k + rem[2]) * reach_k + rem[1]) * reach_k + rem[0];
         // The distances less 1e-12 of the roots' size (|z| <= (1 + |z|^2) / 2),
         // for the rounding of the ellipse parameters and of Q's roots.
@@ -573,27 +636,34 @@ template <class V, class M>
         lanes_clear(pass, found);
         lanes_set(rho, pass, rk);
         lanes_set(reach, pass, reach_k);
+        lanes_set(semi, pass, semi_k);
         found = found | pass;
     }
-    const V M_bound = a_norm + reach * (b_norm + reach * c_norm);
+    // |P(u)| <= |P(m)| + |P'(m)| |u - m| + |C| |u - m|^2, |u - m| <= semi on
+    // the ellipse (the factor covers this sum's rounding).
+    const V M_bound = (pm + semi * (dpm + semi * c_norm)) * (1 + 1e-14);
     // The bound is K / rho^(2n), K = r 64 M / (15 (rho^2 - 1)) = k_num / k_den;
-    // rho^(2n) for n = 8, 12, ..., 32, 40, 48 by products of r8 = rho^8 (no
+    // rho^(2n) for n in rule_sizes by products of r8 = rho^8 (no
     // pow or log); a rule passes when K / rho^(2n) <= eff length.
     const V k_num = r * 64 * M_bound, k_den = 15 * (rho * rho - 1);
     const V r2 = rho * rho, r4 = r2 * r2, r8 = r4 * r4;
     const V scale = k_den * eff * length;
-    V grow[9];
-    grow[0] = r8 * r8;
-    for (int k = 1; k < 7; ++k) grow[k] = grow[k - 1] * r8;  // n = 12 .. 32
-    grow[7] = grow[6] * (r8 * r8), grow[8] = grow[7] * (r8 * r8);  // n = 40, 48
-    constexpr double rules[9] = {8, 12, 16, 20, 24, 28, 32, 40, 48};
-    static_assert(rules[8] == max_rule);
+    // grow[j] = r8^j = rho^(8 j), the rule of n = 4 j points' rho^(2n), by a
+    // tree of products (no long chain of dependent ones).
+    constexpr int P = max_rule / 4 + 1;
+    V grow[P];
+    grow[0] = zero + 1, grow[1] = r8;
+#pragma GCC unroll 32
+    for (int j = 2; j < P; ++j) grow[j] = grow[j / 2] * grow[j - j / 2];
     n = zero, rho_out = zero, ratio = zero, bound = zero;
-    V g = grow[8];
-    for (int k = 9; k-- > 0;) {
-        const M pass = found & (grow[k] * scale >= k_num);
-        lanes_set(n, pass, zero + rules[k]);
-        lanes_set(g, pass, grow[k]);
+    V g = grow[P - 1];
+#pragma GCC unroll 32
+    for (int i = 0; i < rule_count; ++i) {  // the largest first: the smallest that passes stays
+        const int k = rule_count - 1 - i;
+        const V& gk = grow[rule_sizes[k] / 4];
+        const M pass = found & (gk * scale >= k_num);
+        lanes_set(n, pass, zero + rule_sizes[k]);
+        lanes_set(g, pass, gk);
     }
     const M chosen = n > 0;
     lanes_set(rho_out, chosen, rho);
@@ -606,53 +676,13 @@ inline rule_choice choose_rule(const speed_model& sm, const branch_points& bp, d
                                double length) noexcept {
     const double zr[2] = {bp.z[0].real(), bp.z[1].real()}, zi[2] = {bp.z[0].imag(), bp.z[1].imag()};
     const double rem[4] = {bp.rem[0], bp.rem[1], bp.rem[2], bp.rem[3]};
-    double n, rho, ratio, bound, cut;
-    choose_rule_lanes<double, bool>(a, b, zr, zi, rem, sm.a_norm, sm.b_norm, sm.c_norm, eff, length, n, rho, ratio,
-                                    bound, cut);
+    const double q[5] = {sm.q[0], sm.q[1], sm.q[2], sm.q[3], sm.q[4]}, dq[3] = {sm.dq[0], sm.dq[1], sm.dq[2]};
+    double pm, dpm, n, rho, ratio, bound, cut;
+    middle_norms(q, dq, sm.err, a + (b - a) / 2, pm, dpm);
+    choose_rule_lanes<double, bool>(a, b, zr, zi, rem, pm, dpm, sm.c_norm, eff, length, n, rho, ratio, bound, cut);
     rule_choice rc;
     rc.n = int(n), rc.rho = rho, rc.ratio = ratio, rc.bound = bound, rc.cut = cut;
     return rc;
-}
-
-/// The first rule of each of count segments over their whole [0, 1] with
-/// the length estimated as half the speed at the middle (the estimate is
-/// checked against the computed length after), four at a time; the same
-/// bits as first_rule(sm[i], bp[i], 0, 1, eff) one by one.
-template <class V, class M>
-[[gnu::always_inline]] inline void first_rules_group(const speed_model* sm, const branch_points* bp, int count,
-                                                     double eff, rule_choice* out) noexcept {
-    constexpr int W = sizeof(V) / sizeof(double);
-    // The inputs lane by lane in plain arrays, then as lanes (lane l holds
-    // segment l, or segment 0 again past count).
-    constexpr int F = 17;  // zr[2], zi[2], rem[4], a_norm, b_norm, c_norm, q[5]
-    double t[F][W];
-    for (int l = 0; l < W; ++l) {
-        const int i = l < count ? l : 0;
-        const double f[F] = {bp[i].z[0].real(), bp[i].z[1].real(), bp[i].z[0].imag(), bp[i].z[1].imag(),
-                             bp[i].rem[0],      bp[i].rem[1],      bp[i].rem[2],      bp[i].rem[3],
-                             sm[i].a_norm,      sm[i].b_norm,      sm[i].c_norm,      sm[i].q[0],
-                             sm[i].q[1],        sm[i].q[2],        sm[i].q[3],        sm[i].q[4],
-                             0};
-        for (int k = 0; k < F; ++k) t[k][l] = f[k];
-    }
-    V v[F];
-    static_assert(sizeof(V) == sizeof(t[0]));
-    std::memcpy(v, t, sizeof v);
-    const V zr[2] = {v[0], v[1]}, zi[2] = {v[2], v[3]}, rem[4] = {v[4], v[5], v[6], v[7]};
-    const V &an = v[8], &bn = v[9], &cn = v[10], (&q)[5] = reinterpret_cast<const V(&)[5]>(v[11]);
-    const V zero = an - an, one = zero + 1;
-    V speed2 = (((q[4] * 0.5 + q[3]) * 0.5 + q[2]) * 0.5 + q[1]) * 0.5 + q[0];
-    lanes_set(speed2, speed2 < 0, zero);
-    lanes_sqrt(speed2);
-    const V estimate = one * speed2 / 2;
-    V n, rho, ratio, bound, cut;
-    choose_rule_lanes<V, M>(zero, one, zr, zi, rem, an, bn, cn, eff, estimate, n, rho, ratio, bound, cut);
-    for (int l = 0; l < count && l < W; ++l) {
-        rule_choice& rc = out[l];
-        rc = rule_choice{};
-        if (!bp[l].ok || !(estimate[l] > 0)) continue;
-        rc.n = int(n[l]), rc.rho = rho[l], rc.ratio = ratio[l], rc.bound = bound[l], rc.cut = cut[l];
-    }
 }
 
 /// The rule the fast path tries first on [a, b] of a segment: choose_rule
@@ -665,34 +695,145 @@ rule_choice first_rule(const speed_model& sm, const branch_points& bp, T a, T b,
     return estimate > 0 ? choose_rule(sm, bp, double(a), double(b), eff, estimate) : rule_choice{};
 }
 
-/// first_rule over [0, 1] for count segments, four at a time with the
-/// vector extension (first_rules_group), else one by one: the same bits
-/// every way. Inlined into the baseline function and its AVX2 clone.
-[[gnu::always_inline]] inline void first_rules_all(const speed_model* sm, const branch_points* bp, int count,
-                                                   double eff, rule_choice* out) noexcept {
+/// The first pass over count <= G W segments, in G groups of W lanes of V:
+/// the branch points of each (Newton, then deflate_lanes) and, unless rc is
+/// null, its first rule over [0, 1], as first_rule(sm[i], bp[i], 0, 1, eff)
+/// gives it, bit for bit. The segments' numbers go into the lanes from
+/// registers and the results come out lane by lane, with no round trip
+/// through memory in between (a vector loaded from scalars just stored
+/// stalls the processor).
+// (GCC 12 takes the four-lane constructor below for a partial write and
+// warns that the vector's other lanes may be uninitialized; every lane is
+// written.)
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+template <int G, class V, class M>
+[[gnu::always_inline]] inline void first_pass_group(const speed_model* sm, int count, double eff, branch_points* bp,
+                                                    rule_choice* rc) noexcept {
+    constexpr int W = std::is_same_v<V, double> ? 1 : int(sizeof(V) / sizeof(double));
+    // The speed models' fields in lanes: v[g][k] holds field k of group g's
+    // segments (segment 0 again past count): q[0..4], dq[0..2], err, c_norm.
+    constexpr int F = 10;
+    auto field = [](const speed_model& m, int k) {
+        return k < 5 ? m.q[std::size_t(k)] : k < 8 ? m.dq[std::size_t(k - 5)] : k == 8 ? m.err : m.c_norm;
+    };
+    V v[G][F];
+    branch_newton<V, M> n[G];
+    for (int g = 0; g < G; ++g) {
+        for (int k = 0; k < F; ++k) {
+            if constexpr (W == 1) {
+                v[g][k] = field(sm[g < count ? g : 0], k);
+            } else {
+                static_assert(W == 4);
+                const int i = g * W;
+                v[g][k] = V{field(sm[i], k), field(sm[i + 1 < count ? i + 1 : 0], k),
+                            field(sm[i + 2 < count ? i + 2 : 0], k), field(sm[i + 3 < count ? i + 3 : 0], k)};
+            }
+        }
+        branch_newton_start(reinterpret_cast<const V(&)[5]>(v[g][0]), n[g]);
+    }
+    branch_newton_run<G>(n);
+    for (int g = 0; g < G; ++g) {
+        V zr[2], zi[2], rem[4];
+        M ok;
+        deflate_lanes<V, M>(n[g].c, n[g].xr, n[g].xi, zr, zi, rem, ok);
+        ok = ok & n[g].settled;
+        V rn = zr[0] - zr[0], rho = rn, ratio = rn, bound = rn, cut = rn;
+        M chosen = ok;
+        if (rc) {
+            const V(&qg)[5] = reinterpret_cast<const V(&)[5]>(v[g][0]);
+            const V(&dq)[3] = reinterpret_cast<const V(&)[3]>(v[g][5]);
+            const V &err = v[g][8], &cn = v[g][9];
+            const V zero = cn - cn, one = zero + 1, half = zero + 0.5;
+            V pm, dpm;
+            middle_norms(qg, dq, err, half, pm, dpm);
+            // The length estimate: half the speed at the middle.
+            V speed = (((qg[4] * 0.5 + qg[3]) * 0.5 + qg[2]) * 0.5 + qg[1]) * 0.5 + qg[0];
+            lanes_set(speed, speed < zero, zero);
+            lanes_sqrt(speed);
+            const V estimate = one * speed / 2;
+            choose_rule_lanes<V, M>(zero, one, zr, zi, rem, pm, dpm, cn, eff, estimate, rn, rho, ratio, bound, cut);
+            chosen = ok & (estimate > zero);
+        }
+        for (int l = 0; l < W && g * W + l < count; ++l) {
+            const int i = g * W + l;
+            bp[i] = branch_points{};
+            if (lanes_get(ok, l)) {
+                for (int k = 0; k < 2; ++k) bp[i].z[k] = {lanes_get(zr[k], l), lanes_get(zi[k], l)};
+                for (int k = 0; k < 4; ++k) bp[i].rem[k] = lanes_get(rem[k], l);
+                bp[i].ok = true;
+            }
+            if (!rc) continue;
+            rule_choice& r = rc[i];
+            r = rule_choice{};
+            if (!lanes_get(chosen, l)) continue;
+            r.n = int(lanes_get(rn, l)), r.rho = lanes_get(rho, l), r.ratio = lanes_get(ratio, l);
+            r.bound = lanes_get(bound, l), r.cut = lanes_get(cut, l);
+        }
+    }
+}
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
+
+/// first_pass_group over count segments: two groups of lanes at a time (one
+/// when no more are left), else one segment per lane of double without the
+/// vector extension. The same bits either way. Inlined into the baseline
+/// function and into its AVX2 clone (detail/x86_kernels.hpp).
+[[gnu::always_inline]] inline void first_pass_all(const speed_model* sm, int count, double eff, branch_points* bp,
+                                                  rule_choice* rc) noexcept {
 #if CRSPLINE_LANES4
-    for (int i = 0; i < count; i += lanes_width)
-        first_rules_group<lanes, lanes_mask>(sm + i, bp + i, std::min(lanes_width, count - i), eff, out + i);
+    using V = lanes;
+    using M = lanes_mask;
+    constexpr int W = lanes_width;
 #else
-    for (int i = 0; i < count; ++i) out[i] = bp[i].ok ? first_rule(sm[i], bp[i], 0.0, 1.0, eff) : rule_choice{};
+    using V = double;
+    using M = bool;
+    constexpr int W = 1;
 #endif
+    for (int i = 0; i < count; i += 2 * W) {
+        const int left = std::min(2 * W, count - i);
+        rule_choice* r = rc ? rc + i : nullptr;
+        if (left > W) first_pass_group<2, V, M>(sm + i, left, eff, bp + i, r);
+        else first_pass_group<1, V, M>(sm + i, left, eff, bp + i, r);
+    }
 }
-inline void first_rules_portable(const speed_model* sm, const branch_points* bp, int count, double eff,
-                                 rule_choice* out) noexcept {
-    first_rules_all(sm, bp, count, eff, out);
+inline void first_pass_portable(const speed_model* sm, int count, double eff, branch_points* bp,
+                                rule_choice* rc) noexcept {
+    first_pass_all(sm, count, eff, bp, rc);
 }
 #if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
-CRSPLINE_TARGET_AVX2 inline void first_rules_avx2(const speed_model* sm, const branch_points* bp, int count,
-                                                  double eff, rule_choice* out) noexcept {
-    first_rules_all(sm, bp, count, eff, out);
+CRSPLINE_TARGET_AVX2 inline void first_pass_avx2(const speed_model* sm, int count, double eff, branch_points* bp,
+                                                 rule_choice* rc) noexcept {
+    first_pass_all(sm, count, eff, bp, rc);
 }
 #endif
-inline void first_rules(const speed_model* sm, const branch_points* bp, int count, double eff,
-                        rule_choice* out) noexcept {
+
+/// The complex roots of q (the speed's branch points) of count segments,
+/// one of each conjugate pair, in each segment's local u (bp[i].ok false
+/// when q is not a true quartic, when Newton does not settle, or when a
+/// root is numerically real: the speed vanishes there, and the slower path
+/// cuts at it), and unless rc is null the first rule of each over [0, 1].
+/// Newton on the monic quartic, deflation by the pair found, the other pair
+/// from the quadratic left. Several segments side by side: one segment's
+/// Newton steps and rule choice are chains of dependent divisions and
+/// square roots that leave the processor waiting.
+inline void speed_first_pass(const speed_model* sm, int count, double eff, branch_points* bp,
+                             rule_choice* rc) noexcept {
 #if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
-    if (avx2_enabled()) return first_rules_avx2(sm, bp, count, eff, out);
+    if (avx2_enabled()) return first_pass_avx2(sm, count, eff, bp, rc);
 #endif
-    first_rules_portable(sm, bp, count, eff, out);
+    first_pass_portable(sm, count, eff, bp, rc);
+}
+
+/// The branch points of one segment (the same bits as in a group).
+inline branch_points speed_branch_points(const speed_model& sm) noexcept {
+    branch_points bp;
+    speed_first_pass(&sm, 1, 1.0, &bp, nullptr);
+    return bp;
 }
 
 }  // namespace crspline::detail
