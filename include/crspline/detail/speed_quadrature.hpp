@@ -12,13 +12,19 @@
 // inside the nearest of them and proves, by Rouche's theorem with the
 // deflation's remainder, that q has no zero in E_rho, so that sqrt(q) is
 // analytic there, bounded by M = |P(m)| + |P'(m)| R + |C| R^2 (m the piece's
-// middle, R the ellipse's semi-major axis). Gauss-Legendre
-// with n points then errs by at most
-//   r * 64 M / (15 (rho^2 - 1) rho^(2n))
-// (Trefethen, "Is Gauss quadrature better than Clenshaw-Curtis?", SIAM
-// Review 50 (2008), Theorem 4.5), r the piece's half-width; the smallest
-// rule whose bound is below the accuracy times the length it computes is
-// the piece's. Pieces with no rule of at most 64 points proved are cut at
+// middle, R the ellipse's semi-major axis). Gauss-Legendre with n points
+// then errs by at most
+//   r * 2 (2 + 2 / (4 n^2 - 1)) M / ((1 - rho^-2) rho^(2n)),
+// r the piece's half-width. (On [-1, 1], the Chebyshev coefficients of
+// such a function are |a_k| <= 2 M rho^-k (Trefethen, Approximation Theory
+// and Approximation Practice, Theorem 8.1); the rule is exact for T_k with
+// k < 2n and for odd k, and errs on T_k by at most |integral| + sum of
+// weights = 2 / (k^2 - 1) + 2 otherwise; summed over even k >= 2n. This
+// is Trefethen's Theorem 19.3 with 64/15 sharpened for n >= 8, and with
+// the factor 1 / (1 - rho^-2) = rho^2 / (rho^2 - 1) that the form
+// 1 / (rho^2 - 1) of "Is Gauss quadrature better than Clenshaw-Curtis?",
+// SIAM Review 2008, Theorem 4.5, leaves out.) The smallest rule whose bound
+// is below the accuracy times the length it computes is the piece's. Pieces with no rule of at most 64 points proved are cut at
 // the nearest branch point's real part; the few that still fail (speed
 // zeros inside: cusps, folds, tension 1) go to the slower path that cuts
 // at the speed's critical points and singularities.
@@ -294,7 +300,7 @@ T gauss_length_rule(const cubic_segment<D, T>& s, T a, T b, int n) noexcept {
 struct speed_model {
     std::array<double, 5> q{};
     std::array<double, 3> dq{};  ///< |P'(u)|^2 = dq[0] + dq[1] u + dq[2] u^2
-    double c_norm = 0;           ///< |C|, rounded up
+    double cc = 0;               ///< |C|^2, rounded up (its root is taken with the bound's)
     double err = 0;              ///< rounding of q and dq relative to |A|^2 + |B|^2 u^2 + |C|^2 u^4
 
     speed_model() = default;
@@ -312,7 +318,7 @@ struct speed_model {
         // adds 8 eps of (|A| + |B| |u| + |C| u^2)^2 <= 3 (|A|^2 + |B|^2 u^2 +
         // |C|^2 u^4). Ten times that covers both with room.
         err = 30 * double(D + 9) * std::numeric_limits<double>::epsilon();
-        c_norm = std::sqrt(CC * (1 + err));
+        cc = CC * (1 + err);
     }
 
 };
@@ -328,18 +334,20 @@ struct rule_choice {
     double cut = std::numeric_limits<double>::quiet_NaN();
 
     /// The largest sub-interval, as a fraction of the piece, on which the
-    /// 3-point rule is proved by the same rectangle (for short increments
+    /// 3-point rule is proved by the same ellipse (for short increments
     /// inside the piece): a sub-interval of relative width w has rho_w >=
-    /// g / w, g the rectangle's margin beyond the piece in units of its
-    /// half-width, and the 3-point rule meets eff when rho_w^8 >= 4.3 M /
-    /// (eff m) (the bound above with n = 3 and rho_w^2 - 1 >= rho_w^2 / 2).
+    /// g / w, g twice the ellipse's margin beyond the piece in units of its
+    /// half-width, and the 3-point rule meets eff when rho_w^6 >= 4.3 M /
+    /// (eff m) (the bound above with n = 3: r_w 2 (2 + 2/35) M rho_w^-6 /
+    /// (1 - rho_w^-2) <= 8.3 r_w M rho_w^-6 for rho_w^2 >= 2, against eff
+    /// times a length of at least 2 r_w m, m the speed).
     /// For the slower path's pieces (rho == 0), cut for the 8-point rule at
     /// rho_min with rho_min^-16 = eff / 100, the fraction derived in
     /// arc_length_table::t_from_anchor.
     double short_fraction(double eff) const noexcept {
         if (rho == 0) return std::pow(100.0 / eff, -5.0 / 48.0) / 2.2;
         const double g = std::min(rho - 1 / rho, rho + 1 / rho - 2);
-        return g / std::pow(4.3 * ratio / eff, 0.125);
+        return g / std::pow(4.3 * ratio / eff, 1.0 / 6);
     }
 };
 
@@ -414,10 +422,30 @@ template <class V>
 [[gnu::always_inline]] inline double lanes_get(double x, int) noexcept { return x; }
 [[gnu::always_inline]] inline bool lanes_get(bool x, int) noexcept { return x; }
 
+/// Square roots lane by lane for the lanes code below, a template argument
+/// of it: sqrt_baseline is lanes_sqrt (four lanes in two SSE2 instructions
+/// on the x86-64 baseline); sqrt_avx, for the AVX2 clones only, takes four
+/// in one instruction, as fast as one SSE2 one. Both round correctly: the
+/// same bits.
+struct sqrt_baseline {
+    template <class V>
+    [[gnu::always_inline]] static void apply(V& x) noexcept {
+        lanes_sqrt(x);
+    }
+};
+#if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
+struct sqrt_avx {
+    // Not always_inline: the generic code that calls it is inlined into
+    // an AVX2 function first, and this then into that.
+    CRSPLINE_TARGET_AVX2 static void apply(lanes& x) noexcept { x = lanes(_mm256_sqrt_pd(__m256d(x))); }
+    [[gnu::always_inline]] static void apply(double& x) noexcept { x = std::sqrt(x); }
+};
+#endif
+
 /// Upper bounds on |P(m)| and |P'(m)| of a speed_model's segment (their
 /// computed squares plus the rounding speed_model::err covers), for the
 /// bound on |P| over an ellipse about m in [0, 1].
-template <class V>
+template <class V, class S = sqrt_baseline>
 [[gnu::always_inline]] inline void middle_norms(const V (&q)[5], const V (&dq)[3], const V& err, const V& m, V& pm,
                                                 V& dpm) noexcept {
     const V m2 = m * m, zero = m - m;
@@ -425,8 +453,8 @@ template <class V>
     dpm = (dq[2] * m + dq[1]) * m + dq[0] + err * (dq[0] + dq[2] * m2);
     lanes_set(pm, pm < zero, zero);
     lanes_set(dpm, dpm < zero, zero);
-    lanes_sqrt(pm);
-    lanes_sqrt(dpm);
+    S::apply(pm);
+    S::apply(dpm);
 }
 
 /// Newton's iterations at most.
@@ -450,12 +478,13 @@ struct branch_newton {
     M moving, settled;
 };
 
-template <class V, class M>
+template <class V, class M, class S = sqrt_baseline>
 [[gnu::always_inline]] inline void branch_newton_start(const V (&q)[5], branch_newton<V, M>& n) noexcept {
     const V zero = q[0] - q[0];
     const V scale = q[0] + q[2] + q[4];
     n.moving = (q[4] > 1e-12 * scale) & (scale < 1e280) & (q[4] > 1e-280);
-    for (int k = 0; k < 4; ++k) n.c[k] = q[k] / q[4];
+    const V inv4 = 1 / q[4];
+    for (int k = 0; k < 4; ++k) n.c[k] = q[k] * inv4;
     V u = zero, low = q[0];
     for (double v : {0.25, 0.5, 0.75, 1.0}) {
         const V qv = (((q[4] * v + q[3]) * v + q[2]) * v + q[1]) * v + q[0];
@@ -469,10 +498,11 @@ template <class V, class M>
     const M model = (q2h > 0) & (disc > 0);
     V root = zero;
     lanes_set(root, model, disc);
-    lanes_sqrt(root);
+    S::apply(root);
     n.xr = zero + 0.5, n.xi = zero + 0.6;
-    lanes_set(n.xr, model, u - q1 / (2 * q2h));
-    lanes_set(n.xi, model, root / (2 * q2h));
+    const V inv2 = 1 / (2 * q2h);
+    lanes_set(n.xr, model, u - q1 * inv2);
+    lanes_set(n.xi, model, root * inv2);
     n.settled = n.moving;
     lanes_clear(n.settled, n.moving);
 }
@@ -481,20 +511,26 @@ template <class V, class M>
 [[gnu::always_inline]] inline void branch_newton_step(branch_newton<V, M>& n) noexcept {
     const V xr = n.xr, xi = n.xi;
     const V(&c)[4] = n.c;
-    // f = (((x + c3) x + c2) x + c1) x + c0, df = ((4 x + 3 c3) x + 2 c2) x + c1
-    V fr = xr + c[3], fi = xi, dr = 4 * xr + 3 * c[3], di = 4 * xi, t;
+    // f = (((x + c3) x + c2) x + c1) x + c0, df = ((4 x + 3 c3) x + 2 c2) x + c1,
+    // h = f'' / 2 = (6 x + 3 c3) x + c2
+    V fr = xr + c[3], fi = xi, dr = 4 * xr + 3 * c[3], di = 4 * xi, hr = 6 * xr + 3 * c[3], hi = 6 * xi, t;
     t = fr * xr - fi * xi + c[2], fi = fr * xi + fi * xr, fr = t;
     t = dr * xr - di * xi + 2 * c[2], di = dr * xi + di * xr, dr = t;
+    t = hr * xr - hi * xi + c[2], hi = hr * xi + hi * xr, hr = t;
     t = fr * xr - fi * xi + c[1], fi = fr * xi + fi * xr, fr = t;
     t = dr * xr - di * xi + c[1], di = dr * xi + di * xr, dr = t;
     t = fr * xr - fi * xi + c[0], fi = fr * xi + fi * xr, fr = t;
-    const V dd = dr * dr + di * di;
+    // Halley: step = f f' / (f'^2 - f f''/2) = f f' / (f'^2 - f h)
+    const V nr = fr * dr - fi * di, ni = fr * di + fi * dr;
+    const V er = (dr * dr - di * di) - (fr * hr - fi * hi), ei = 2 * dr * di - (fr * hi + fi * hr);
+    const V dd = er * er + ei * ei;
     n.moving = n.moving & (dd > 0);  // a failed lane stops, unsettled
-    const V sr = (fr * dr + fi * di) / dd, si = (fi * dr - fr * di) / dd;
+    const V inv = 1 / dd;
+    const V sr = (nr * er + ni * ei) * inv, si = (ni * er - nr * ei) * inv;
     lanes_set(n.xr, n.moving, xr - sr);
     lanes_set(n.xi, n.moving, xi - si);
     const V step = sr * sr + si * si;
-    const M done = n.moving & ((step <= 1e-12 * (n.xi * n.xi)) | (step <= 1e-32 * (1 + n.xr * n.xr + n.xi * n.xi)));
+    const M done = n.moving & ((step <= 1e-8 * (n.xi * n.xi)) | (step <= 1e-32 * (1 + n.xr * n.xr + n.xi * n.xi)));
     n.settled = n.settled | done;
     lanes_clear(n.moving, done);
 }
@@ -520,7 +556,7 @@ template <int G, class V, class M>
 /// branch_points). ok is false in a lane unless the root is off the real axis and
 /// the quadratic has a pair off it too (a real root is a zero of the speed:
 /// the slower path cuts there).
-template <class V, class M>
+template <class V, class M, class S = sqrt_baseline>
 [[gnu::always_inline]] inline void deflate_lanes(const V (&c)[4], const V& xr, const V& xi, V (&zr)[2], V (&zi)[2],
                                                 V (&rem)[4], M& ok) noexcept {
     const V zero = xr - xr;
@@ -534,7 +570,7 @@ template <class V, class M>
     zr[0] = xr, zi[0] = zero, zr[1] = -e / 2, zi[1] = disc;
     lanes_add_abs(zi[0], xi);
     lanes_set(zi[1], disc < zero, zero);
-    lanes_sqrt(zi[1]);
+    S::apply(zi[1]);
     // Each remainder coefficient as computed, plus the rounding of its terms
     // and of p, s, e, f (a few ulps of the largest term: 1e-15 relative).
     const double tol = 1e-15;
@@ -592,7 +628,7 @@ inline double ellipse_parameter(std::complex<double> z, double a, double b) noex
 /// segments at once (choose_rules), and one piece's with V = double, the
 /// same operations in the same order. No branch on the data: which rule,
 /// and whether any, is a count of the rules that fail.
-template <class V, class M>
+template <class V, class M, class S = sqrt_baseline>
 [[gnu::always_inline]] inline void choose_rule_lanes(const V& a, const V& b, const V (&zr)[2], const V (&zi)[2],
                                                      const V (&rem)[4], const V& pm, const V& dpm, const V& c_norm,
                                                      double eff, const V& length, V& n, V& rho_out,
@@ -603,14 +639,17 @@ template <class V, class M>
         const V y2 = zi[k] * zi[k], da = zr[k] - a, db = zr[k] - b;
         d[k] = da * da + y2, d[2 + k] = db * db + y2;
     }
-    for (V& x : d) lanes_sqrt(x);  // two at a time with SSE2
+    for (V& x : d) S::apply(x);
+    // (Reciprocals once, then products: divisions are the slowest step.)
+    const V inv_w = 1 / w;
     V sq[2] = {};
     for (int k = 0; k < 2; ++k) {
-        e[k] = (d[k] + d[2 + k]) / w, sq[k] = e[k] * e[k] - 1;
+        e[k] = (d[k] + d[2 + k]) * inv_w, sq[k] = e[k] * e[k] - 1;
         lanes_set(sq[k], sq[k] < 0, zero);
-        lanes_sqrt(sq[k]);
+        S::apply(sq[k]);
         e[k] += sq[k];
     }
+    const V inv_e[2] = {1 / e[0], 1 / e[1]};
     const M first = e[0] <= e[1];
     V rho_z = e[1];
     lanes_set(rho_z, first, e[0]);
@@ -623,14 +662,14 @@ template <class V, class M>
     V rho = zero, reach = zero, semi = zero;
     M found = rho_z < rho_z;
     for (double keep : {0.99, 0.9}) {
-        const V rk = 1 + keep * (rho_z - 1);
-        const V semi_k = r * (rk + 1 / rk) / 2, reach_k = amid + semi_k;
+        const V rk = 1 + keep * (rho_z - 1), inv_rk = 1 / rk;
+        const V semi_k = r * (rk + inv_rk) / 2, reach_k = amid + semi_k;
         const V rem_k = ((rem[3] * reach_k + rem[2]) * reach_k + rem[1]) * reach_k + rem[0];
         // The distances less 1e-12 of the roots' size (|z| <= (1 + |z|^2) / 2),
         // for the rounding of the ellipse parameters and of Q's roots.
         const V slack = 1e-12 * (reach_k + 1 + zr[0] * zr[0] + zi[0] * zi[0] + zr[1] * zr[1] + zi[1] * zi[1]);
-        const V d0 = r / 2 * (e[0] - rk) * (1 - 1 / (rk * e[0])) - slack;
-        const V d1 = r / 2 * (e[1] - rk) * (1 - 1 / (rk * e[1])) - slack;
+        const V d0 = r / 2 * (e[0] - rk) * (1 - inv_rk * inv_e[0]) - slack;
+        const V d1 = r / 2 * (e[1] - rk) * (1 - inv_rk * inv_e[1]) - slack;
         const V prod = (d0 * d1) * (d0 * d1);
         M pass = (rk > 1.05) & (d0 > 0) & (d1 > 0) & (rem_k < prod * (1 - 1e-12));
         lanes_clear(pass, found);
@@ -642,11 +681,13 @@ template <class V, class M>
     // |P(u)| <= |P(m)| + |P'(m)| |u - m| + |C| |u - m|^2, |u - m| <= semi on
     // the ellipse (the factor covers this sum's rounding).
     const V M_bound = (pm + semi * (dpm + semi * c_norm)) * (1 + 1e-14);
-    // The bound is K / rho^(2n), K = r 64 M / (15 (rho^2 - 1)) = k_num / k_den;
-    // rho^(2n) for n in rule_sizes by products of r8 = rho^8 (no
-    // pow or log); a rule passes when K / rho^(2n) <= eff length.
-    const V k_num = r * 64 * M_bound, k_den = 15 * (rho * rho - 1);
+    // The bound is K / rho^(2n), K = r 2 (2 + 2/255) M rho^2 / (rho^2 - 1) =
+    // k_num / k_den (2/255 = 2 / (4 n^2 - 1) at n = 8, the smallest rule);
+    // rho^(2n) for n in rule_sizes by products of r8 = rho^8 (no pow or
+    // log); a rule passes when K / rho^(2n) <= eff length.
+    static_assert(rule_sizes[0] == 8);
     const V r2 = rho * rho, r4 = r2 * r2, r8 = r4 * r4;
+    const V k_num = r * (2 * (2 + 2.0 / 255)) * M_bound * r2, k_den = r2 - 1;
     const V scale = k_den * eff * length;
     // grow[j] = r8^j = rho^(8 j), the rule of n = 4 j points' rho^(2n), by a
     // tree of products (no long chain of dependent ones).
@@ -679,7 +720,8 @@ inline rule_choice choose_rule(const speed_model& sm, const branch_points& bp, d
     const double q[5] = {sm.q[0], sm.q[1], sm.q[2], sm.q[3], sm.q[4]}, dq[3] = {sm.dq[0], sm.dq[1], sm.dq[2]};
     double pm, dpm, n, rho, ratio, bound, cut;
     middle_norms(q, dq, sm.err, a + (b - a) / 2, pm, dpm);
-    choose_rule_lanes<double, bool>(a, b, zr, zi, rem, pm, dpm, sm.c_norm, eff, length, n, rho, ratio, bound, cut);
+    choose_rule_lanes<double, bool>(a, b, zr, zi, rem, pm, dpm, std::sqrt(sm.cc), eff, length, n, rho, ratio, bound,
+                                    cut);
     rule_choice rc;
     rc.n = int(n), rc.rho = rho, rc.ratio = ratio, rc.bound = bound, rc.cut = cut;
     return rc;
@@ -709,15 +751,15 @@ rule_choice first_rule(const speed_model& sm, const branch_points& bp, T a, T b,
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
-template <int G, class V, class M>
+template <int G, class V, class M, class S>
 [[gnu::always_inline]] inline void first_pass_group(const speed_model* sm, int count, double eff, branch_points* bp,
                                                     rule_choice* rc) noexcept {
     constexpr int W = std::is_same_v<V, double> ? 1 : int(sizeof(V) / sizeof(double));
     // The speed models' fields in lanes: v[g][k] holds field k of group g's
-    // segments (segment 0 again past count): q[0..4], dq[0..2], err, c_norm.
+    // segments (segment 0 again past count): q[0..4], dq[0..2], err, cc.
     constexpr int F = 10;
     auto field = [](const speed_model& m, int k) {
-        return k < 5 ? m.q[std::size_t(k)] : k < 8 ? m.dq[std::size_t(k - 5)] : k == 8 ? m.err : m.c_norm;
+        return k < 5 ? m.q[std::size_t(k)] : k < 8 ? m.dq[std::size_t(k - 5)] : k == 8 ? m.err : m.cc;
     };
     V v[G][F];
     branch_newton<V, M> n[G];
@@ -732,29 +774,32 @@ template <int G, class V, class M>
                             field(sm[i + 2 < count ? i + 2 : 0], k), field(sm[i + 3 < count ? i + 3 : 0], k)};
             }
         }
-        branch_newton_start(reinterpret_cast<const V(&)[5]>(v[g][0]), n[g]);
+        branch_newton_start<V, M, S>(reinterpret_cast<const V(&)[5]>(v[g][0]), n[g]);
     }
     branch_newton_run<G>(n);
     for (int g = 0; g < G; ++g) {
         V zr[2], zi[2], rem[4];
         M ok;
-        deflate_lanes<V, M>(n[g].c, n[g].xr, n[g].xi, zr, zi, rem, ok);
+        deflate_lanes<V, M, S>(n[g].c, n[g].xr, n[g].xi, zr, zi, rem, ok);
         ok = ok & n[g].settled;
         V rn = zr[0] - zr[0], rho = rn, ratio = rn, bound = rn, cut = rn;
         M chosen = ok;
         if (rc) {
             const V(&qg)[5] = reinterpret_cast<const V(&)[5]>(v[g][0]);
             const V(&dq)[3] = reinterpret_cast<const V(&)[3]>(v[g][5]);
-            const V &err = v[g][8], &cn = v[g][9];
+            const V& err = v[g][8];
+            V cn = v[g][9];
+            S::apply(cn);
             const V zero = cn - cn, one = zero + 1, half = zero + 0.5;
             V pm, dpm;
-            middle_norms(qg, dq, err, half, pm, dpm);
+            middle_norms<V, S>(qg, dq, err, half, pm, dpm);
             // The length estimate: half the speed at the middle.
             V speed = (((qg[4] * 0.5 + qg[3]) * 0.5 + qg[2]) * 0.5 + qg[1]) * 0.5 + qg[0];
             lanes_set(speed, speed < zero, zero);
-            lanes_sqrt(speed);
+            S::apply(speed);
             const V estimate = one * speed / 2;
-            choose_rule_lanes<V, M>(zero, one, zr, zi, rem, pm, dpm, cn, eff, estimate, rn, rho, ratio, bound, cut);
+            choose_rule_lanes<V, M, S>(zero, one, zr, zi, rem, pm, dpm, cn, eff, estimate, rn, rho, ratio, bound,
+                                       cut);
             chosen = ok & (estimate > zero);
         }
         for (int l = 0; l < W && g * W + l < count; ++l) {
@@ -783,6 +828,7 @@ template <int G, class V, class M>
 /// when no more are left), else one segment per lane of double without the
 /// vector extension. The same bits either way. Inlined into the baseline
 /// function and into its AVX2 clone (detail/x86_kernels.hpp).
+template <class S>
 [[gnu::always_inline]] inline void first_pass_all(const speed_model* sm, int count, double eff, branch_points* bp,
                                                   rule_choice* rc) noexcept {
 #if CRSPLINE_LANES4
@@ -797,18 +843,18 @@ template <int G, class V, class M>
     for (int i = 0; i < count; i += 2 * W) {
         const int left = std::min(2 * W, count - i);
         rule_choice* r = rc ? rc + i : nullptr;
-        if (left > W) first_pass_group<2, V, M>(sm + i, left, eff, bp + i, r);
-        else first_pass_group<1, V, M>(sm + i, left, eff, bp + i, r);
+        if (left > W) first_pass_group<2, V, M, S>(sm + i, left, eff, bp + i, r);
+        else first_pass_group<1, V, M, S>(sm + i, left, eff, bp + i, r);
     }
 }
 inline void first_pass_portable(const speed_model* sm, int count, double eff, branch_points* bp,
                                 rule_choice* rc) noexcept {
-    first_pass_all(sm, count, eff, bp, rc);
+    first_pass_all<sqrt_baseline>(sm, count, eff, bp, rc);
 }
 #if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
 CRSPLINE_TARGET_AVX2 inline void first_pass_avx2(const speed_model* sm, int count, double eff, branch_points* bp,
                                                  rule_choice* rc) noexcept {
-    first_pass_all(sm, count, eff, bp, rc);
+    first_pass_all<sqrt_avx>(sm, count, eff, bp, rc);
 }
 #endif
 
