@@ -281,7 +281,7 @@ void for_each_length_piece(const cubic_segment<D, T>& s, T a, T b, T acc, F&& em
 /// pieces, in order.
 template <class T, class SegmentAt, class F>
 void for_each_segment_length_piece(std::size_t n, const SegmentAt& segment_at, T acc, F&& emit) {
-    constexpr int L = 8;
+    constexpr int L = 16;
     using segment = std::remove_cvref_t<decltype(segment_at(std::size_t(0)))>;
     const double eff = effective_accuracy(acc);
     segment seg[L];

@@ -385,6 +385,19 @@ using lanes_mask = long long __attribute__((vector_size(8 * lanes_width)));
     return any != 0;
 }
 [[gnu::always_inline]] inline void lanes_clear(lanes_mask& m, const lanes_mask& off) noexcept { m = m & ~off; }
+[[gnu::always_inline]] inline bool lanes_any_not(const lanes_mask& m) noexcept {
+    long long all = -1;
+    for (int l = 0; l < lanes_width; ++l) all &= m[l];
+    return all == 0;
+}
+[[gnu::always_inline]] inline void lanes_count(lanes& acc, const lanes_mask& m) noexcept {
+    const lanes one = acc - acc + 1;
+    acc += lanes(lanes_mask(one) & m);
+}
+template <class F>
+[[gnu::always_inline]] inline void lanes_make(lanes& x, F f) noexcept {
+    x = lanes{f(0), f(1), f(2), f(3)};
+}
 [[gnu::always_inline]] inline void lanes_add_abs(lanes& acc, const lanes& x) noexcept {
     acc += lanes(lanes_mask(x) & (lanes_mask{} + 0x7fffffffffffffffLL));
 }
@@ -414,6 +427,15 @@ template <class V>
 [[gnu::always_inline]] inline bool lanes_any(bool m) noexcept { return m; }
 /// m = m and not off.
 [[gnu::always_inline]] inline void lanes_clear(bool& m, bool off) noexcept { m = m && !off; }
+/// Whether m fails in any lane.
+[[gnu::always_inline]] inline bool lanes_any_not(bool m) noexcept { return !m; }
+/// acc += 1 in the lanes where m holds.
+[[gnu::always_inline]] inline void lanes_count(double& acc, bool m) noexcept { acc += m ? 1 : 0; }
+/// x = the lanes f(0), f(1), ... (built in registers).
+template <class F>
+[[gnu::always_inline]] inline void lanes_make(double& x, F f) noexcept {
+    x = f(0);
+}
 /// x = sqrt(x) (x >= 0), lane by lane.
 [[gnu::always_inline]] inline void lanes_sqrt(double& x) noexcept { x = std::sqrt(x); }
 /// acc += |x|, lane by lane.
@@ -661,13 +683,15 @@ template <class V, class M, class S = sqrt_baseline>
     // rho and the reach of its ellipse for the first margin that passes.
     V rho = zero, reach = zero, semi = zero;
     M found = rho_z < rho_z;
-    for (double keep : {0.99, 0.9}) {
+    // (The roots' size, for the slack below.)
+    const V size = 1 + zr[0] * zr[0] + zi[0] * zi[0] + zr[1] * zr[1] + zi[1] * zi[1];
+    auto try_keep = [&](double keep) {
         const V rk = 1 + keep * (rho_z - 1), inv_rk = 1 / rk;
         const V semi_k = r * (rk + inv_rk) / 2, reach_k = amid + semi_k;
         const V rem_k = ((rem[3] * reach_k + rem[2]) * reach_k + rem[1]) * reach_k + rem[0];
         // The distances less 1e-12 of the roots' size (|z| <= (1 + |z|^2) / 2),
         // for the rounding of the ellipse parameters and of Q's roots.
-        const V slack = 1e-12 * (reach_k + 1 + zr[0] * zr[0] + zi[0] * zi[0] + zr[1] * zr[1] + zi[1] * zi[1]);
+        const V slack = 1e-12 * (reach_k + size);
         const V d0 = r / 2 * (e[0] - rk) * (1 - inv_rk * inv_e[0]) - slack;
         const V d1 = r / 2 * (e[1] - rk) * (1 - inv_rk * inv_e[1]) - slack;
         const V prod = (d0 * d1) * (d0 * d1);
@@ -677,7 +701,11 @@ template <class V, class M, class S = sqrt_baseline>
         lanes_set(reach, pass, reach_k);
         lanes_set(semi, pass, semi_k);
         found = found | pass;
-    }
+    };
+    try_keep(0.99);
+    // The 10% margin only where 1% fails (rarely: never on the walk's
+    // first rules).
+    if (lanes_any_not(found)) try_keep(0.9);
     // |P(u)| <= |P(m)| + |P'(m)| |u - m| + |C| |u - m|^2, |u - m| <= semi on
     // the ellipse (the factor covers this sum's rounding).
     const V M_bound = (pm + semi * (dpm + semi * c_norm)) * (1 + 1e-14);
@@ -840,10 +868,12 @@ template <class S>
     using M = bool;
     constexpr int W = 1;
 #endif
-    for (int i = 0; i < count; i += 2 * W) {
-        const int left = std::min(2 * W, count - i);
+    for (int i = 0; i < count; i += 4 * W) {
+        const int left = std::min(4 * W, count - i);
         rule_choice* r = rc ? rc + i : nullptr;
-        if (left > W) first_pass_group<2, V, M, S>(sm + i, left, eff, bp + i, r);
+        if (left > 3 * W) first_pass_group<4, V, M, S>(sm + i, left, eff, bp + i, r);
+        else if (left > 2 * W) first_pass_group<3, V, M, S>(sm + i, left, eff, bp + i, r);
+        else if (left > W) first_pass_group<2, V, M, S>(sm + i, left, eff, bp + i, r);
         else first_pass_group<1, V, M, S>(sm + i, left, eff, bp + i, r);
     }
 }
