@@ -219,6 +219,15 @@ double effective_accuracy(T acc) noexcept {
 /// Halvings of a piece before the fast path gives it to the slower one.
 inline constexpr int max_depth = 10;
 
+/// Where the fast path cuts [a, b] when rc proves no rule on it: at the
+/// nearest branch point's real part (it then sits at the end of both
+/// halves, where it slows the rule least), else in the middle.
+template <class T>
+T cut_point(const rule_choice& rc, T a, T b) noexcept {
+    const T w = b - a;
+    return rc.cut > double(a + w / 16) && rc.cut < double(b - w / 16) ? T(rc.cut) : a + w / 2;
+}
+
 /// The fast path over [a, b] of segment s, whose speed's branch points are
 /// bp, with rc = first_rule(sm, bp, a, b, eff): the smallest rule proved for
 /// [a, b], else its halves, recursively; slow(a, b) for what it cannot prove.
@@ -232,10 +241,7 @@ void fast_length_pieces(const cubic_segment<D, T>& s, const speed_model& sm, con
             return;
         }
     }
-    // Cut at the nearest branch point's real part (it then sits at the
-    // end of both halves, where it slows the rule least), else halve.
-    const T w = b - a;
-    const T m = rc.cut > double(a + w / 16) && rc.cut < double(b - w / 16) ? T(rc.cut) : a + w / 2;
+    const T m = cut_point(rc, a, b);
     if (depth < max_depth && m > a && m < b) {
         fast_length_pieces(s, sm, bp, a, m, eff, emit, slow, depth + 1, first_rule(sm, bp, a, m, eff));
         fast_length_pieces(s, sm, bp, m, b, eff, emit, slow, depth + 1, first_rule(sm, bp, m, b, eff));
@@ -274,11 +280,13 @@ void for_each_length_piece(const cubic_segment<D, T>& s, T a, T b, T acc, F&& em
 
 /// for_each_length_piece over the whole of segments 0 .. n-1 (segment_at(i)
 /// gives segment i), with the same pieces bit for bit, calling emit(i, u0,
-/// u1, length, rule_choice). Eight segments at a time: their branch points
+/// u1, length, rule_choice). Sixteen segments at a time: their branch points
 /// and first rule choices side by side in vector lanes (speed_first_pass),
-/// since one segment's are chains of dependent divisions and
-/// square roots that leave the processor waiting; then each segment's
-/// pieces, in order.
+/// since one segment's are chains of dependent divisions and square roots
+/// that leave the processor waiting; then the whole of each segment where
+/// its first rule is proved; then the rules of the halves of those cut, side
+/// by side too (piece_rules); then each segment's pieces, in order, as
+/// fast_length_pieces makes them.
 template <class T, class SegmentAt, class F>
 void for_each_segment_length_piece(std::size_t n, const SegmentAt& segment_at, T acc, F&& emit) {
     constexpr int L = 16;
@@ -287,7 +295,11 @@ void for_each_segment_length_piece(std::size_t n, const SegmentAt& segment_at, T
     segment seg[L];
     speed_model sm[L];
     branch_points bp[L];
-    rule_choice rc[L];
+    rule_choice rc[L], half_rc[2 * L];
+    piece_ref half_pieces[2 * L];
+    enum class way : unsigned char { slow, whole, halves };
+    way how[L];
+    T whole[L], cut[L];
     for (std::size_t i0 = 0; i0 < n; i0 += L) {
         const int count = int(std::min<std::size_t>(L, n - i0));
         for (int l = 0; l < count; ++l) {
@@ -295,12 +307,39 @@ void for_each_segment_length_piece(std::size_t n, const SegmentAt& segment_at, T
             sm[l] = speed_model(seg[l]);
         }
         speed_first_pass(sm, count, eff, bp, rc);
+        // fast_length_pieces' first step for each segment over [0, 1].
+        int nh = 0;
+        for (int l = 0; l < count; ++l) {
+            how[l] = way::slow;
+            if (!bp[l].ok) continue;
+            if (rc[l].n) {
+                whole[l] = gauss_length_rule(seg[l], T(0), T(1), rc[l].n);
+                if (rc[l].bound <= eff * double(whole[l])) {
+                    how[l] = way::whole;
+                    continue;
+                }
+            }
+            const T m = cut_point(rc[l], T(0), T(1));
+            if (!(0 < max_depth && m > 0 && m < 1)) continue;
+            how[l] = way::halves, cut[l] = m;
+            half_pieces[nh++] = {&sm[l], &bp[l], 0.0, double(m)};
+            half_pieces[nh++] = {&sm[l], &bp[l], double(m), 1.0};
+        }
+        piece_rules(half_pieces, nh, eff, half_rc);
+        int h = 0;
         for (int l = 0; l < count; ++l) {
             const std::size_t i = i0 + std::size_t(l);
             auto emit_i = [&](T u0, T u1, T len, const rule_choice& r) { emit(i, u0, u1, len, r); };
             auto slow = [&](T u0, T u1) { slow_length_pieces(seg[l], u0, u1, eff, emit_i); };
-            if (bp[l].ok) fast_length_pieces(seg[l], sm[l], bp[l], T(0), T(1), eff, emit_i, slow, 0, rc[l]);
-            else slow(T(0), T(1));
+            switch (how[l]) {
+                case way::whole: emit_i(T(0), T(1), whole[l], rc[l]); break;
+                case way::halves:
+                    fast_length_pieces(seg[l], sm[l], bp[l], T(0), cut[l], eff, emit_i, slow, 1, half_rc[h]);
+                    fast_length_pieces(seg[l], sm[l], bp[l], cut[l], T(1), eff, emit_i, slow, 1, half_rc[h + 1]);
+                    h += 2;
+                    break;
+                case way::slow: slow(T(0), T(1)); break;
+            }
         }
     }
 }

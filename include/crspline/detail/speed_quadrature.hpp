@@ -680,8 +680,9 @@ template <class V, class M, class S = sqrt_baseline>
     const V r = w / 2, mid = a + r;
     V amid = mid;
     lanes_set(amid, mid < 0, -mid);
-    // rho and the reach of its ellipse for the first margin that passes.
-    V rho = zero, reach = zero, semi = zero;
+    // rho and the semi-major axis of its ellipse for the first margin that
+    // passes.
+    V rho = zero, semi = zero;
     M found = rho_z < rho_z;
     // (The roots' size, for the slack below.)
     const V size = 1 + zr[0] * zr[0] + zi[0] * zi[0] + zr[1] * zr[1] + zi[1] * zi[1];
@@ -698,7 +699,6 @@ template <class V, class M, class S = sqrt_baseline>
         M pass = (rk > 1.05) & (d0 > 0) & (d1 > 0) & (rem_k < prod * (1 - 1e-12));
         lanes_clear(pass, found);
         lanes_set(rho, pass, rk);
-        lanes_set(reach, pass, reach_k);
         lanes_set(semi, pass, semi_k);
         found = found | pass;
     };
@@ -756,13 +756,16 @@ inline rule_choice choose_rule(const speed_model& sm, const branch_points& bp, d
 }
 
 /// The rule the fast path tries first on [a, b] of a segment: choose_rule
-/// with the length estimated as half the speed at the middle times the
+/// with the length estimated as half the speed at the middle (as middle_norms bounds it) times the
 /// width (the bound is checked against the computed length after).
 template <class T>
 rule_choice first_rule(const speed_model& sm, const branch_points& bp, T a, T b, double eff) noexcept {
-    const T m = a + (b - a) / 2;
-    const double estimate = double(b - a) * std::sqrt(std::max(horner(sm.q, double(m)), 0.0)) / 2;
-    return estimate > 0 ? choose_rule(sm, bp, double(a), double(b), eff, estimate) : rule_choice{};
+    const double da = double(a), db = double(b);
+    const double q[5] = {sm.q[0], sm.q[1], sm.q[2], sm.q[3], sm.q[4]}, dq[3] = {sm.dq[0], sm.dq[1], sm.dq[2]};
+    double pm, dpm;
+    middle_norms(q, dq, sm.err, da + (db - da) / 2, pm, dpm);
+    const double estimate = (db - da) * pm / 2;
+    return estimate > 0 ? choose_rule(sm, bp, da, db, eff, estimate) : rule_choice{};
 }
 
 /// The first pass over count <= G W segments, in G groups of W lanes of V:
@@ -821,11 +824,9 @@ template <int G, class V, class M, class S>
             const V zero = cn - cn, one = zero + 1, half = zero + 0.5;
             V pm, dpm;
             middle_norms<V, S>(qg, dq, err, half, pm, dpm);
-            // The length estimate: half the speed at the middle.
-            V speed = (((qg[4] * 0.5 + qg[3]) * 0.5 + qg[2]) * 0.5 + qg[1]) * 0.5 + qg[0];
-            lanes_set(speed, speed < zero, zero);
-            S::apply(speed);
-            const V estimate = one * speed / 2;
+            // The length estimate: the width times the speed at the middle
+            // (as bounded by middle_norms).
+            const V estimate = one * pm / 2;
             choose_rule_lanes<V, M, S>(zero, one, zr, zi, rem, pm, dpm, cn, eff, estimate, rn, rho, ratio, bound,
                                        cut);
             chosen = ok & (estimate > zero);
@@ -903,6 +904,95 @@ inline void speed_first_pass(const speed_model* sm, int count, double eff, branc
     if (avx2_enabled()) return first_pass_avx2(sm, count, eff, bp, rc);
 #endif
     first_pass_portable(sm, count, eff, bp, rc);
+}
+
+/// A piece [a, b] of a segment whose branch points are known, for
+/// piece_rules.
+struct piece_ref {
+    const speed_model* sm;
+    const branch_points* bp;  ///< ok
+    double a, b;
+};
+
+/// first_rule for count <= W pieces in the lanes of V, bit for bit.
+template <class V, class M, class S>
+[[gnu::always_inline]] inline void piece_rules_group(const piece_ref* p, int count, double eff,
+                                                     rule_choice* out) noexcept {
+    constexpr int W = std::is_same_v<V, double> ? 1 : int(sizeof(V) / sizeof(double));
+    // Field k of piece l's numbers (piece 0 again past count): a, b, z (4),
+    // rem (4), q (5), dq (3), err, cc.
+    constexpr int F = 20;
+    auto field = [](const piece_ref& r, int k) {
+        const speed_model& m = *r.sm;
+        const branch_points& bp = *r.bp;
+        switch (k) {
+            case 0: return r.a;
+            case 1: return r.b;
+            case 2: return bp.z[0].real();
+            case 3: return bp.z[1].real();
+            case 4: return bp.z[0].imag();
+            case 5: return bp.z[1].imag();
+            case 18: return m.err;
+            case 19: return m.cc;
+            default:
+                return k < 10 ? bp.rem[std::size_t(k - 6)] : k < 15 ? m.q[std::size_t(k - 10)] : m.dq[std::size_t(k - 15)];
+        }
+    };
+    V v[F];
+#pragma GCC unroll 32
+    for (int k = 0; k < F; ++k)
+        lanes_make(v[k], [&](int l) { return field(p[l < count ? l : 0], k); });
+    const V &a = v[0], &b = v[1], &err = v[18];
+    const V(&zr)[2] = reinterpret_cast<const V(&)[2]>(v[2]);
+    const V(&zi)[2] = reinterpret_cast<const V(&)[2]>(v[4]);
+    const V(&rem)[4] = reinterpret_cast<const V(&)[4]>(v[6]);
+    const V(&q)[5] = reinterpret_cast<const V(&)[5]>(v[10]);
+    const V(&dq)[3] = reinterpret_cast<const V(&)[3]>(v[15]);
+    V cn = v[19];
+    S::apply(cn);
+    V pm, dpm, n, rho, ratio, bound, cut;
+    middle_norms<V, S>(q, dq, err, a + (b - a) / 2, pm, dpm);
+    const V estimate = (b - a) * pm / 2;
+    choose_rule_lanes<V, M, S>(a, b, zr, zi, rem, pm, dpm, cn, eff, estimate, n, rho, ratio, bound, cut);
+    const M chosen = estimate > 0;
+    for (int l = 0; l < W && l < count; ++l) {
+        rule_choice& r = out[l];
+        r = rule_choice{};
+        if (!lanes_get(chosen, l)) continue;
+        r.n = int(lanes_get(n, l)), r.rho = lanes_get(rho, l), r.ratio = lanes_get(ratio, l);
+        r.bound = lanes_get(bound, l), r.cut = lanes_get(cut, l);
+    }
+}
+
+/// piece_rules_group over count pieces, W at a time.
+template <class S>
+[[gnu::always_inline]] inline void piece_rules_all(const piece_ref* p, int count, double eff,
+                                                   rule_choice* out) noexcept {
+#if CRSPLINE_LANES4
+    for (int i = 0; i < count; i += lanes_width)
+        piece_rules_group<lanes, lanes_mask, S>(p + i, std::min(lanes_width, count - i), eff, out + i);
+#else
+    for (int i = 0; i < count; ++i) piece_rules_group<double, bool, S>(p + i, 1, eff, out + i);
+#endif
+}
+inline void piece_rules_portable(const piece_ref* p, int count, double eff, rule_choice* out) noexcept {
+    piece_rules_all<sqrt_baseline>(p, count, eff, out);
+}
+#if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
+CRSPLINE_TARGET_AVX2 inline void piece_rules_avx2(const piece_ref* p, int count, double eff,
+                                                  rule_choice* out) noexcept {
+    piece_rules_all<sqrt_avx>(p, count, eff, out);
+}
+#endif
+
+/// first_rule(*p[i].sm, *p[i].bp, p[i].a, p[i].b, eff) for count pieces of
+/// segments (of the same or different segments), several side by side: the
+/// same bits as one by one.
+inline void piece_rules(const piece_ref* p, int count, double eff, rule_choice* out) noexcept {
+#if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
+    if (avx2_enabled()) return piece_rules_avx2(p, count, eff, out);
+#endif
+    piece_rules_portable(p, count, eff, out);
 }
 
 /// The branch points of one segment (the same bits as in a group).
