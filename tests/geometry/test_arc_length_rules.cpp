@@ -65,9 +65,9 @@ TEST(ArcLengthRules, BranchPointsAreTheSpeedsComplexZeros) {
         for (const auto& x : z) {
             std::complex<double> qz = 0, scale = 0;
             for (std::size_t k = 5; k-- > 0;) qz = qz * x + sm.q[k], scale = scale * std::abs(x) + std::abs(sm.q[k]);
-            // Newton stops at a step of 1e-6 of the root's imaginary part, so
-            // the root is good to about 1e-12 of it; q there is far below
-            // 1e-10 of its terms' size.
+            // Halley's method stops at a step of 1e-4 of the root's imaginary
+            // part, so the root is good to about 1e-12 of it (the cube); q
+            // there is far below 1e-10 of its terms' size.
             EXPECT_LE(std::abs(qz), 1e-10 * std::abs(scale)) << "root " << x;
         }
         double rho_fast = std::min(detail::ellipse_parameter(z[0], 0, 1), detail::ellipse_parameter(z[1], 0, 1));
@@ -77,7 +77,7 @@ TEST(ArcLengthRules, BranchPointsAreTheSpeedsComplexZeros) {
         ++checked;
     }
     // Random walks have no zero speed: nearly every segment takes the fast
-    // path (Newton may miss on a rare one, which then takes the slower path).
+    // path (Halley may miss on a rare one, which then takes the slower path).
     EXPECT_GE(checked, c.segment_count() - c.segment_count() / 100);
 }
 

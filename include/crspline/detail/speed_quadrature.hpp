@@ -6,8 +6,8 @@
 // Why the bound holds. With P(u) = C'(u) = A + B u + C u^2 (A = c1,
 // B = 2 c2, C = 3 c3), the speed is sqrt(q), q(u) = P(u).P(u), a quartic
 // with real coefficients; its complex zeros (two conjugate pairs) are the
-// branch points of the speed. speed_branch_points finds them (Newton on q,
-// deflation, a quadratic), four segments at a time in vector lanes.
+// branch points of the speed. speed_first_pass finds them (Halley's method
+// on q, deflation, a quadratic), sixteen segments at a time in vector lanes.
 // choose_rule then takes the Bernstein ellipse E_rho of the piece just
 // inside the nearest of them and proves, by Rouche's theorem with the
 // deflation's remainder, that q has no zero in E_rho, so that sqrt(q) is
@@ -237,9 +237,13 @@ template <int N, class T>
 
 /// Integral of the speed of s over [a, b] by the N-point rule: all nodes
 /// first, then the components (a loop the compiler vectorizes), then the
-/// square roots and the weighted sum.
+/// square roots and the weighted sum. Always inlined: gauss_length_rule
+/// holds every rule's loop in one function, and a loop over segments with
+/// one fixed rule (the benchmark's 16-point baseline) gets the rule in its
+/// body (whether GCC inlined it on its own changed that loop's time by a
+/// third from one build to the next).
 template <int N, std::size_t D, class T>
-T gauss_length_n(const cubic_segment<D, T>& s, T a, T b) noexcept {
+[[gnu::always_inline]] inline T gauss_length_n(const cubic_segment<D, T>& s, T a, T b) noexcept {
     using G = gauss_legendre<N, T>;
     constexpr int H = N / 2;
     const T m = (a + b) / 2, r = (b - a) / 2;
@@ -352,7 +356,7 @@ struct rule_choice {
 };
 
 /// The speed's branch points for one segment as speed_branch_points finds
-/// them: one of each conjugate pair of q's complex roots, z[0] from Newton
+/// them: one of each conjugate pair of q's complex roots, z[0] from Halley
 /// and z[1] from the quadratic left by deflation, with bounds of the
 /// remainder of that deflation (q / q4 - (u^2 + p u + s)(u^2 + e u + f) =
 /// r3 u^3 + r2 u^2 + r1 u + r0, |r_k| <= rem[k], rounding included). The
@@ -479,29 +483,31 @@ template <class V, class S = sqrt_baseline>
     S::apply(dpm);
 }
 
-/// Newton's iterations at most.
-inline constexpr int branch_newton_steps = 60;
+/// Halley's iterations at most.
+inline constexpr int branch_root_steps = 60;
 
 /// The core of speed_branch_points for W segments in the lanes of V (M
 /// its comparison mask): q's coefficients in, the monic quartic's, the root
-/// Newton settled on (xi its imaginary part) and whether it settled out.
-/// Start: a root of q's quadratic Taylor model at the smallest of five
-/// samples of q on [0, 1] (near the closest pair when there is one), else
-/// 0.5 + 0.6 i. Newton then runs until its step is below 1e-6 of the
-/// root's imaginary part (or 1e-16 of its size): the error after such a
-/// step is about its square, and choose_rule checks whatever it gets. The
+/// Halley's method settled on (xi its imaginary part) and whether it
+/// settled out. Start: a root of q's quadratic Taylor model at the smallest
+/// of five samples of q on [0, 1] (near the closest pair when there is
+/// one), else 0.5 + 0.6 i. Halley's method (cubic convergence: 2.9 steps a
+/// segment on a random walk, where Newton took 4.3) then runs until its
+/// step is below 1e-4 of the root's imaginary part (or 1e-16 of its size):
+/// the error after such a step is about its cube, and choose_rule checks
+/// whatever it gets. The
 /// complex arithmetic is written out (std::complex guards its division and
 /// abs() against overflow at several times the cost; the coefficients are
 /// in range, checked first). A lane stops when it settles or fails, so each
 /// segment takes its own steps, whatever the others in its group do.
 template <class V, class M>
-struct branch_newton {
+struct branch_root {
     V c[4], xr, xi;
     M moving, settled;
 };
 
 template <class V, class M, class S = sqrt_baseline>
-[[gnu::always_inline]] inline void branch_newton_start(const V (&q)[5], branch_newton<V, M>& n) noexcept {
+[[gnu::always_inline]] inline void branch_root_start(const V (&q)[5], branch_root<V, M>& n) noexcept {
     const V zero = q[0] - q[0];
     const V scale = q[0] + q[2] + q[4];
     n.moving = (q[4] > 1e-12 * scale) & (scale < 1e280) & (q[4] > 1e-280);
@@ -530,7 +536,7 @@ template <class V, class M, class S = sqrt_baseline>
 }
 
 template <class V, class M>
-[[gnu::always_inline]] inline void branch_newton_step(branch_newton<V, M>& n) noexcept {
+[[gnu::always_inline]] inline void branch_root_step(branch_root<V, M>& n) noexcept {
     const V xr = n.xr, xi = n.xi;
     const V(&c)[4] = n.c;
     // f = (((x + c3) x + c2) x + c1) x + c0, df = ((4 x + 3 c3) x + 2 c2) x + c1,
@@ -560,19 +566,19 @@ template <class V, class M>
 /// G groups of lanes side by side (independent chains the processor
 /// overlaps), each lane until it settles or fails.
 template <int G, class V, class M>
-[[gnu::always_inline]] inline void branch_newton_run(branch_newton<V, M> (&n)[G]) noexcept {
-    for (int it = 0; it < branch_newton_steps; ++it) {
+[[gnu::always_inline]] inline void branch_root_run(branch_root<V, M> (&n)[G]) noexcept {
+    for (int it = 0; it < branch_root_steps; ++it) {
         bool any = false;
         for (int g = 0; g < G; ++g)
             if (lanes_any(n[g].moving)) {
-                branch_newton_step(n[g]);
+                branch_root_step(n[g]);
                 any = true;
             }
         if (!any) break;
     }
 }
 
-/// The branch points from settled Newton roots (xr, xi) of the monic
+/// The branch points from settled Halley roots (xr, xi) of the monic
 /// quartics c, lane by lane: z[0] = (xr, |xi|), z[1] from the quadratic
 /// left by deflation, and bounds of the deflation's remainder (see
 /// branch_points). ok is false in a lane unless the root is off the real axis and
@@ -646,7 +652,7 @@ inline double ellipse_parameter(std::complex<double> z, double a, double b) noex
 /// the ellipse |Q| >= (d0 d1)^2 with those distances, and if |R| <= sum
 /// rem_k |u|^k is below it there, q has as many zeros inside as Q: none.
 ///
-/// Written for lanes (as branch_newton_lanes): the first rules of four
+/// Written for lanes (as branch_root_lanes): the first rules of four
 /// segments at once (choose_rules), and one piece's with V = double, the
 /// same operations in the same order. No branch on the data: which rule,
 /// and whether any, is a count of the rules that fail.
@@ -686,7 +692,11 @@ template <class V, class M, class S = sqrt_baseline>
     M found = rho_z < rho_z;
     // (The roots' size, for the slack below.)
     const V size = 1 + zr[0] * zr[0] + zi[0] * zi[0] + zr[1] * zr[1] + zi[1] * zi[1];
-    auto try_keep = [&](double keep) {
+    // The 10% margin only where 1% fails (rarely: never on the walk's first
+    // rules, and the lanes skip it then). (A loop, not a lambda: GCC may
+    // leave a lambda out of line, outside the AVX2 clone.)
+    for (double keep : {0.99, 0.9}) {
+        if (keep < 0.99 && !lanes_any_not(found)) break;
         const V rk = 1 + keep * (rho_z - 1), inv_rk = 1 / rk;
         const V semi_k = r * (rk + inv_rk) / 2, reach_k = amid + semi_k;
         const V rem_k = ((rem[3] * reach_k + rem[2]) * reach_k + rem[1]) * reach_k + rem[0];
@@ -701,11 +711,7 @@ template <class V, class M, class S = sqrt_baseline>
         lanes_set(rho, pass, rk);
         lanes_set(semi, pass, semi_k);
         found = found | pass;
-    };
-    try_keep(0.99);
-    // The 10% margin only where 1% fails (rarely: never on the walk's
-    // first rules).
-    if (lanes_any_not(found)) try_keep(0.9);
+    }
     // |P(u)| <= |P(m)| + |P'(m)| |u - m| + |C| |u - m|^2, |u - m| <= semi on
     // the ellipse (the factor covers this sum's rounding).
     const V M_bound = (pm + semi * (dpm + semi * c_norm)) * (1 + 1e-14);
@@ -769,7 +775,7 @@ rule_choice first_rule(const speed_model& sm, const branch_points& bp, T a, T b,
 }
 
 /// The first pass over count <= G W segments, in G groups of W lanes of V:
-/// the branch points of each (Newton, then deflate_lanes) and, unless rc is
+/// the branch points of each (Halley, then deflate_lanes) and, unless rc is
 /// null, its first rule over [0, 1], as first_rule(sm[i], bp[i], 0, 1, eff)
 /// gives it, bit for bit. The segments' numbers go into the lanes from
 /// registers and the results come out lane by lane, with no round trip
@@ -793,7 +799,7 @@ template <int G, class V, class M, class S>
         return k < 5 ? m.q[std::size_t(k)] : k < 8 ? m.dq[std::size_t(k - 5)] : k == 8 ? m.err : m.cc;
     };
     V v[G][F];
-    branch_newton<V, M> n[G];
+    branch_root<V, M> n[G];
     for (int g = 0; g < G; ++g) {
         for (int k = 0; k < F; ++k) {
             if constexpr (W == 1) {
@@ -805,9 +811,9 @@ template <int G, class V, class M, class S>
                             field(sm[i + 2 < count ? i + 2 : 0], k), field(sm[i + 3 < count ? i + 3 : 0], k)};
             }
         }
-        branch_newton_start<V, M, S>(reinterpret_cast<const V(&)[5]>(v[g][0]), n[g]);
+        branch_root_start<V, M, S>(reinterpret_cast<const V(&)[5]>(v[g][0]), n[g]);
     }
-    branch_newton_run<G>(n);
+    branch_root_run<G>(n);
     for (int g = 0; g < G; ++g) {
         V zr[2], zi[2], rem[4];
         M ok;
@@ -891,12 +897,12 @@ CRSPLINE_TARGET_AVX2 inline void first_pass_avx2(const speed_model* sm, int coun
 
 /// The complex roots of q (the speed's branch points) of count segments,
 /// one of each conjugate pair, in each segment's local u (bp[i].ok false
-/// when q is not a true quartic, when Newton does not settle, or when a
+/// when q is not a true quartic, when Halley does not settle, or when a
 /// root is numerically real: the speed vanishes there, and the slower path
 /// cuts at it), and unless rc is null the first rule of each over [0, 1].
-/// Newton on the monic quartic, deflation by the pair found, the other pair
-/// from the quadratic left. Several segments side by side: one segment's
-/// Newton steps and rule choice are chains of dependent divisions and
+/// Halley's method on the monic quartic, deflation by the pair found, the
+/// other pair from the quadratic left. Several segments side by side: one
+/// segment's Halley steps and rule choice are chains of dependent divisions and
 /// square roots that leave the processor waiting.
 inline void speed_first_pass(const speed_model* sm, int count, double eff, branch_points* bp,
                              rule_choice* rc) noexcept {
