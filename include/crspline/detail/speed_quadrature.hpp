@@ -24,10 +24,11 @@
 // the factor 1 / (1 - rho^-2) = rho^2 / (rho^2 - 1) that the form
 // 1 / (rho^2 - 1) of "Is Gauss quadrature better than Clenshaw-Curtis?",
 // SIAM Review 2008, Theorem 4.5, leaves out.) The smallest rule whose bound
-// is below the accuracy times the length it computes is the piece's. Pieces with no rule of at most 64 points proved are cut at
-// the nearest branch point's real part; the few that still fail (speed
-// zeros inside: cusps, folds, tension 1) go to the slower path that cuts
-// at the speed's critical points and singularities.
+// is below the accuracy times the length it computes is the piece's.
+// Pieces with no rule of at most 64 points proved are cut at the nearest
+// branch point's real part; the few that still fail (speed zeros inside:
+// cusps, folds, tension 1) go to the slower path that cuts at the speed's
+// critical points and singularities.
 #pragma once
 
 #include <algorithm>
@@ -324,7 +325,6 @@ struct speed_model {
         err = 30 * double(D + 9) * std::numeric_limits<double>::epsilon();
         cc = CC * (1 + err);
     }
-
 };
 
 /// The rule a piece needs (0 when none was proved), the rho that proved it
@@ -396,10 +396,6 @@ using lanes_mask = long long __attribute__((vector_size(8 * lanes_width)));
     for (int l = 0; l < lanes_width; ++l) all &= m[l];
     return all == 0;
 }
-[[gnu::always_inline]] inline void lanes_count(lanes& acc, const lanes_mask& m) noexcept {
-    const lanes one = acc - acc + 1;
-    acc += lanes(lanes_mask(one) & m);
-}
 template <class F>
 [[gnu::always_inline]] inline void lanes_make(lanes& x, F f) noexcept {
     x = lanes{f(0), f(1), f(2), f(3)};
@@ -435,8 +431,6 @@ template <class V>
 [[gnu::always_inline]] inline void lanes_clear(bool& m, bool off) noexcept { m = m && !off; }
 /// Whether m fails in any lane.
 [[gnu::always_inline]] inline bool lanes_any_not(bool m) noexcept { return !m; }
-/// acc += 1 in the lanes where m holds.
-[[gnu::always_inline]] inline void lanes_count(double& acc, bool m) noexcept { acc += m ? 1 : 0; }
 /// x = the lanes f(0), f(1), ... (built in registers).
 template <class F>
 [[gnu::always_inline]] inline void lanes_make(double& x, F f) noexcept {
@@ -488,20 +482,20 @@ template <class V, class S = sqrt_baseline>
 /// Halley's iterations at most.
 inline constexpr int branch_root_steps = 60;
 
-/// The core of speed_branch_points for W segments in the lanes of V (M
-/// its comparison mask): q's coefficients in, the monic quartic's, the root
-/// Halley's method settled on (xi its imaginary part) and whether it
+/// The root finding of speed_first_pass for W segments in the lanes of V
+/// (M its comparison mask): q's coefficients in, the monic quartic's, the
+/// root Halley's method settled on (xi its imaginary part) and whether it
 /// settled out. Start: a root of q's quadratic Taylor model at the smallest
 /// of five samples of q on [0, 1] (near the closest pair when there is
 /// one), else 0.5 + 0.6 i. Halley's method (cubic convergence: 2.9 steps a
 /// segment on a random walk, where Newton took 4.3) then runs until its
 /// step is below 1e-4 of the root's imaginary part (or 1e-16 of its size):
 /// the error after such a step is about its cube, and choose_rule checks
-/// whatever it gets. The
-/// complex arithmetic is written out (std::complex guards its division and
-/// abs() against overflow at several times the cost; the coefficients are
-/// in range, checked first). A lane stops when it settles or fails, so each
-/// segment takes its own steps, whatever the others in its group do.
+/// whatever it gets. The complex arithmetic is written out (std::complex
+/// guards its division and abs() against overflow at several times the
+/// cost; the coefficients are in range, checked first). A lane stops when
+/// it settles or fails, so each segment takes its own steps, whatever the
+/// others in its group do.
 template <class V, class M>
 struct branch_root {
     V c[4], xr, xi;
@@ -583,9 +577,9 @@ template <int G, class V, class M>
 /// The branch points from settled Halley roots (xr, xi) of the monic
 /// quartics c, lane by lane: z[0] = (xr, |xi|), z[1] from the quadratic
 /// left by deflation, and bounds of the deflation's remainder (see
-/// branch_points). ok is false in a lane unless the root is off the real axis and
-/// the quadratic has a pair off it too (a real root is a zero of the speed:
-/// the slower path cuts there).
+/// branch_points). ok is false in a lane unless the root is off the real
+/// axis and the quadratic has a pair off it too (a real root is a zero of
+/// the speed: the slower path cuts there).
 template <class V, class M, class S = sqrt_baseline>
 [[gnu::always_inline]] inline void deflate_lanes(const V (&c)[4], const V& xr, const V& xi, V (&zr)[2], V (&zi)[2],
                                                 V (&rem)[4], M& ok) noexcept {
@@ -654,10 +648,12 @@ inline double ellipse_parameter(std::complex<double> z, double a, double b) noex
 /// the ellipse |Q| >= (d0 d1)^2 with those distances, and if |R| <= sum
 /// rem_k |u|^k is below it there, q has as many zeros inside as Q: none.
 ///
-/// Written for lanes (as branch_root_lanes): the first rules of four
-/// segments at once (choose_rules), and one piece's with V = double, the
-/// same operations in the same order. No branch on the data: which rule,
-/// and whether any, is a count of the rules that fail.
+/// Written for lanes (as branch_root_step): the first rules of four
+/// segments or pieces at once (first_pass_group, piece_rules_group), and
+/// one piece's with V = double (choose_rule), the same operations in the
+/// same order. No branch on the data but one: the 10% margin is tried only
+/// when the 1% one fails in some lane. Which rule, and whether any, is
+/// decided by masks, the largest rule first.
 template <class V, class M, class S = sqrt_baseline>
 [[gnu::always_inline]] inline void choose_rule_lanes(const V& a, const V& b, const V (&zr)[2], const V (&zi)[2],
                                                      const V (&rem)[4], const V& pm, const V& dpm, const V& c_norm,
@@ -764,8 +760,9 @@ inline rule_choice choose_rule(const speed_model& sm, const branch_points& bp, d
 }
 
 /// The rule the fast path tries first on [a, b] of a segment: choose_rule
-/// with the length estimated as half the speed at the middle (as middle_norms bounds it) times the
-/// width (the bound is checked against the computed length after).
+/// with the length estimated as half the speed at the middle (as
+/// middle_norms bounds it) times the width (the bound is checked against
+/// the computed length after).
 template <class T>
 rule_choice first_rule(const speed_model& sm, const branch_points& bp, T a, T b, double eff) noexcept {
     const double da = double(a), db = double(b);
@@ -832,8 +829,8 @@ template <int G, class V, class M, class S>
             const V zero = cn - cn, one = zero + 1, half = zero + 0.5;
             V pm, dpm;
             middle_norms<V, S>(qg, dq, err, half, pm, dpm);
-            // The length estimate: the width times the speed at the middle
-            // (as bounded by middle_norms).
+            // The length estimate, as first_rule's: half the speed at the
+            // middle (as middle_norms bounds it) times the width.
             const V estimate = one * pm / 2;
             choose_rule_lanes<V, M, S>(zero, one, zr, zi, rem, pm, dpm, cn, eff, estimate, rn, rho, ratio, bound,
                                        cut);
@@ -861,10 +858,11 @@ template <int G, class V, class M, class S>
 #pragma GCC diagnostic pop
 #endif
 
-/// first_pass_group over count segments: two groups of lanes at a time (one
-/// when no more are left), else one segment per lane of double without the
-/// vector extension. The same bits either way. Inlined into the baseline
-/// function and into its AVX2 clone (detail/x86_kernels.hpp).
+/// first_pass_group over count segments: up to four groups of lanes at a
+/// time (as many as there are segments left), else one segment per lane of
+/// double without the vector extension. The same bits either way. Inlined
+/// into the baseline function and into its AVX2 clone
+/// (detail/x86_kernels.hpp).
 template <class S>
 [[gnu::always_inline]] inline void first_pass_all(const speed_model* sm, int count, double eff, branch_points* bp,
                                                   rule_choice* rc) noexcept {
@@ -904,8 +902,8 @@ CRSPLINE_TARGET_AVX2 inline void first_pass_avx2(const speed_model* sm, int coun
 /// cuts at it), and unless rc is null the first rule of each over [0, 1].
 /// Halley's method on the monic quartic, deflation by the pair found, the
 /// other pair from the quadratic left. Several segments side by side: one
-/// segment's Halley steps and rule choice are chains of dependent divisions and
-/// square roots that leave the processor waiting.
+/// segment's Halley steps and rule choice are chains of dependent divisions
+/// and square roots that leave the processor waiting.
 inline void speed_first_pass(const speed_model* sm, int count, double eff, branch_points* bp,
                              rule_choice* rc) noexcept {
 #if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
@@ -943,7 +941,9 @@ template <class V, class M, class S>
             case 18: return m.err;
             case 19: return m.cc;
             default:
-                return k < 10 ? bp.rem[std::size_t(k - 6)] : k < 15 ? m.q[std::size_t(k - 10)] : m.dq[std::size_t(k - 15)];
+                return k < 10   ? bp.rem[std::size_t(k - 6)]
+                       : k < 15 ? m.q[std::size_t(k - 10)]
+                                : m.dq[std::size_t(k - 15)];
         }
     };
     V v[F];
