@@ -221,13 +221,23 @@ double effective_accuracy(T acc) noexcept {
 /// Halvings of a piece before the fast path gives it to the slower one.
 inline constexpr int max_depth = 10;
 
-/// Where the fast path cuts [a, b] when rc proves no rule on it: at the
-/// nearest branch point's real part (it then sits at the end of both
-/// halves, where it slows the rule least), else in the middle.
-template <class T>
-T cut_point(const rule_choice& rc, T a, T b) noexcept {
+/// What the fast path does with [a, b] of segment s at a depth of cuts,
+/// given rc = first_rule(sm, bp, a, b, eff): take it whole (len its length
+/// by rc's rule, whose bound holds against it), cut it in two at m (at the
+/// nearest branch point's real part, which then sits at the end of both
+/// halves, where it slows the rule least; else in the middle), or leave it
+/// to the slower path.
+enum class piece_step : unsigned char { slow, whole, halves };
+template <std::size_t D, class T>
+piece_step next_piece_step(const cubic_segment<D, T>& s, const rule_choice& rc, T a, T b, double eff, int depth,
+                           T& len, T& m) noexcept {
+    if (rc.n) {
+        len = gauss_length_rule(s, a, b, rc.n);
+        if (rc.bound <= eff * double(len)) return piece_step::whole;
+    }
     const T w = b - a;
-    return rc.cut > double(a + w / 16) && rc.cut < double(b - w / 16) ? T(rc.cut) : a + w / 2;
+    m = rc.cut > double(a + w / 16) && rc.cut < double(b - w / 16) ? T(rc.cut) : a + w / 2;
+    return depth < max_depth && m > a && m < b ? piece_step::halves : piece_step::slow;
 }
 
 /// The fast path over [a, b] of segment s, whose speed's branch points are
@@ -236,20 +246,15 @@ T cut_point(const rule_choice& rc, T a, T b) noexcept {
 template <std::size_t D, class T, class F, class Slow>
 void fast_length_pieces(const cubic_segment<D, T>& s, const speed_model& sm, const branch_points& bp, T a, T b,
                         double eff, F& emit, Slow& slow, int depth, const rule_choice& rc) {
-    if (rc.n) {
-        const T len = gauss_length_rule(s, a, b, rc.n);
-        if (rc.bound <= eff * double(len)) {
-            emit(a, b, len, rc);
-            return;
-        }
+    T len = 0, m = 0;
+    switch (next_piece_step(s, rc, a, b, eff, depth, len, m)) {
+        case piece_step::whole: emit(a, b, len, rc); break;
+        case piece_step::halves:
+            fast_length_pieces(s, sm, bp, a, m, eff, emit, slow, depth + 1, first_rule(sm, bp, a, m, eff));
+            fast_length_pieces(s, sm, bp, m, b, eff, emit, slow, depth + 1, first_rule(sm, bp, m, b, eff));
+            break;
+        case piece_step::slow: slow(a, b); break;
     }
-    const T m = cut_point(rc, a, b);
-    if (depth < max_depth && m > a && m < b) {
-        fast_length_pieces(s, sm, bp, a, m, eff, emit, slow, depth + 1, first_rule(sm, bp, a, m, eff));
-        fast_length_pieces(s, sm, bp, m, b, eff, emit, slow, depth + 1, first_rule(sm, bp, m, b, eff));
-        return;
-    }
-    slow(a, b);
 }
 
 /// The slower path's pieces of [u0, u1] for emit: cut for the 8-point rule
@@ -299,8 +304,7 @@ void for_each_segment_length_piece(std::size_t n, const SegmentAt& segment_at, T
     branch_points bp[L];
     rule_choice rc[L], half_rc[2 * L];
     piece_ref half_pieces[2 * L];
-    enum class way : unsigned char { slow, whole, halves };
-    way how[L];
+    piece_step how[L];
     T whole[L], cut[L];
     for (std::size_t i0 = 0; i0 < n; i0 += L) {
         const int count = int(std::min<std::size_t>(L, n - i0));
@@ -312,20 +316,10 @@ void for_each_segment_length_piece(std::size_t n, const SegmentAt& segment_at, T
         // fast_length_pieces' first step for each segment over [0, 1].
         int nh = 0;
         for (int l = 0; l < count; ++l) {
-            how[l] = way::slow;
-            if (!bp[l].ok) continue;
-            if (rc[l].n) {
-                whole[l] = gauss_length_rule(seg[l], T(0), T(1), rc[l].n);
-                if (rc[l].bound <= eff * double(whole[l])) {
-                    how[l] = way::whole;
-                    continue;
-                }
-            }
-            const T m = cut_point(rc[l], T(0), T(1));
-            if (!(0 < max_depth && m > 0 && m < 1)) continue;
-            how[l] = way::halves, cut[l] = m;
-            half_pieces[nh++] = {&sm[l], &bp[l], 0.0, double(m)};
-            half_pieces[nh++] = {&sm[l], &bp[l], double(m), 1.0};
+            how[l] = bp[l].ok ? next_piece_step(seg[l], rc[l], T(0), T(1), eff, 0, whole[l], cut[l]) : piece_step::slow;
+            if (how[l] != piece_step::halves) continue;
+            half_pieces[nh++] = {&sm[l], &bp[l], 0.0, double(cut[l])};
+            half_pieces[nh++] = {&sm[l], &bp[l], double(cut[l]), 1.0};
         }
         piece_rules(half_pieces, nh, eff, half_rc);
         int h = 0;
@@ -334,13 +328,13 @@ void for_each_segment_length_piece(std::size_t n, const SegmentAt& segment_at, T
             auto emit_i = [&](T u0, T u1, T len, const rule_choice& r) { emit(i, u0, u1, len, r); };
             auto slow = [&](T u0, T u1) { slow_length_pieces(seg[l], u0, u1, eff, emit_i); };
             switch (how[l]) {
-                case way::whole: emit_i(T(0), T(1), whole[l], rc[l]); break;
-                case way::halves:
+                case piece_step::whole: emit_i(T(0), T(1), whole[l], rc[l]); break;
+                case piece_step::halves:
                     fast_length_pieces(seg[l], sm[l], bp[l], T(0), cut[l], eff, emit_i, slow, 1, half_rc[h]);
                     fast_length_pieces(seg[l], sm[l], bp[l], cut[l], T(1), eff, emit_i, slow, 1, half_rc[h + 1]);
                     h += 2;
                     break;
-                case way::slow: slow(T(0), T(1)); break;
+                case piece_step::slow: slow(T(0), T(1)); break;
             }
         }
     }

@@ -5,6 +5,7 @@
 
 #include <crspline/arc_length.hpp>
 
+#include <algorithm>
 #include <complex>
 #include <utility>
 
@@ -30,9 +31,30 @@ void check_every_rule(std::index_sequence<I...>) {
     (check_rule_exact<detail::rule_sizes[I]>(), ...);
 }
 
+// gauss_length_rule(n) runs the n-point rule itself (a rule missing from its
+// switch would fall back to 8 points), on a curved 3-D segment.
+template <int N>
+void check_rule_dispatch(const cubic_segment<3>& seg, std::size_t& checked) {
+    EXPECT_EQ(detail::gauss_length_rule(seg, 0.0, 1.0, N), detail::gauss_length_n<N>(seg, 0.0, 1.0)) << N << " points";
+    ++checked;
+}
+template <std::size_t... I>
+std::size_t check_every_dispatch(std::index_sequence<I...>) {
+    cubic_segment<3> seg;
+    seg.c1 = P3{{1, 2, -1}}, seg.c2 = P3{{-3, 1, 2}}, seg.c3 = P3{{2, -2, 1}}, seg.h = seg.inv_h = 1;
+    std::size_t checked = 0;
+    (check_rule_dispatch<detail::rule_sizes[I]>(seg, checked), ...);
+    return checked;
+}
+
 TEST(ArcLengthRules, GaussLegendreRulesAreExactToDegree2NMinus1) {
     // Every rule the fast path chooses from.
     check_every_rule(std::make_index_sequence<std::size_t(detail::rule_count)>());
+}
+
+TEST(ArcLengthRules, RuntimeRuleChoiceRunsThatRule) {
+    EXPECT_EQ(check_every_dispatch(std::make_index_sequence<std::size_t(detail::rule_count)>()),
+              std::size_t(detail::rule_count));
 }
 
 std::vector<P3> walk(std::mt19937_64& rng, std::size_t n) {
@@ -155,7 +177,8 @@ TEST(ArcLengthRules, RoucheTestRejectsAWrongRoot) {
         }
     }
     // Two tries per segment; a wrong root often leaves a quadratic with real
-    // roots, which finish() refuses before any rule (944 of 2000 here).
+    // roots, which finish() refuses before any rule (943 of 2000 tries are
+    // left here).
     EXPECT_GE(checked, c.segment_count() / 2);
     // Every wrong root is refused (no rho from it is proved).
     EXPECT_EQ(rejected, checked);
@@ -164,7 +187,8 @@ TEST(ArcLengthRules, RoucheTestRejectsAWrongRoot) {
 TEST(ArcLengthRules, EveryPathGivesTheSameBits) {
     // Segments in groups of lanes (AVX2 where the CPU has it, else the
     // baseline's two-wide instructions) and one at a time: the same pieces,
-    // so the same lengths bit for bit.
+    // so the same lengths bit for bit. Segments cut in two take the lanes
+    // path for their halves' rules too (piece_rules): 60 of the 1002 here.
     CRSPLINE_SEEDED(s, 1604);
     std::mt19937_64 rng(s);
     const catmull_rom<3> c(walk(rng, 1003));
@@ -183,6 +207,12 @@ TEST(ArcLengthRules, EveryPathGivesTheSameBits) {
     }
 #endif
     EXPECT_EQ(checked, c.segment_count());
+    std::vector<int> pieces(c.segment_count());
+    const auto segments = c.segments();
+    detail::for_each_segment_length_piece(
+        c.segment_count(), [&](std::size_t i) { return segments[i]; }, 1e-12,
+        [&](std::size_t i, double, double, double, const detail::rule_choice&) { ++pieces[i]; });
+    EXPECT_GE(std::count_if(pieces.begin(), pieces.end(), [](int p) { return p > 1; }), 20);
 }
 
 }  // namespace

@@ -283,18 +283,18 @@ static_assert([] {
 template <std::size_t D, class T>
 T gauss_length_rule(const cubic_segment<D, T>& s, T a, T b, int n) noexcept {
     switch (n) {
-        case 36: return gauss_length_n<36>(s, a, b);
-        case 44: return gauss_length_n<44>(s, a, b);
-        case 56: return gauss_length_n<56>(s, a, b);
-        case 64: return gauss_length_n<64>(s, a, b);
         case 12: return gauss_length_n<12>(s, a, b);
         case 16: return gauss_length_n<16>(s, a, b);
         case 20: return gauss_length_n<20>(s, a, b);
         case 24: return gauss_length_n<24>(s, a, b);
         case 28: return gauss_length_n<28>(s, a, b);
         case 32: return gauss_length_n<32>(s, a, b);
+        case 36: return gauss_length_n<36>(s, a, b);
         case 40: return gauss_length_n<40>(s, a, b);
+        case 44: return gauss_length_n<44>(s, a, b);
         case 48: return gauss_length_n<48>(s, a, b);
+        case 56: return gauss_length_n<56>(s, a, b);
+        case 64: return gauss_length_n<64>(s, a, b);
         default: return gauss_length_n<8>(s, a, b);
     }
 }
@@ -744,6 +744,16 @@ template <class V, class M, class S = sqrt_baseline>
     lanes_set(bound, chosen, k_num / (k_den * g));
 }
 
+/// Lane l of choose_rule_lanes' outputs as a rule_choice.
+template <class V>
+[[gnu::always_inline]] inline rule_choice lane_rule(const V& n, const V& rho, const V& ratio, const V& bound,
+                                                    const V& cut, int l) noexcept {
+    rule_choice r;
+    r.n = int(lanes_get(n, l)), r.rho = lanes_get(rho, l), r.ratio = lanes_get(ratio, l);
+    r.bound = lanes_get(bound, l), r.cut = lanes_get(cut, l);
+    return r;
+}
+
 /// choose_rule_lanes for one piece.
 inline rule_choice choose_rule(const speed_model& sm, const branch_points& bp, double a, double b, double eff,
                                double length) noexcept {
@@ -754,9 +764,7 @@ inline rule_choice choose_rule(const speed_model& sm, const branch_points& bp, d
     middle_norms(q, dq, sm.err, a + (b - a) / 2, pm, dpm);
     choose_rule_lanes<double, bool>(a, b, zr, zi, rem, pm, dpm, std::sqrt(sm.cc), eff, length, n, rho, ratio, bound,
                                     cut);
-    rule_choice rc;
-    rc.n = int(n), rc.rho = rho, rc.ratio = ratio, rc.bound = bound, rc.cut = cut;
-    return rc;
+    return lane_rule(n, rho, ratio, bound, cut, 0);
 }
 
 /// The rule the fast path tries first on [a, b] of a segment: choose_rule
@@ -844,12 +852,7 @@ template <int G, class V, class M, class S>
                 for (int k = 0; k < 4; ++k) bp[i].rem[k] = lanes_get(rem[k], l);
                 bp[i].ok = true;
             }
-            if (!rc) continue;
-            rule_choice& r = rc[i];
-            r = rule_choice{};
-            if (!lanes_get(chosen, l)) continue;
-            r.n = int(lanes_get(rn, l)), r.rho = lanes_get(rho, l), r.ratio = lanes_get(ratio, l);
-            r.bound = lanes_get(bound, l), r.cut = lanes_get(cut, l);
+            if (rc) rc[i] = lanes_get(chosen, l) ? lane_rule(rn, rho, ratio, bound, cut, l) : rule_choice{};
         }
     }
 }
@@ -963,13 +966,8 @@ template <class V, class M, class S>
     const V estimate = (b - a) * pm / 2;
     choose_rule_lanes<V, M, S>(a, b, zr, zi, rem, pm, dpm, cn, eff, estimate, n, rho, ratio, bound, cut);
     const M chosen = estimate > 0;
-    for (int l = 0; l < W && l < count; ++l) {
-        rule_choice& r = out[l];
-        r = rule_choice{};
-        if (!lanes_get(chosen, l)) continue;
-        r.n = int(lanes_get(n, l)), r.rho = lanes_get(rho, l), r.ratio = lanes_get(ratio, l);
-        r.bound = lanes_get(bound, l), r.cut = lanes_get(cut, l);
-    }
+    for (int l = 0; l < W && l < count; ++l)
+        out[l] = lanes_get(chosen, l) ? lane_rule(n, rho, ratio, bound, cut, l) : rule_choice{};
 }
 
 /// piece_rules_group over count pieces, W at a time.
