@@ -208,7 +208,21 @@ std::vector<length_piece<T>> length_pieces(const cubic_segment<D, T>& s, T a, T 
     T estimate = 0;
     for (const auto& p : coarse) estimate += p.length;
     const T tol = T(eff) * estimate;
-    for (const auto& p : coarse) adapt_length(s, p.u0, p.u1, p.length, tol * (p.u1 - p.u0) / (b - a), 0, out);
+    // The rounding floor: C'(u) = c1 + u (2 c2 + 3 u c3) is computed on [0, 1]
+    // with an absolute error of a few eps (|c1| + 2|c2| + 3|c3|), so a rule's
+    // sum over a piece of width w carries that error times w, and so does
+    // the difference of a piece and its halves (about 8 eps S w; 64 leaves
+    // a margin of 8). Where the speed is that small (a short [a, b] next to
+    // a near-double zero of C', which the fast path hands over after
+    // max_depth halvings), the halves agree no better: without the floor a
+    // tolerance relative to [a, b]'s own tiny length is never met and every
+    // piece is halved to adapt_length's depth limit, 2^48 pieces. The floor
+    // adds at most 64 eps S (b - a) to the length, an error the speed's own
+    // rounding makes anyway.
+    const T S = norm(s.c1) + T(2) * norm(s.c2) + T(3) * norm(s.c3);
+    const T floor = T(64) * std::numeric_limits<T>::epsilon() * S;
+    for (const auto& p : coarse)
+        adapt_length(s, p.u0, p.u1, p.length, std::max(tol * (p.u1 - p.u0) / (b - a), floor * (p.u1 - p.u0)), 0, out);
     return out;
 }
 
@@ -418,7 +432,10 @@ void check_accuracy(T accuracy) {
 
 }  // namespace detail
 
-/// Length of a segment over local [u0, u1] (default the whole segment).
+/// Length of a segment over local [u0, u1] (default the whole segment), to
+/// relative accuracy `accuracy`, give or take the rounding of the speed
+/// itself: at most 64 eps (|c1| + 2 |c2| + 3 |c3|) (u1 - u0) more, which
+/// matters only for a short range where the curve nearly stops.
 template <std::size_t D, class T>
 T arc_length(const cubic_segment<D, T>& s, T u0, T u1, T accuracy = T(default_accuracy)) {
     detail::check_accuracy(accuracy);

@@ -265,6 +265,88 @@ TEST(ArcLength, ZeroSpeedInsideSegments) {
     EXPECT_TRUE(std::isfinite(table.t_at(table.total() / 2)));
 }
 
+// The length of x(u) = c1 u + c2 u^2 + c3 u^3 over [0, 1] in long double:
+// the total variation, the sum of |x(r_k+1) - x(r_k)| between the real roots
+// of x' = c1 + 2 c2 u + 3 c3 u^2 (closed form, none of the arc-length code).
+long double total_variation(long double c1, long double c2, long double c3) {
+    const auto x = [&](long double u) { return ((c3 * u + c2) * u + c1) * u; };
+    std::vector<long double> cuts{0.0L, 1.0L};
+    const long double disc = c2 * c2 - 3 * c3 * c1;  // x' = 0: u = (-c2 -+ sqrt(disc)) / (3 c3)
+    if (c3 != 0 && disc > 0)
+        for (long double sign : {-1.0L, 1.0L}) {
+            const long double r = (-c2 + sign * std::sqrt(disc)) / (3 * c3);
+            if (r > 0 && r < 1) cuts.push_back(r);
+        }
+    std::sort(cuts.begin(), cuts.end());
+    long double tv = 0;
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) tv += std::fabs(x(cuts[k + 1]) - x(cuts[k]));
+    return tv;
+}
+
+TEST(ArcLength, NearDoubleZerosOfTheSpeedEndInFewPieces) {
+    // x'(u) = a ((u - v)^2 - d) with |d| from 1e-4 down to 1e-18: two zeros
+    // of the speed 2 sqrt(d) apart, or a minimum of a d just above zero.
+    // The fast path leaves a short piece around them to the slower one,
+    // where the speed is small enough to be mostly rounding; a tolerance
+    // relative to that piece's own length was then never met, and every
+    // piece was halved to the depth limit (2^48 pieces: std::bad_alloc, or
+    // a hang). In 1-D against the closed-form length, in 2-D (a tiny y
+    // component, no closed form) for the piece count only.
+    CRSPLINE_SEEDED(seed, 312);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> U(0, 1);
+    constexpr double eps = std::numeric_limits<double>::epsilon();
+    std::size_t most_pieces = 0;
+    for (int rep = 0; rep < 400; ++rep) {
+        const double a = std::pow(10.0, 4 * U(rng) - 2) * (U(rng) < 0.5 ? -1 : 1);
+        const double v = 0.05 + 0.9 * U(rng), d = std::pow(10.0, -4 - 14 * U(rng)) * (U(rng) < 0.5 ? -1 : 1);
+        const double e = std::abs(a) * std::pow(10.0, -3 - 14 * U(rng)), w = U(rng);
+        cubic_segment<1> s1;
+        s1.c1[0] = a * (v * v - d);
+        s1.c2[0] = -a * v;
+        s1.c3[0] = a / 3;
+        s1.h = s1.inv_h = 1;
+        cubic_segment<2> s2;
+        s2.c1 = P2{{s1.c1[0], -e * w}};
+        s2.c2 = P2{{s1.c2[0], e / 2}};
+        s2.c3 = P2{{s1.c3[0], 0}};
+        s2.h = s2.inv_h = 1;
+        const double ref = double(total_variation(s1.c1[0], s1.c2[0], s1.c3[0]));
+        // The slower path's rounding floor: 64 eps S per unit width, S =
+        // |c1| + 2 |c2| + 3 |c3| (arc_length.hpp, length_pieces); 16 eps of
+        // the length for the sums' own rounding.
+        const double S = std::abs(s1.c1[0]) + 2 * std::abs(s1.c2[0]) + 3 * std::abs(s1.c3[0]);
+        for (double acc : {1e-6, 1e-12}) {
+            std::size_t n1 = 0, n2 = 0;
+            detail::for_each_length_piece(s1, 0.0, 1.0, acc, [&](double, double, double, const auto&) { ++n1; });
+            detail::for_each_length_piece(s2, 0.0, 1.0, acc, [&](double, double, double, const auto&) { ++n2; });
+            most_pieces = std::max({most_pieces, n1, n2});
+            // Only the pieces at the speed's two zeros and its minimum keep
+            // halving (up to 48 levels, about two pieces a level each, under
+            // 400 in all; today's most is printed below).
+            ASSERT_LE(std::max(n1, n2), 1000u) << "seed " << seed << " rep " << rep << " a " << a << " v " << v
+                                               << " d " << d << " e " << e << " acc " << acc;
+            EXPECT_LE(std::abs(arc_length(s1, acc) - ref), acc * ref + 64 * eps * S + 16 * eps * ref)
+                << "seed " << seed << " rep " << rep << " a " << a << " v " << v << " d " << d << " acc " << acc;
+            EXPECT_TRUE(std::isfinite(arc_length(s2, acc)));
+        }
+    }
+    std::printf("most pieces of a segment: %zu\n", most_pieces);
+    // The case CI met (tests/python/test_many_curves.py, 1-D, uniform,
+    // closed): the segment between the middle two of these points.
+    const std::vector<vec<1>> p{vec<1>{{0.3271848757793794}}, vec<1>{{2.142114485080044}},
+                                vec<1>{{2.5219032697700725}}, vec<1>{{2.13638224680297}}};
+    const catmull_rom<1> c(p, {.alpha = 0.0});
+    const auto& seg = c.segment(1);
+    const double ref = double(total_variation(seg.c1[0], seg.c2[0], seg.c3[0]));
+    EXPECT_NEAR(arc_length(seg), ref, 1e-12 * ref);
+    const arc_length_table<1> table(c);
+    for (int k = 0; k <= 100; ++k) {
+        const double si = table.total() * k / 100;
+        EXPECT_LE(std::abs(table.s_at(table.t_at(si)) - si), 2e-12 * table.total()) << "s " << si;
+    }
+}
+
 TEST(ArcLength, SplinesConstantSpeedAdapterCases) {
     // splines' UnitSpeedAdapter: cumulative length at the knots and the t it
     // found for each s. Its lengths come from scipy quad (SOURCES.md: up to

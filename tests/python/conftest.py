@@ -7,6 +7,7 @@ Run with Debian's interpreter on the built package, e.g.
 import json
 import os
 import pathlib
+import random
 
 import numpy as np
 import pytest
@@ -44,3 +45,21 @@ def magnitude_of(points):
 def crspline():
     import crspline as module
     return module
+
+
+@pytest.fixture
+def seed(request):
+    """A fresh random seed for the test (CRSPLINE_SEED's, when set, to rerun
+    a failure). Every failure's report names it, whatever was raised: a
+    test's own messages only cover its assertions."""
+    value = int(os.environ["CRSPLINE_SEED"]) if "CRSPLINE_SEED" in os.environ else random.randrange(2**32)
+    request.node.crspline_seed = value
+    return value
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_makereport(item, call):
+    report = (yield).get_result()
+    value = getattr(item, "crspline_seed", None)
+    if value is not None and report.failed:
+        report.sections.append(("seed", f"seed {value} (rerun with CRSPLINE_SEED={value})"))

@@ -1,7 +1,6 @@
 """Many curves in one call (crspline.arc_lengths, crspline.tessellate_many):
 the same numbers as the single-curve path, in input order, on several
 threads, with the curve's index in every error."""
-import random
 import threading
 import time
 
@@ -36,8 +35,7 @@ def _polygons(seed, count=300):
     {"alpha": 0.0, "endconditions": "closed"},
     {"alpha": 1.0, "endconditions": "reflect", "tension": 0.3},
 ])
-def test_arc_lengths_match_the_single_curve_path(options):
-    seed = random.randrange(2**32)
+def test_arc_lengths_match_the_single_curve_path(options, seed):
     curves = _polygons(seed)
     one = np.array([crspline.CatmullRom(p, **options).arc_length() for p in curves])
     for workers in (1, 3, None):
@@ -49,8 +47,7 @@ def test_arc_lengths_match_the_single_curve_path(options):
     assert len(set(one.tolist())) == len(curves)  # distinct lengths: an order mix-up could not hide
 
 
-def test_tessellate_many_matches_the_single_curve_path():
-    seed = random.randrange(2**32)
+def test_tessellate_many_matches_the_single_curve_path(seed):
     curves = _polygons(seed, 200)
     many = crspline.tessellate_many(curves, endconditions="closed", workers=4)
     assert len(many) == len(curves)
