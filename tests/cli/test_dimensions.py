@@ -15,8 +15,7 @@ def test_seven_d_matches_catmull_rom_7_exactly():
     assert out["values"] == ref["values"]  # exact: shortest round-trip decimals of the same doubles
 
 
-def test_every_dimension_matches_one_coordinate_at_a_time():
-    seed = random.randrange(2**32)
+def test_every_dimension_matches_one_coordinate_at_a_time(seed):
     rng = random.Random(seed)
     for dim in range(1, 17):
         pts = [[rng.uniform(-5, 5) for _ in range(dim)] for _ in range(5)]

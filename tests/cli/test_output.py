@@ -62,11 +62,10 @@ def test_closed_curve_in_the_svg_figure_ends_with_z():
 # ---------------------------------------------------------------- streaming
 
 
-def test_streamed_eval_matches_single_evaluations_across_chunks(tmp_path):
+def test_streamed_eval_matches_single_evaluations_across_chunks(tmp_path, seed):
     """200,001 parameters (more than a MiB of output, dozens of 4096-value
     chunks): the file, stdout and evaluations of single parameters agree
     exactly, at the chunk boundaries too (the same arithmetic per t)."""
-    seed = random.randrange(2**32)
     rng = random.Random(seed)
     pts = [[rng.uniform(-10, 10), rng.uniform(-10, 10)] for _ in range(50)]
     n = 200_001
@@ -92,11 +91,10 @@ def test_streamed_eval_matches_single_evaluations_across_chunks(tmp_path):
         assert r[1:] == [got["t_of_u"][i]] + got["values"]["0"][i] + got["values"]["1"][i], f"seed {seed}, row {i}"
 
 
-def test_streamed_bezier_on_many_points_matches_small_pieces(tmp_path):
+def test_streamed_bezier_on_many_points_matches_small_pieces(tmp_path, seed):
     """10^5 points: each Bezier segment of the streamed output equals the
     segment computed from a window of the points around it (an interior
     centripetal segment depends on its four points only)."""
-    seed = random.randrange(2**32)
     rng = random.Random(seed)
     n = 100_000
     pts = [[rng.uniform(-1, 1), rng.uniform(-1, 1)] for _ in range(n)]
@@ -484,9 +482,8 @@ def point_dots(svg):
     return out
 
 
-def test_plot_point_markers_shrink_with_density_or_go():
+def test_plot_point_markers_shrink_with_density_or_go(seed):
     few = point_dots(ok(["plot", "-"], json.dumps({"points": P5})))
-    seed = random.randrange(2**32)
     rng = random.Random(seed)
     pts = [[k, rng.uniform(0, 3000)] for k in range(3000)]
     many = point_dots(ok(["plot", "--aspect", "auto", "-"], json.dumps({"points": pts})))

@@ -7,11 +7,14 @@ Run with Debian's interpreter on the built package, e.g.
 import json
 import os
 import pathlib
-import random
+import sys
 
 import numpy as np
 import pytest
 from hypothesis import HealthCheck, settings
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "support"))
+from seed_fixture import pytest_runtest_makereport, seed  # noqa: E402,F401  (the seed fixture)
 
 # Hypothesis: derandomized (the same examples every run, so a failure
 # reproduces), no example database on disk, no deadline on a shared machine.
@@ -46,20 +49,3 @@ def crspline():
     import crspline as module
     return module
 
-
-@pytest.fixture
-def seed(request):
-    """A fresh random seed for the test (CRSPLINE_SEED's, when set, to rerun
-    a failure). Every failure's report names it, whatever was raised: a
-    test's own messages only cover its assertions."""
-    value = int(os.environ["CRSPLINE_SEED"]) if "CRSPLINE_SEED" in os.environ else random.randrange(2**32)
-    request.node.crspline_seed = value
-    return value
-
-
-@pytest.hookimpl(hookwrapper=True)
-def pytest_runtest_makereport(item, call):
-    report = (yield).get_result()
-    value = getattr(item, "crspline_seed", None)
-    if value is not None and report.failed:
-        report.sections.append(("seed", f"seed {value} (rerun with CRSPLINE_SEED={value})"))
