@@ -94,11 +94,13 @@ T paper_eq6_two_sided(T d1, T d2, T d3, double alpha) noexcept {
 
 /// Eq. 8: how far B1 can lie behind B0 (beyond the chord's end),
 /// d2 sqrt(r^2 - r^(4a)) / (3 r^a (1 + r^a)) where r^2 > r^(4a), else 0 (B1
-/// cannot project behind B0: Eq. 7 has no solution).
+/// cannot project behind B0: Eq. 7 has no solution). r^2 - r^(4a) is
+/// computed as r^2 (1 - r^(4a - 2)): at alpha = 1/2 that is exactly 0, as it
+/// is in exact arithmetic, where r * r - pow(r, 2) is 1 ulp of r^2 for some r.
 template <class T>
 T paper_eq8(T d2, T r, double alpha) noexcept {
     const T a = T(alpha);
-    const T v = r * r - std::pow(r, 4 * a);
+    const T v = r * r * (1 - std::pow(r, 4 * a - 2));
     if (!(v > 0)) return T(0);
     return d2 * std::sqrt(v) / (3 * std::pow(r, a) * (1 + std::pow(r, a)));
 }
@@ -676,14 +678,45 @@ curvature_maxima<T> segment_curvature_maxima(const cubic_segment<D, T>& s) {
     m.max = m.start;
     m.max_u = 0;
     if (m.end > m.max) { m.max = m.end; m.max_u = 1; }
-    for (T u : detail::real_roots(crit, T(0), T(1))) {
-        if (!(u > 0 && u < 1)) continue;
-        // A local maximum: larger than its close neighbours.
-        const T k = kappa(u), du = T(1e-6);
-        if (!(k >= kappa(std::max(T(0), u - du)) && k >= kappa(std::min(T(1), u + du)))) continue;
-        m.interior_u.push_back(u);
-        m.interior_value.push_back(k);
-        if (k > m.max) { m.max = k; m.max_u = u; }
+    // The critical points, with the ends: kappa is monotone between
+    // consecutive ones.
+    detail::root_list<T, 10> cp;
+    cp.push_back(T(0));
+    for (T u : detail::real_roots(crit, T(0), T(1)))
+        if (u > cp.back() && u < 1) cp.push_back(u);
+    cp.push_back(T(1));
+    for (std::size_t j = 1; j + 1 < cp.size(); ++j) {
+        // A local maximum: above kappa halfway to the critical points on
+        // either side (where it is monotone in exact arithmetic). Not
+        // compared at a fixed small step: near a near-cusp (speed 1e-5 of
+        // the coefficients' scale) the peak is narrower (1e-6, with kappa
+        // 1e11) than the rounding of crit's roots there (crit is a
+        // difference of terms 1e16 times larger than itself), so the root can
+        // sit on the peak's flank, below a neighbour 1e-6 away.
+        const T lo = cp[j - 1], hi = cp[j + 1], u = cp[j];
+        const T k = kappa(u);
+        if (!(k >= kappa(lo + (u - lo) / 2) && k >= kappa(u + (hi - u) / 2))) continue;
+        // The maximum over (lo, hi), where kappa rises then falls: golden
+        // section, to adjacent doubles (the root alone can miss the peak by
+        // several widths).
+        const T g = T(0.38196601125010515);  // (3 - sqrt 5) / 2
+        T ga = lo, gb = hi, x1 = ga + g * (gb - ga), x2 = gb - g * (gb - ga), f1 = kappa(x1), f2 = kappa(x2);
+        T best = k, best_u = u;
+        for (int it = 0; it < 200 && x1 < x2; ++it) {
+            if (f1 > best) { best = f1; best_u = x1; }
+            if (f2 > best) { best = f2; best_u = x2; }
+            if (f1 < f2) {
+                ga = x1; x1 = x2; f1 = f2; x2 = gb - g * (gb - ga); f2 = kappa(x2);
+            } else {
+                gb = x2; x2 = x1; f2 = f1; x1 = ga + g * (gb - ga); f1 = kappa(x1);
+            }
+        }
+        if (f1 > best) { best = f1; best_u = x1; }
+        if (f2 > best) { best = f2; best_u = x2; }
+        if (!m.interior_u.empty() && best_u == m.interior_u.back()) continue;  // one peak from two roots
+        m.interior_u.push_back(best_u);
+        m.interior_value.push_back(best);
+        if (best > m.max) { m.max = best; m.max_u = best_u; }
     }
     return m;
 }

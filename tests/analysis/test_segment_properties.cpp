@@ -138,12 +138,20 @@ TEST(SegmentProperties, BoundsBracketTheMeasuredDistances) {
                 EXPECT_LE(l1, b.eq8_start + tol) << "segment " << i << " alpha " << alpha;
             }
             if (alpha >= 0.5 && a.projection->bezier[1] > 1 + behind_tol) {
-                EXPECT_LE(l2, b.eq8_end + tol);
+                EXPECT_LE(l2, b.eq8_end + tol) << "segment " << i << " alpha " << alpha;
             }
             if (alpha == 0.5) {
-                EXPECT_LE(a.overshoot[0], tol);
-                EXPECT_LE(a.overshoot[1], tol);
-                EXPECT_NEAR(a.max_chord_distance, a.max_chord_line_distance, tol);
+                // No overshoot: the curve's projection on the chord stays in
+                // [0, 1] (Theorem 3), up to rounding. Not asserted on
+                // a.overshoot, a distance to B0 or B3 of points projecting
+                // beyond them: where the curve meets the chord's end
+                // slowly (B2 projecting at 1 - 1e-8, lambda'(1) = 4e-8), a
+                // root of lambda = 1 is found 1e-8 inside u = 1, its point
+                // then projects beyond 1 by rounding, and its distance to B3
+                // (1e-12 of the scale at seed 1000's segment 6882) counts.
+                EXPECT_GE(a.projection->range[0], -tol / d2) << "segment " << i;
+                EXPECT_LE(a.projection->range[1], 1 + tol / d2) << "segment " << i;
+                EXPECT_NEAR(a.max_chord_distance, a.max_chord_line_distance, tol) << "segment " << i;
             } else if (a.has_cusp() || a.has_self_intersection()) {
                 ++defects[i % 4];
                 for (const auto& [u, v] : a.self_intersection) {
@@ -177,7 +185,7 @@ TEST(SegmentProperties, LoopsAgreeWithAPolylineSearch) {
     std::mt19937_64 rng(seed);
     const std::size_t n = std::size_t(3000 * property_scale());
     const int m = 300;
-    std::size_t checked = 0, loops = 0, crossings = 0;
+    std::size_t checked = 0, loops = 0, crossings = 0, near_cusp_crossings = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const auto p = random_segment(rng);
         const double alpha = std::array{0.0, 0.25, 0.5, 0.75, 1.0}[i % 5];
@@ -195,7 +203,26 @@ TEST(SegmentProperties, LoopsAgreeWithAPolylineSearch) {
                                a.self_intersection[0][0] > 2.0 / m && a.self_intersection[0][1] < 1 - 2.0 / m;
         if (crossed) {
             ++crossings;
-            EXPECT_TRUE(a.has_self_intersection() || a.has_cusp()) << "segment " << i << " alpha " << alpha;
+            // A near-cusp (the curve turns back with a tiny speed, no loop)
+            // can make the polyline cross where the curve does not: its two
+            // legs run within ~sigma^2 / |C''| of each other (sigma the least
+            // speed), while the chords deviate from the arcs by their sagitta,
+            // |C''| / (8 m^2), 1e-6 of the scale. Seed 123's segment 1183 has
+            // sigma = 1.5e-13 of the speed scale, and in 50-digit arithmetic
+            // on its coefficients no C(u) = C(v) (the pair's discriminant is
+            // -250). Those crossings are left out when sigma < 1e-4 of the
+            // largest speed (sampled: an upper bound on sigma), and counted.
+            double least = std::numeric_limits<double>::infinity(), most = 0;
+            for (int k = 0; k <= 20000; ++k) {
+                const double sp = norm(a.segment.du(k / 20000.0, 1));
+                least = std::min(least, sp);
+                most = std::max(most, sp);
+            }
+            if (!(a.has_self_intersection() || a.has_cusp()) && least < 1e-4 * most) {
+                ++near_cusp_crossings;
+            } else {
+                EXPECT_TRUE(a.has_self_intersection() || a.has_cusp()) << "segment " << i << " alpha " << alpha;
+            }
         }
         if (wide_loop) {
             ++loops;
@@ -203,8 +230,14 @@ TEST(SegmentProperties, LoopsAgreeWithAPolylineSearch) {
         }
         ++checked;
     }
-    std::printf("polyline: %zu segments, %zu wide loops, %zu polyline crossings\n", checked, loops, crossings);
-    EXPECT_GT(loops, n / 100);
+    std::printf("polyline: %zu segments, %zu wide loops, %zu polyline crossings (%zu at near-cusps)\n", checked,
+                loops, crossings, near_cusp_crossings);
+    EXPECT_LE(near_cusp_crossings, crossings / 10);  // the exception stays one
+    // About 1% of these segments have a wide loop (32 of 3000 at the
+    // default seed, 22 to 39 at a dozen others: at n / 100 the count was a
+    // coin toss). Half that rate, 15, is over 2.5 standard deviations
+    // below the lowest seen.
+    EXPECT_GT(loops, n / 200);
 }
 
 }  // namespace

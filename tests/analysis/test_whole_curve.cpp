@@ -353,4 +353,50 @@ TEST(Curvature, MaximaAtControlPointsMostlyForCentripetal) {
     EXPECT_GT(centripetal_counterexamples, 0u);  // "not guaranteed"
 }
 
+// Eq. 8 at alpha = 1/2 is r^2 - r^(4 alpha) = 0 for every r: no balls. As
+// r * r - pow(r, 2) it was 1 ulp of r^2 for r = d3 / d2 = 0.3924856784...
+// (glibc's pow at run time; a compiler folding a constant alpha hides it,
+// hence the volatile), a ball of radius 2e-8 d2 at seed 11's rep 282 of
+// the test above.
+TEST(BoundingVolumes, CentripetalEq8IsExactlyZero) {
+    volatile double half = 0.5;
+    EXPECT_EQ(paper_eq8(11.876330952848111, 4.6612898111044041 / 11.876330952848111, double(half)), 0.0);
+    std::mt19937_64 rng(4007);
+    std::uniform_real_distribution<double> e(-6, 6);
+    std::size_t nonzero = 0;
+    for (int k = 0; k < 100000; ++k)
+        if (paper_eq8(1.0, std::pow(10.0, e(rng)), double(half)) != 0.0) ++nonzero;
+    EXPECT_EQ(nonzero, 0u);
+}
+
+// A near-cusp: the least speed is 1.3e-5 of the coefficients' scale, the
+// curvature peaks at 9e10 over a parameter width of about 1e-6, and the
+// root of the degree-7 critical-point polynomial (a difference of terms
+// 1e16 times larger than itself there) lands 5e-6 from the peak, on its
+// flank. segment_curvature_maxima once judged that root no maximum (a
+// neighbour 1e-6 away was higher) and reported 1.53 at u = 0: the chordal
+// segment of seed 33's rep 537 in the test above.
+TEST(Curvature, MaximumOfANearCusp) {
+    cubic_segment<2> s;
+    s.c1 = P2{{-0.053987305576369202, 2.4460193873924179}};
+    s.c2 = P2{{4.5112473509100566, 3.3321881079153002}};
+    s.c3 = P2{{-3.3491867699643514, -3.5153753357232311}};
+    s.h = s.inv_h = 1;
+    const auto m = segment_curvature_maxima(s);
+    // The peak by brute force: the densest grid around it, 1e-9 apart.
+    double peak = 0, peak_u = 0;
+    for (int k = -20000; k <= 20000; ++k) {
+        const double u = 0.89195577 + k * 1e-9;
+        const double kappa = curvature(s, u).value_or(0.0);
+        if (kappa > peak) { peak = kappa; peak_u = u; }
+    }
+    ASSERT_GT(peak, 1e10);
+    // The reported maximum is at least the grid's best, and near it (the
+    // peak is 1e-6 wide; the grid is 1e-9 apart).
+    EXPECT_GE(m.max, peak);
+    EXPECT_NEAR(m.max_u, peak_u, 1e-8);
+    EXPECT_EQ(curvature(s, m.max_u).value_or(0.0), m.max);
+    for (double du : {-1e-9, 1e-9}) EXPECT_LE(curvature(s, m.max_u + du).value_or(0.0), m.max);
+}
+
 }  // namespace
