@@ -59,7 +59,8 @@ TEST(Hermite, ReproducesACubicFromItsExactTangents) {
         // terms of size `scale` (times |t|^3 <= ~30^3 for t): 1e-12 relative.
         const double tol = 1e-12 * std::max(scale, 1.0) * std::pow(1 + std::abs(grid.back()), 3);
         for (int k = 0; k <= 40; ++k) {
-            const double t = grid.front() + (grid.back() - grid.front()) * k / 40;
+            // (k = 40 is the end itself: front + (back - front) can round past it.)
+            const double t = k == 40 ? grid.back() : grid.front() + (grid.back() - grid.front()) * k / 40;
             EXPECT_LE(max_abs(c.evaluate(t) - f.at(t)), tol) << "t = " << t;
             EXPECT_LE(max_abs(c.evaluate(t, 1) - f.dt(t)), tol) << "t = " << t;
             EXPECT_LE(max_abs(c.evaluate(t, 2) - f.dt2(t)), tol) << "t = " << t;
