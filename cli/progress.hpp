@@ -13,6 +13,12 @@
 
 namespace crspline::cli {
 
+/// When the process started (static initialization, before main): the
+/// second counts from here, input reading included, as the person at the
+/// terminal waits it. (Counted from the progress object, a run that spent
+/// 0.6 s reading its input and 0.9 s evaluating showed nothing.)
+inline const std::chrono::steady_clock::time_point process_start = std::chrono::steady_clock::now();
+
 class progress {
 public:
     explicit progress(std::string label) : label_(std::move(label)), on_(::isatty(STDERR_FILENO) == 1) {}
@@ -45,7 +51,7 @@ private:
     using clock = std::chrono::steady_clock;
     std::string label_;
     bool on_, shown_ = false;
-    clock::time_point start_ = clock::now(), last_{};
+    clock::time_point start_ = process_start, last_{};
 };
 
 }  // namespace crspline::cli
