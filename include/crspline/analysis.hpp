@@ -702,17 +702,20 @@ curvature_maxima<T> segment_curvature_maxima(const cubic_segment<D, T>& s) {
         const T g = T(0.38196601125010515);  // (3 - sqrt 5) / 2
         T ga = lo, gb = hi, x1 = ga + g * (gb - ga), x2 = gb - g * (gb - ga), f1 = kappa(x1), f2 = kappa(x2);
         T best = k, best_u = u;
+        auto keep = [&](T x, T f) {
+            if (f > best) { best = f; best_u = x; }
+        };
         for (int it = 0; it < 200 && x1 < x2; ++it) {
-            if (f1 > best) { best = f1; best_u = x1; }
-            if (f2 > best) { best = f2; best_u = x2; }
+            keep(x1, f1);
+            keep(x2, f2);
             if (f1 < f2) {
                 ga = x1; x1 = x2; f1 = f2; x2 = gb - g * (gb - ga); f2 = kappa(x2);
             } else {
                 gb = x2; x2 = x1; f2 = f1; x1 = ga + g * (gb - ga); f1 = kappa(x1);
             }
         }
-        if (f1 > best) { best = f1; best_u = x1; }
-        if (f2 > best) { best = f2; best_u = x2; }
+        keep(x1, f1);
+        keep(x2, f2);
         if (!m.interior_u.empty() && best_u == m.interior_u.back()) continue;  // one peak from two roots
         m.interior_u.push_back(best_u);
         m.interior_value.push_back(best);

@@ -188,6 +188,12 @@ void cut_for_rule(const cubic_segment<D, T>& s, const std::vector<std::complex<d
     cut_for_rule(s, sing, m, b, rho_min, depth + 1, out);
 }
 
+/// The relative accuracy actually aimed at: acc, but not below a few ulps.
+template <class T>
+double effective_accuracy(T acc) noexcept {
+    return std::max(double(acc), 8.0 * double(std::numeric_limits<T>::epsilon()));
+}
+
 /// The pieces of a segment over [a, b] for relative accuracy acc: cut at
 /// the speed's extrema (where its zeros sit), then a priori by the distance
 /// of the speed's singularities, then checked a posteriori: a piece whose
@@ -199,7 +205,7 @@ std::vector<length_piece<T>> length_pieces(const cubic_segment<D, T>& s, T a, T 
     std::vector<T> cuts{a};
     for (T x : speed_critical_points(s, a, b)) cuts.push_back(x);
     cuts.push_back(b);
-    const double eff = std::max(double(acc), 8.0 * double(std::numeric_limits<T>::epsilon()));
+    const double eff = effective_accuracy(acc);
     const double rho_min = std::pow(100.0 / eff, 1.0 / 16.0);
     const auto sing = speed_singularities(s);
     std::vector<length_piece<T>> coarse;
@@ -220,16 +226,11 @@ std::vector<length_piece<T>> length_pieces(const cubic_segment<D, T>& s, T a, T 
     // adds at most 64 eps S (b - a) to the length, an error the speed's own
     // rounding makes anyway.
     const T S = norm(s.c1) + T(2) * norm(s.c2) + T(3) * norm(s.c3);
-    const T floor = T(64) * std::numeric_limits<T>::epsilon() * S;
+    const T rounding_floor = T(64) * std::numeric_limits<T>::epsilon() * S;
     for (const auto& p : coarse)
-        adapt_length(s, p.u0, p.u1, p.length, std::max(tol * (p.u1 - p.u0) / (b - a), floor * (p.u1 - p.u0)), 0, out);
+        adapt_length(s, p.u0, p.u1, p.length,
+                     std::max(tol * (p.u1 - p.u0) / (b - a), rounding_floor * (p.u1 - p.u0)), 0, out);
     return out;
-}
-
-/// The relative accuracy actually aimed at: acc, but not below a few ulps.
-template <class T>
-double effective_accuracy(T acc) noexcept {
-    return std::max(double(acc), 8.0 * double(std::numeric_limits<T>::epsilon()));
 }
 
 /// Halvings of a piece before the fast path gives it to the slower one.
