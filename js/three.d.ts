@@ -12,6 +12,8 @@ export type CurveType = 'centripetal' | 'chordal' | 'catmullrom';
 export class CRSplineCurve3 extends Curve<Vector3> {
   constructor(points?: Vector3[], closed?: boolean, curveType?: CurveType, tension?: number);
   readonly isCRSplineCurve3: true;
+  /** True, as on THREE.CatmullRomCurve3: code that branches on it takes the adapter for that curve. */
+  readonly isCatmullRomCurve3: true;
   points: Vector3[];
   closed: boolean;
   curveType: CurveType;
@@ -20,6 +22,7 @@ export class CRSplineCurve3 extends Curve<Vector3> {
   getPoint(t: number, optionalTarget?: Vector3): Vector3;
   getTangent(t: number, optionalTarget?: Vector3): Vector3;
   getLength(): number;
+  /** three.js' contract: cumulative chord lengths of the divisions-division polyline of getPoint (cached in cacheArcLengths). */
   getLengths(divisions?: number): number[];
   updateArcLengths(): void;
   getUtoTmapping(u: number, distance?: number | null): number;

@@ -14,6 +14,10 @@
 //    (exact derivative, no finite differences);
 //  - getPointAt / getTangentAt / getLength / getUtoTmapping use crspline's
 //    arc length (relative error 1e-12, not a 200-chord table);
+//  - getLengths(divisions) keeps three.js' Curve contract: the cumulative
+//    chord lengths of the `divisions`-division polyline of getPoint, cached
+//    in cacheArcLengths until needsUpdate (code built on three.js reads it as
+//    that polyline, so it is not replaced by exact arc lengths);
 //  - coincident points are handled by the core's rules, not replaced by a
 //    1e-4 constant knot interval.
 // The curve is rebuilt when `points` is a new array or changes length; after
@@ -28,6 +32,9 @@ export class CRSplineCurve3 extends Curve {
   constructor(points = [], closed = false, curveType = 'centripetal', tension = 0.5) {
     super();
     this.isCRSplineCurve3 = true;
+    // As CatmullRomCurve3 sets it: code that branches on the flag (loaders,
+    // serializers, users' own) takes the adapter for the curve it replaces.
+    Object.defineProperty(this, 'isCatmullRomCurve3', { value: true, enumerable: true });
     this.type = 'CRSplineCurve3';
     this.points = points;
     this.closed = closed;
@@ -117,32 +124,41 @@ export class CRSplineCurve3 extends Curve {
 
   getLength() { return this._data().length; }
 
-  /// Arc length at t = k / divisions, k = 0..divisions (crspline's table).
+  /// three.js' Curve.getLengths: the cumulative chord lengths of the
+  /// polyline through getPoint(k / divisions), k = 0..divisions (so its last
+  /// entry falls short of getLength() by the polyline's error). Cached in
+  /// cacheArcLengths as three.js does: the same array comes back until
+  /// `divisions` changes, needsUpdate is set or the curve is rebuilt.
   getLengths(divisions = this.arcLengthDivisions) {
-    const c = this._data();
-    const out = [];
-    for (let k = 0; k <= divisions; ++k) out.push(c.curve.sAt(this._globalT(k / divisions, c)));
+    const stale = this.needsUpdate;
+    const c = this._data();  // rebuilds on needsUpdate (and clears it), or on a new points array
+    const cache = this.cacheArcLengths;
+    if (cache && cache.length === divisions + 1 && !stale && this._lengthsOf === c) return cache;
+    const out = [0];
+    const last = this.getPoint(0), current = new Vector3();
+    let sum = 0;
+    for (let p = 1; p <= divisions; ++p) {
+      this.getPoint(p / divisions, current);
+      sum += current.distanceTo(last);
+      out.push(sum);
+      last.copy(current);
+    }
+    this.cacheArcLengths = out;
+    this._lengthsOf = c;
     return out;
   }
 
   updateArcLengths() {
     this.needsUpdate = true;
-    this._data();
-  }
-
-  // three.js' t -> crspline's t (the knots).
-  _globalT(t, c) {
-    if (t >= 1) return c.grid[c.nseg];  // the end (of a closed curve too: getLengths)
-    const [i, u] = this._locate(t, c);
-    const g = c.grid;
-    return i === c.nseg - 1 && u === 1 ? g[c.nseg] : g[i] + u * (g[i + 1] - g[i]);
+    this.getLengths();
   }
 
   /// The t at which the arc length from the start is u * getLength() (or
-  /// `distance`), through crspline's arc length.
+  /// `distance`), through crspline's arc length. As in three.js, a distance
+  /// of 0 or null means "use u".
   getUtoTmapping(u, distance = null) {
     const c = this._data();
-    const s = distance ?? u * c.length;
+    const s = distance ? distance : u * c.length;
     const T = c.curve.tAtArcLength(Math.min(Math.max(s, 0), c.length));
     const g = c.grid;
     // The segment of T: binary search in the knots.
