@@ -6,6 +6,7 @@
 #include "bounds.hpp"
 #include "catmull_rom.hpp"
 #include "certify.hpp"
+#include "decision.hpp"
 #include "dispatch.hpp"
 #include "end_condition.hpp"
 #include "error.hpp"

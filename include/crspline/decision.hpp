@@ -1,0 +1,676 @@
+// crspline: a proved decision on crossings (issue 27). Does a plane curve
+// cross itself, do two curves cross, do any curves of a set cross?
+//
+// The answer is one of three verdicts, each a statement about the piecewise
+// cubic Bézier curve whose control points are the doubles
+// catmull_rom::bezier(i) returns (B0 and B3 are the stored points exactly;
+// B1 and B2 are rounded once from the tangents):
+//
+//   simple   proved: no two points of the curve (of two curves) coincide,
+//            except consecutive segments at their shared point. Every pair
+//            of pieces that could meet was shown apart by one of the
+//            arguments in decision_argument, each evaluated with its
+//            rounding error bounded (see "Proofs" below).
+//   crosses  at least one crossing is proved: for each, parameter intervals
+//            (u in segment[0], v in segment[1]) that contain exactly one
+//            point where the two pieces meet, and meet transversally
+//            (Krawczyk's test on F(u, v) = A(u) - B(v) in interval
+//            arithmetic). Other pairs may be undecided (listed as touches).
+//   touches  nothing crosses that could be proved, and some pieces come
+//            within the floor delta (decision::floor) of each other without
+//            either a proof that they are apart or a proof that they cross:
+//            a tangency, a cusp, a fold, a curve passing through one of its
+//            vertices twice, or a contact closer than double precision can
+//            resolve. Each is reported with where and how close.
+//
+// The paper's certificate (certify.hpp) is the fast path: when it certifies
+// a curve, the verdict is `simple` with the argument paper_rule and nothing
+// else is computed.
+//
+// Proofs. The curve is taken relative to its first point (the difference
+// enclosed exactly, so 1e8 offsets cost nothing). Each segment is cut into
+// pieces that are monotone in some direction d (d . B'(u) > 0 on the piece,
+// checked on the hodograph's control points): a monotone piece never meets
+// itself. Pieces whose boxes meet are found with a box tree. A pair of
+// pieces is then
+//   * apart by separation: a separating axis (the two coordinate axes and
+//     the normals of both chords) puts their convex hulls strictly apart;
+//   * apart at a joint: consecutive pieces share their end point J exactly,
+//     and a direction d puts every other control point of the first strictly
+//     behind J and of the second strictly ahead of it (control points that
+//     are exactly J, as at a zero tangent, are allowed: a piece's other
+//     points carry positive weight away from its end);
+//   * crossing: Krawczyk's operator of F over a parameter box lies strictly
+//     inside the box, which proves one zero there and every Jacobian in the
+//     box invertible (a transversal crossing);
+//   * else split in halves (de Casteljau), down to the floor.
+// Rounding: the subdivided control points carry an error bound (the
+// initial difference, plus 2 eps M per level, where M bounds every
+// coordinate relative to the first point); every projection is compared
+// with a margin covering that bound and the rounding of the projection
+// itself (|x . n| rounding <= 2 eps M |n|_1, here taken as 10 eps M |n|_1).
+// Krawczyk's test runs in interval arithmetic with outward rounding
+// (detail/interval.hpp) from an exact enclosure of the control points.
+//
+// The floor: delta = 2^-32 M (about 2.3e-10 of the curve's extent M from
+// its first point). Two pieces, each no larger than delta, neither
+// separated nor proved to cross, are a contact: they are within delta
+// sqrt(2) plus the margins of each other, below 1e-9 of the curve's size.
+// Separation itself is decided at the margins' scale, a few hundred eps M
+// (at most about 2 (2 eps M depth + 10 eps M) |n|_1 for pieces split depth
+// times): pieces further apart than that are separated once they are short
+// enough that their hulls no longer overlap (a gap g between arcs of
+// curvature k: pieces of length about sqrt(8 g / k), far above delta), so
+// only contacts closer than the margins, and exact contacts (tangencies,
+// cusps, a vertex visited twice), reach the floor. Why not a floor of a
+// few ulps: along an exact tangency every piece within sqrt(margin / k) of
+// the contact stays unseparated, and their number is that length over the
+// floor. A work budget (decision_options::budget, pair_budget) bounds the
+// time anyway; a pair that exhausts it is reported as a contact with
+// budget_exhausted set.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <span>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "catmull_rom.hpp"
+#include "certify.hpp"
+#include "detail/box_tree.hpp"
+#include "detail/interval.hpp"
+#include "segment.hpp"
+#include "vec.hpp"
+
+namespace crspline {
+
+enum class verdict { simple, crosses, touches };
+
+inline const char* to_string(verdict v) noexcept {
+    switch (v) {
+        case verdict::simple: return "simple";
+        case verdict::crosses: return "crosses";
+        case verdict::touches: return "touches";
+    }
+    return "unknown";
+}
+
+/// The arguments that decide a pair of segments, as bit flags (a pair cut
+/// into pieces may need several).
+enum decision_argument : unsigned {
+    paper_rule = 1,   ///< the paper's certificate (Section 5) certified the whole curve
+    separation = 2,   ///< a separating axis between convex hulls, with rounding margins
+    joint = 4,        ///< consecutive pieces meet only at their shared point (half-space test)
+    monotone = 8,     ///< a piece is monotone in a direction: it does not meet itself
+    crossing = 16,    ///< Krawczyk's test proved a transversal crossing
+    unresolved = 32,  ///< a contact within the floor (or the budget ran out)
+};
+
+/// "separation+joint" for the flags set in `arguments`.
+inline std::string argument_names(unsigned arguments) {
+    static constexpr std::pair<unsigned, const char*> names[] = {{paper_rule, "paper_rule"}, {separation, "separation"},
+                                                                 {joint, "joint"},           {monotone, "monotone"},
+                                                                 {crossing, "crossing"},     {unresolved, "unresolved"}};
+    std::string s;
+    for (const auto& [bit, name] : names)
+        if (arguments & bit) s += (s.empty() ? "" : "+") + std::string(name);
+    return s;
+}
+
+/// A proved crossing: the two pieces meet exactly once, transversally, at
+/// local parameters u in [u[0][0], u[0][1]] of segment[0] of curve[0] and
+/// [u[1][0], u[1][1]] of segment[1] of curve[1].
+struct proved_crossing {
+    std::array<std::size_t, 2> curve{};
+    std::array<std::size_t, 2> segment{};
+    std::array<std::array<double, 2>, 2> u{};
+    vec<2> point{};  ///< the curve at the middle of the first interval (rounded)
+};
+
+/// Two pieces within the floor that could not be proved apart or crossing.
+struct contact {
+    std::array<std::size_t, 2> curve{};
+    std::array<std::size_t, 2> segment{};  ///< equal for a contact inside one segment (cusp, fold)
+    std::array<double, 2> u{};             ///< local parameters where it was found
+    double distance = 0;                   ///< |A(u0) - B(u1)| there (rounded)
+    std::size_t pieces = 0;                ///< unresolved piece pairs merged into this contact
+    bool budget_exhausted = false;         ///< the work budget ran out (distance may exceed the floor)
+};
+
+/// Which arguments decided a pair of segments (i <= j; i == j: within one segment).
+struct decided_pair {
+    std::array<std::size_t, 2> curve{};
+    std::array<std::size_t, 2> segment{};
+    unsigned arguments = 0;
+};
+
+struct decision_options {
+    bool fast_path = true;             ///< try the paper's certificate first (single curves)
+    std::size_t budget = 1u << 24;     ///< visits in all before every remaining pair is a contact
+    std::size_t pair_budget = 1u << 17;  ///< visits for one pair of pieces (an overlap or a near tangency)
+    bool record_pairs = true;          ///< fill decision::pairs
+};
+
+struct decision {
+    crspline::verdict result = verdict::simple;
+    bool fast_path = false;                  ///< decided by the paper's certificate alone
+    std::vector<proved_crossing> crossings;  ///< in order of (curve, segment) pairs
+    std::vector<contact> touches;
+    std::vector<decided_pair> pairs;         ///< every pair of segments examined (not with fast_path)
+    double floor = 0;                        ///< delta: the contact floor (see the header comment)
+    std::size_t pieces = 0;                  ///< monotone pieces the curves were cut into
+    std::size_t visits = 0;                  ///< pairs of pieces examined
+    std::size_t candidate_pairs = 0;         ///< pairs of pieces whose boxes met
+};
+
+/// A piecewise cubic Bézier curve in the plane: segment i runs from
+/// segments[i][0] to segments[i][3]; consecutive segments share that point
+/// exactly (segments[i][3] == segments[i + 1][0], and back to the first when
+/// closed) -- the decision checks it.
+struct bezier_path {
+    std::span<const std::array<vec<2>, 4>> segments;
+    bool closed = false;
+};
+
+namespace detail {
+
+struct decision_engine {
+    using P = vec<2>;
+    static constexpr double eps = std::numeric_limits<double>::epsilon();
+    static constexpr int max_depth = 64;
+
+    struct piece {
+        std::array<P, 4> b{};  // control points relative to ref (computed)
+        double err = 0;        // |computed - exact| per coordinate, bound
+        double u0 = 0, u1 = 1;
+        std::uint32_t curve = 0, segment = 0;
+        std::uint8_t start_mult = 1, end_mult = 1;  // control points exactly equal to b[0] / b[3] (incl. it)
+        int depth = 0;
+    };
+    using ipoint = std::array<interval, 2>;
+
+    std::vector<std::span<const std::array<P, 4>>> curves;
+    std::vector<bool> closed;
+    std::vector<std::vector<std::array<ipoint, 4>>> exact;  // enclosures of the relative control points
+    P ref{};
+    double M = 0, floor = 0;
+    std::vector<piece> pieces;
+    std::vector<std::size_t> first_piece;  // per curve, and one past the end
+    decision out;
+    std::map<std::array<std::size_t, 4>, unsigned> pair_flags;
+    std::map<std::array<std::size_t, 4>, std::size_t> contact_index;
+    std::size_t budget = 0, pair_budget = 0;
+
+    static double norm1(const P& d) noexcept { return std::abs(d[0]) + std::abs(d[1]); }
+    double margin(double e, const P& d) const noexcept { return (e + 10 * eps * M) * norm1(d); }
+
+    static std::array<piece, 2> split(const piece& p) {
+        const auto mid = [](const P& x, const P& y) { return (x + y) * 0.5; };
+        const auto& q = p.b;
+        const P a0 = mid(q[0], q[1]), a1 = mid(q[1], q[2]), a2 = mid(q[2], q[3]);
+        const P q0 = mid(a0, a1), q1 = mid(a1, a2), m = mid(q0, q1);
+        piece l = p, r = p;
+        l.b = {q[0], a0, q0, m};
+        r.b = {m, q1, a2, q[3]};
+        const double um = p.u0 + (p.u1 - p.u0) / 2;
+        l.u1 = um;
+        r.u0 = um;
+        l.end_mult = 1;
+        r.start_mult = 1;
+        l.depth = r.depth = p.depth + 1;
+        return {l, r};
+    }
+    void grow(std::array<piece, 2>& h) const {
+        for (auto& x : h) x.err += 2 * eps * M;
+    }
+
+    // d . B'(u) > 0 on the piece: the hodograph's control points b[k+1] - b[k]
+    // all strictly ahead along d, except those known to be exactly zero.
+    bool monotone_in(const piece& p, const P& d) const {
+        if (!(norm1(d) > 0) || !std::isfinite(norm1(d))) return false;
+        const double pad = margin(2 * p.err, d);
+        const std::size_t k0 = p.start_mult - 1u, k1 = 3u - (p.end_mult - 1u);
+        if (k0 >= k1) return false;
+        for (std::size_t k = k0; k < k1; ++k)
+            if (!(dot(p.b[k + 1], d) - dot(p.b[k], d) > pad)) return false;
+        return true;
+    }
+    bool is_monotone(const piece& p) const {
+        const P chord = p.b[3] - p.b[0];
+        const P h0 = p.b[std::size_t(p.start_mult)] - p.b[0], h2 = p.b[3] - p.b[3u - p.end_mult];
+        const P dirs[] = {chord, h0, h2, h0 / std::max(norm1(h0), 1e-300) + h2 / std::max(norm1(h2), 1e-300)};
+        for (const auto& d : dirs)
+            if (monotone_in(p, d)) return true;
+        return false;
+    }
+
+    static std::array<P, 2> hull_box(const piece& p) {
+        std::array<P, 2> r{p.b[0], p.b[0]};
+        for (const auto& x : p.b)
+            for (std::size_t k = 0; k < 2; ++k) {
+                r[0][k] = std::min(r[0][k], x[k]);
+                r[1][k] = std::max(r[1][k], x[k]);
+            }
+        return r;
+    }
+    static double extent(const piece& p) {
+        const auto b = hull_box(p);
+        return std::max(b[1][0] - b[0][0], b[1][1] - b[0][1]);
+    }
+
+    bool separated_on(const piece& a, const piece& b, const P& n) const {
+        if (!(norm1(n) > 0) || !std::isfinite(norm1(n))) return false;
+        double a0 = dot(a.b[0], n), a1 = a0, b0 = dot(b.b[0], n), b1 = b0;
+        for (std::size_t k = 1; k < 4; ++k) {
+            a0 = std::min(a0, dot(a.b[k], n));
+            a1 = std::max(a1, dot(a.b[k], n));
+            b0 = std::min(b0, dot(b.b[k], n));
+            b1 = std::max(b1, dot(b.b[k], n));
+        }
+        const double pad = margin(a.err + b.err, n);
+        return a1 + pad < b0 || b1 + pad < a0;
+    }
+    bool separated(const piece& a, const piece& b) const {
+        const P ca = a.b[3] - a.b[0], cb = b.b[3] - b.b[0];
+        const P axes[] = {P{{1, 0}}, P{{0, 1}}, P{{-ca[1], ca[0]}}, P{{-cb[1], cb[0]}}};
+        for (const auto& n : axes)
+            if (separated_on(a, b, n)) return true;
+        return false;
+    }
+
+    // a ends where b starts (J, the same double): do they meet only there?
+    bool apart_at_joint(const piece& a, const piece& b) const {
+        const P J = a.b[3];
+        const P da = J - a.b[3u - a.end_mult], db = b.b[b.start_mult] - J;
+        const P dirs[] = {da, db, da / std::max(norm1(da), 1e-300) + db / std::max(norm1(db), 1e-300)};
+        for (const auto& d : dirs) {
+            if (!(norm1(d) > 0) || !std::isfinite(norm1(d))) continue;
+            const double pad = margin(2 * (a.err + b.err), d), j = dot(J, d);
+            bool ok = true;
+            for (std::size_t k = 0; k + a.end_mult < 4 && ok; ++k) ok = dot(a.b[k], d) < j - pad;
+            for (std::size_t k = b.start_mult; k < 4 && ok; ++k) ok = dot(b.b[k], d) > j + pad;
+            if (ok) return true;
+        }
+        return false;
+    }
+
+    // Interval de Casteljau: the curve and its derivative over u.
+    static ipoint eval(const std::array<ipoint, 4>& q, const interval& u) {
+        ipoint r;
+        for (std::size_t k = 0; k < 2; ++k) {
+            const interval a0 = lerp(q[0][k], q[1][k], u), a1 = lerp(q[1][k], q[2][k], u), a2 = lerp(q[2][k], q[3][k], u);
+            r[k] = lerp(lerp(a0, a1, u), lerp(a1, a2, u), u);
+        }
+        return r;
+    }
+    static ipoint deriv(const std::array<ipoint, 4>& q, const interval& u) {
+        ipoint r;
+        const interval three = interval::point(3);
+        for (std::size_t k = 0; k < 2; ++k) {
+            const interval d0 = q[1][k] - q[0][k], d1 = q[2][k] - q[1][k], d2 = q[3][k] - q[2][k];
+            r[k] = three * lerp(lerp(d0, d1, u), lerp(d1, d2, u), u);
+        }
+        return r;
+    }
+
+    // Krawczyk's operator K(X) = m - C F(m) + (I - C J(X)) (X - m) for
+    // F(u, v) = A(u) - B(v); K(X) strictly inside X proves exactly one zero
+    // in X, with every J in J(X) invertible. X is tightened to K(X) & X.
+    bool krawczyk(const std::array<ipoint, 4>& A, const std::array<ipoint, 4>& B, std::array<interval, 2>& X) const {
+        bool proved = false;
+        for (int it = 0; it < 6; ++it) {
+            const double m[2] = {X[0].mid(), X[1].mid()};
+            const ipoint fa = eval(A, interval::point(m[0])), fb = eval(B, interval::point(m[1]));
+            const ipoint F{fa[0] - fb[0], fa[1] - fb[1]};
+            const ipoint ja = deriv(A, X[0]), jb = deriv(B, X[1]);
+            const interval J[2][2] = {{ja[0], -jb[0]}, {ja[1], -jb[1]}};
+            const double j00 = J[0][0].mid(), j01 = J[0][1].mid(), j10 = J[1][0].mid(), j11 = J[1][1].mid();
+            const double det = j00 * j11 - j01 * j10;
+            if (!(std::abs(det) > 0) || !std::isfinite(det)) return proved;
+            const double C[2][2] = {{j11 / det, -j01 / det}, {-j10 / det, j00 / det}};
+            std::array<interval, 2> K;
+            for (std::size_t r = 0; r < 2; ++r) {
+                interval k = interval::point(m[r]) - (interval::point(C[r][0]) * F[0] + interval::point(C[r][1]) * F[1]);
+                for (std::size_t c = 0; c < 2; ++c) {
+                    const interval e = interval::point(r == c ? 1.0 : 0.0) -
+                                       (interval::point(C[r][0]) * J[0][c] + interval::point(C[r][1]) * J[1][c]);
+                    k = k + e * (X[c] - interval::point(m[c]));
+                }
+                K[r] = k;
+            }
+            if (!K[0].finite() || !K[1].finite()) return proved;
+            if (!proved) {
+                if (!(K[0].strictly_inside(X[0]) && K[1].strictly_inside(X[1]))) return false;
+                proved = true;
+            }
+            const std::array<interval, 2> Y{intersect(K[0], X[0]), intersect(K[1], X[1])};
+            if (Y[0].lo > Y[0].hi || Y[1].lo > Y[1].hi) return proved;  // cannot happen once proved
+            if (Y[0].lo == X[0].lo && Y[0].hi == X[0].hi && Y[1].lo == X[1].lo && Y[1].hi == X[1].hi) break;
+            X = Y;
+        }
+        return proved;
+    }
+
+    bool try_crossing(const piece& a, const piece& b) {
+        const auto& A = exact[a.curve][a.segment];
+        const auto& B = exact[b.curve][b.segment];
+        const double wa = (a.u1 - a.u0) / 4, wb = (b.u1 - b.u0) / 4;
+        interval U{std::max(0.0, a.u0 - wa), std::min(1.0, a.u1 + wa)};
+        interval V{std::max(0.0, b.u0 - wb), std::min(1.0, b.u1 + wb)};
+        if (a.curve == b.curve && a.segment == b.segment) {
+            // Keep u and v apart: u = v is a trivial zero of F.
+            if (a.u1 <= b.u0) {
+                const double g = (b.u0 - a.u1) / 3;
+                U.hi = std::min(U.hi, a.u1 + g);
+                V.lo = std::max(V.lo, b.u0 - g);
+            } else {
+                const double g = (a.u0 - b.u1) / 3;
+                V.hi = std::min(V.hi, b.u1 + g);
+                U.lo = std::max(U.lo, a.u0 - g);
+            }
+            if (!(U.hi < V.lo || V.hi < U.lo)) return false;
+        }
+        std::array<interval, 2> X{U, V};
+        if (!krawczyk(A, B, X)) return false;
+        // One crossing per zero: a neighbouring pair of pieces may prove the same one.
+        for (const auto& c : out.crossings)
+            if (c.curve[0] == a.curve && c.curve[1] == b.curve && c.segment[0] == a.segment &&
+                c.segment[1] == b.segment && c.u[0][0] <= X[0].hi && X[0].lo <= c.u[0][1] && c.u[1][0] <= X[1].hi &&
+                X[1].lo <= c.u[1][1])
+                return true;
+        proved_crossing c;
+        c.curve = {a.curve, b.curve};
+        c.segment = {a.segment, b.segment};
+        c.u = {{{X[0].lo, X[0].hi}, {X[1].lo, X[1].hi}}};
+        c.point = bezier_at(curves[a.curve][a.segment], X[0].mid());
+        out.crossings.push_back(c);
+        return true;
+    }
+
+    void add_contact(const piece& a, const piece& b, bool exhausted) {
+        const double ua = (a.u0 + a.u1) / 2, ub = (b.u0 + b.u1) / 2;
+        const double dist = norm(bezier_at(curves[a.curve][a.segment], ua) - bezier_at(curves[b.curve][b.segment], ub));
+        const std::array<std::size_t, 4> key{a.curve, a.segment, b.curve, b.segment};
+        const auto it = contact_index.find(key);
+        if (it != contact_index.end()) {
+            contact& c = out.touches[it->second];
+            ++c.pieces;
+            c.budget_exhausted = c.budget_exhausted || exhausted;
+            if (dist < c.distance) {
+                c.distance = dist;
+                c.u = {ua, ub};
+            }
+            return;
+        }
+        contact c;
+        c.curve = {a.curve, b.curve};
+        c.segment = {a.segment, b.segment};
+        c.u = {ua, ub};
+        c.distance = dist;
+        c.pieces = 1;
+        c.budget_exhausted = exhausted;
+        contact_index.emplace(key, out.touches.size());
+        out.touches.push_back(c);
+    }
+
+    void flag(const piece& a, const piece& b, unsigned f) {
+        std::array<std::size_t, 4> key{a.curve, a.segment, b.curve, b.segment};
+        if (std::pair(key[2], key[3]) < std::pair(key[0], key[1])) key = {key[2], key[3], key[0], key[1]};
+        pair_flags[key] |= f;
+    }
+
+    // One pair of pieces; `corner`: a ends exactly where b starts.
+    void decide_pair(const piece& a0, const piece& b0, bool corner) {
+        struct task {
+            piece a, b;
+            bool corner;
+        };
+        std::vector<task> stack{{a0, b0, corner}};
+        unsigned f = 0;
+        std::size_t visits = 0;
+        while (!stack.empty()) {
+            const task t = stack.back();
+            stack.pop_back();
+            if (out.visits >= budget || visits++ >= pair_budget) {
+                add_contact(t.a, t.b, true);
+                f |= unresolved;
+                continue;
+            }
+            ++out.visits;
+            if (separated(t.a, t.b)) { f |= separation; continue; }
+            if (t.corner && apart_at_joint(t.a, t.b)) { f |= joint; continue; }
+            if (!t.corner && (t.a.depth + t.b.depth > 0 || t.a.segment != t.b.segment || t.a.curve != t.b.curve) &&
+                try_crossing(t.a, t.b)) {
+                f |= crossing;
+                continue;
+            }
+            const double ea = extent(t.a), eb = extent(t.b);
+            const bool can_a = t.a.depth < max_depth, can_b = t.b.depth < max_depth;
+            if (std::max(ea, eb) <= floor || (!can_a && !can_b)) {  // a contact
+                add_contact(t.a, t.b, false);
+                f |= unresolved;
+                continue;
+            }
+            if ((ea >= eb && can_a) || !can_b) {
+                auto h = split(t.a);
+                grow(h);
+                stack.push_back({h[0], t.b, false});
+                stack.push_back({h[1], t.b, t.corner});
+            } else {
+                auto h = split(t.b);
+                grow(h);
+                stack.push_back({t.a, h[0], t.corner});
+                stack.push_back({t.a, h[1], false});
+            }
+        }
+        flag(a0, b0, f);
+    }
+
+    // Cut one segment into monotone pieces, in order.
+    void cut(const piece& s) {
+        std::vector<piece> stack{s};
+        while (!stack.empty()) {
+            const piece p = stack.back();
+            stack.pop_back();
+            if (is_monotone(p)) {
+                pieces.push_back(p);
+                continue;
+            }
+            if (p.depth >= max_depth || extent(p) <= floor) {
+                // A cusp or a fold: the piece may meet itself; a contact within one segment.
+                add_contact(p, p, false);
+                flag(p, p, unresolved);
+                pieces.push_back(p);
+                continue;
+            }
+            auto h = split(p);
+            grow(h);
+            stack.push_back(h[1]);
+            stack.push_back(h[0]);
+        }
+    }
+
+    void build() {
+        // 1. The reference point, the enclosures and the bound M.
+        for (const auto& c : curves)
+            if (!c.empty()) { ref = c[0][0]; break; }
+        exact.resize(curves.size());
+        for (std::size_t ci = 0; ci < curves.size(); ++ci) {
+            exact[ci].resize(curves[ci].size());
+            for (std::size_t s = 0; s < curves[ci].size(); ++s)
+                for (std::size_t k = 0; k < 4; ++k)
+                    for (std::size_t d = 0; d < 2; ++d) {
+                        const double x = curves[ci][s][k][d] - ref[d];
+                        exact[ci][s][k][d] = {down(x), up(x)};  // the exact difference is within half an ulp
+                        M = std::max(M, std::abs(x));
+                    }
+        }
+        M = std::nextafter(M * (1 + 1e-12), std::numeric_limits<double>::infinity());
+        floor = std::ldexp(M, -32);
+        out.floor = floor;
+        // 2. Monotone pieces of every segment that is not a single point.
+        for (std::size_t ci = 0; ci < curves.size(); ++ci) {
+            first_piece.push_back(pieces.size());
+            for (std::size_t s = 0; s < curves[ci].size(); ++s) {
+                const auto& g = curves[ci][s];
+                if (g[0] == g[1] && g[1] == g[2] && g[2] == g[3]) continue;
+                piece p;
+                for (std::size_t k = 0; k < 4; ++k) p.b[k] = g[k] - ref;
+                p.err = eps * M;
+                p.curve = std::uint32_t(ci);
+                p.segment = std::uint32_t(s);
+                while (p.start_mult < 3 && g[p.start_mult] == g[0]) ++p.start_mult;
+                while (p.end_mult < 3 && g[3u - p.end_mult] == g[3]) ++p.end_mult;
+                const std::size_t before = pieces.size();
+                cut(p);
+                flag(p, p, monotone);
+                (void)before;
+            }
+            // A closed curve of two pieces would have them adjacent at both ends.
+            if (closed[ci] && pieces.size() - first_piece.back() == 2) {
+                std::vector<piece> halves;
+                for (std::size_t k = first_piece.back(); k < pieces.size(); ++k) {
+                    auto h = split(pieces[k]);
+                    grow(h);
+                    halves.push_back(h[0]);
+                    halves.push_back(h[1]);
+                }
+                pieces.resize(first_piece.back());
+                pieces.insert(pieces.end(), halves.begin(), halves.end());
+            }
+        }
+        first_piece.push_back(pieces.size());
+        out.pieces = pieces.size();
+    }
+
+    // Is the pair (p, q), p < q, consecutive? Returns 1 when p ends where q
+    // starts, 2 when q ends where p starts (across a closed curve's seam).
+    int adjacency(std::size_t p, std::size_t q) const {
+        const piece &a = pieces[p], &b = pieces[q];
+        if (a.curve != b.curve) return 0;
+        if (q == p + 1 && a.b[3] == b.b[0]) return 1;
+        if (closed[a.curve] && p == first_piece[a.curve] && q + 1 == first_piece[a.curve + 1] && b.b[3] == a.b[0])
+            return 2;
+        return 0;
+    }
+
+    void run(bool self, bool between) {
+        build();
+        // 3. Candidate pairs: boxes grown by each piece's error and the rounding of the growth.
+        std::vector<box<2, double>> boxes(pieces.size());
+        for (std::size_t k = 0; k < pieces.size(); ++k) {
+            const auto hb = hull_box(pieces[k]);
+            const double g = pieces[k].err + 8 * eps * M;
+            boxes[k].lo = hb[0] - P{{g, g}};
+            boxes[k].hi = hb[1] + P{{g, g}};
+        }
+        std::vector<std::array<std::uint32_t, 2>> cand;
+        if (pieces.size() > std::numeric_limits<std::uint32_t>::max())
+            throw invalid_input("decision: more than 2^32 pieces");
+        box_tree<2, double>(boxes).for_each_meeting_pair(0.0, [&](std::uint32_t i, std::uint32_t j) {
+            const bool same = pieces[i].curve == pieces[j].curve;
+            if ((same && self) || (!same && between)) cand.push_back({i, j});
+        });
+        std::sort(cand.begin(), cand.end());
+        out.candidate_pairs = cand.size();
+        // 4. Every candidate pair.
+        for (const auto& [i, j] : cand) {
+            const int adj = self ? adjacency(i, j) : 0;
+            if (adj == 1) decide_pair(pieces[i], pieces[j], true);
+            else if (adj == 2) decide_pair(pieces[j], pieces[i], true);
+            else decide_pair(pieces[i], pieces[j], false);
+        }
+        // 5. The verdict.
+        std::sort(out.crossings.begin(), out.crossings.end(), [](const proved_crossing& x, const proved_crossing& y) {
+            return std::tie(x.curve, x.segment, x.u[0][0]) < std::tie(y.curve, y.segment, y.u[0][0]);
+        });
+        out.result = !out.crossings.empty() ? verdict::crosses : !out.touches.empty() ? verdict::touches : verdict::simple;
+        for (const auto& [key, f] : pair_flags)
+            out.pairs.push_back({{key[0], key[2]}, {key[1], key[3]}, f});
+    }
+};
+
+inline void check_path(const bezier_path& c, std::size_t ci) {
+    const auto& s = c.segments;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        for (std::size_t k = 0; k < 4; ++k)
+            if (!std::isfinite(s[i][k][0]) || !std::isfinite(s[i][k][1]))
+                throw invalid_input("decision: curve " + std::to_string(ci) + " segment " + std::to_string(i) +
+                                    " Bezier point " + std::to_string(k) + " is not finite");
+        const bool last = i + 1 == s.size();
+        if ((!last || c.closed) && !(s[i][3] == s[last ? 0 : i + 1][0]))
+            throw invalid_input("decision: curve " + std::to_string(ci) + " segment " + std::to_string(i) +
+                                " does not end where segment " + std::to_string(last ? 0 : i + 1) + " starts");
+    }
+}
+
+inline decision decide_paths(std::span<const bezier_path> curves, bool self, bool between, const decision_options& opt) {
+    decision_engine e;
+    for (std::size_t ci = 0; ci < curves.size(); ++ci) {
+        check_path(curves[ci], ci);
+        e.curves.push_back(curves[ci].segments);
+        e.closed.push_back(curves[ci].closed);
+    }
+    e.budget = opt.budget;
+    e.pair_budget = opt.pair_budget;
+    e.run(self, between);
+    if (!opt.record_pairs) e.out.pairs.clear();
+    return std::move(e.out);
+}
+
+}  // namespace detail
+
+/// The decision for one piecewise Bézier curve (does it cross itself?).
+inline decision decide(const bezier_path& c, const decision_options& opt = {}) {
+    return detail::decide_paths(std::span<const bezier_path>(&c, 1), true, false, opt);
+}
+
+/// The decision for one curve: does it cross itself? 2-D only. The paper's
+/// certificate first (opt.fast_path), then the proofs of the header comment.
+inline decision decide(const catmull_rom<2>& c, const decision_options& opt = {}) {
+    if (opt.fast_path) {
+        certify_options co;
+        co.search_on_failure = false;
+        if (certify_intersection_free(c, co).certified) {
+            decision d;
+            d.result = verdict::simple;
+            d.fast_path = true;
+            if (opt.record_pairs) d.pairs.push_back({{0, 0}, {0, c.segment_count() - 1}, paper_rule});
+            return d;
+        }
+    }
+    const auto b = c.bezier();
+    return decide(bezier_path{b, c.closed()}, opt);
+}
+
+/// Do two curves cross each other? (Each one's own crossings are not
+/// looked for: decide(a) and decide(b) answer that.) curve[0] of each
+/// crossing is 0 for a, 1 for b.
+inline decision decide(const catmull_rom<2>& a, const catmull_rom<2>& b, const decision_options& opt = {}) {
+    const auto ba = a.bezier(), bb = b.bezier();
+    const bezier_path p[2] = {{ba, a.closed()}, {bb, b.closed()}};
+    return detail::decide_paths(p, false, true, opt);
+}
+
+/// Do any two curves of a set cross each other? Every pair of pieces whose
+/// boxes meet is found through one box tree over all the curves' pieces.
+/// With `self`, each curve's own crossings are decided too (no fast path).
+inline decision decide(std::span<const catmull_rom<2>> curves, bool self = false, const decision_options& opt = {}) {
+    std::vector<std::vector<std::array<vec<2>, 4>>> b(curves.size());
+    std::vector<bezier_path> p(curves.size());
+    for (std::size_t i = 0; i < curves.size(); ++i) {
+        b[i] = curves[i].bezier();
+        p[i] = {b[i], curves[i].closed()};
+    }
+    return detail::decide_paths(p, self, true, opt);
+}
+
+}  // namespace crspline

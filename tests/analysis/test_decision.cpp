@@ -1,0 +1,335 @@
+// The crossing decision (issue 27): verdicts against an independent exact
+// check, and the properties the issue asks for.
+//
+//  * Corpus (seeded, seed printed): random walks of 5-12 points (uniform,
+//    centripetal, chordal, centripetal with tension 0.3; 150 each, the
+//    issue's table), Kochanek-Bartels and Hermite walks, spirals, glyph-like
+//    closed curves, a near-tangent family (a dent at gap g over a straight
+//    line, g from 1e-1 to 1e-12 of the size, 0 and negative), and walks
+//    moved by 1e8 and scaled by 1e8 and 1e-8.
+//  * The committed file data/decision_corpus.json holds that corpus's Bézier
+//    points (written by this test with CRSPLINE_WRITE_DECISION_CORPUS=path)
+//    and the verdicts of tests/analysis/exact_decision.py, which decides
+//    each curve in exact integer arithmetic, written apart from the library.
+//    Every verdict here must agree with it.
+//  * Live, on the seeded corpus: the fast path (the paper's certificate)
+//    never disagrees with the full decision; every random walk is decided
+//    (simple or crosses, count asserted); every contact is within the floor;
+//    no curve of the near-tangent family with a gap above 1e-9 of its size
+//    touches. The touches fraction is printed.
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <set>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include <crspline/decision.hpp>
+
+#include "test_support.hpp"
+
+namespace {
+using namespace crspline;
+using P = vec<2>;
+using json = nlohmann::json;
+
+struct corpus_curve {
+    std::string kind;
+    std::size_t index = 0;  // within its kind
+    catmull_rom<2> curve;
+    double gap = 0;         // near_tangent: the dent's gap (relative to the size); else 0
+};
+
+std::vector<P> walk(std::mt19937_64& rng, std::size_t n) {
+    std::normal_distribution<double> g(0.0, 1.0);
+    std::vector<P> p(n);
+    for (std::size_t i = 1; i < n; ++i) p[i] = p[i - 1] + P{{g(rng), g(rng)}};
+    return p;
+}
+
+// The near-tangent family: a straight run along y = 0 and a return whose
+// dent reaches down to (3, gap) with a horizontal tangent (by symmetry): the
+// nearest approach of the two runs is |gap| (crossing twice when gap < 0).
+std::vector<P> dent(double gap) {
+    return {P{{0, 0}}, P{{1, 0}}, P{{2, 0}}, P{{3, 0}}, P{{4, 0}}, P{{5, 0}}, P{{6, 0}}, P{{7, 0.5}},
+            P{{6, 1}},  P{{5, 1}}, P{{4, 0.6}}, P{{3, gap}}, P{{2, 0.6}}, P{{1, 1}}, P{{0, 1}}};
+}
+
+std::vector<corpus_curve> make_corpus(std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_int_distribution<std::size_t> npts(5, 12);
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    std::vector<corpus_curve> out;
+    auto add = [&](std::string kind, std::size_t i, catmull_rom<2> c, double gap = 0) {
+        out.push_back({std::move(kind), i, std::move(c), gap});
+    };
+    // 1. The issue's walks, 150 of each kind.
+    for (std::size_t i = 0; i < 150; ++i) add("walk_uniform", i, catmull_rom<2>(walk(rng, npts(rng)), {.alpha = 0.0}));
+    for (std::size_t i = 0; i < 150; ++i) add("walk_centripetal", i, catmull_rom<2>(walk(rng, npts(rng)), {.alpha = 0.5}));
+    for (std::size_t i = 0; i < 150; ++i) add("walk_chordal", i, catmull_rom<2>(walk(rng, npts(rng)), {.alpha = 1.0}));
+    for (std::size_t i = 0; i < 150; ++i)
+        add("walk_tension", i, catmull_rom<2>(walk(rng, npts(rng)), {.alpha = 0.5, .tension = 0.3}));
+    // 2. Kochanek-Bartels, closed curves of any alpha, Hermite with random tangents.
+    for (std::size_t i = 0; i < 40; ++i) {
+        const auto p = walk(rng, npts(rng));
+        kochanek_bartels<double> kb;
+        for (std::size_t k = 0; k < p.size(); ++k) {
+            kb.tension.push_back(U(rng) - 0.5);
+            kb.continuity.push_back(U(rng) - 0.5);
+            kb.bias.push_back(U(rng) - 0.5);
+        }
+        add("walk_kb", i, catmull_rom<2>(p, {.alpha = U(rng), .kb = kb}));
+    }
+    for (std::size_t i = 0; i < 40; ++i) add("walk_closed", i, catmull_rom<2>(walk(rng, npts(rng)), {.alpha = U(rng), .closed = true}));
+    for (std::size_t i = 0; i < 30; ++i) {
+        const auto p = walk(rng, npts(rng));
+        std::normal_distribution<double> g(0.0, 1.0);
+        std::vector<P> v(p.size());
+        std::vector<double> grid(p.size());
+        for (std::size_t k = 0; k < p.size(); ++k) {
+            v[k] = P{{g(rng), g(rng)}};
+            grid[k] = double(k) + (k ? 0.5 * U(rng) : 0.0);
+        }
+        add("hermite", i, catmull_rom<2>::hermite(p, v, grid));
+    }
+    // 3. Spirals (simple), and spirals closed back to their start (crossing).
+    for (std::size_t i = 0; i < 20; ++i) {
+        const std::size_t n = 10 + 2 * i;
+        const double turn = 0.3 + 0.6 * U(rng);
+        std::vector<P> p(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            const double th = turn * double(k), r = 0.2 + 0.15 * th;
+            p[k] = P{{r * std::cos(th), r * std::sin(th)}};
+        }
+        const double alphas[] = {0.0, 0.5, 1.0};
+        add("spiral", i, catmull_rom<2>(p, {.alpha = alphas[i % 3]}));
+        add("spiral_closed", i, catmull_rom<2>(p, {.alpha = alphas[i % 3], .closed = true}));
+    }
+    // 4. Glyph-like closed curves: star-shaped loops with random radii (some
+    //    fold over themselves where the radius jumps).
+    for (std::size_t i = 0; i < 60; ++i) {
+        const std::size_t n = 5 + i % 10;
+        std::vector<P> p(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            const double th = 2 * std::numbers::pi * (double(k) + 0.4 * U(rng)) / double(n);
+            const double r = 0.3 + U(rng);
+            p[k] = P{{r * std::cos(th), r * std::sin(th)}};
+        }
+        add("glyph", i, catmull_rom<2>(p, {.alpha = double(i % 3) / 2, .closed = true}));
+    }
+    // 5. Near-tangent family.
+    std::size_t k = 0;
+    for (const double alpha : {0.0, 0.5, 1.0}) {
+        for (int e = 1; e <= 12; ++e) {
+            add("near_tangent", k++, catmull_rom<2>(dent(std::pow(10.0, -e)), {.alpha = alpha}), std::pow(10.0, -e));
+            add("near_tangent", k++, catmull_rom<2>(dent(-std::pow(10.0, -e)), {.alpha = alpha}), -std::pow(10.0, -e));
+        }
+        add("near_tangent", k++, catmull_rom<2>(dent(0.0), {.alpha = alpha}), 0.0);
+    }
+    // 6. Walks moved by 1e8, scaled by 1e8 and 1e-8.
+    for (std::size_t i = 0; i < 30; ++i) {
+        const auto p = walk(rng, npts(rng));
+        const double alpha = double(i % 3) / 2;
+        std::vector<P> moved(p), big(p), small(p);
+        for (std::size_t j = 0; j < p.size(); ++j) {
+            moved[j] = p[j] + P{{1e8, -1e8}};
+            big[j] = p[j] * 1e8;
+            small[j] = p[j] * 1e-8;
+        }
+        add("offset_1e8", i, catmull_rom<2>(moved, {.alpha = alpha}));
+        add("scale_1e8", i, catmull_rom<2>(big, {.alpha = alpha}));
+        add("scale_1e-8", i, catmull_rom<2>(small, {.alpha = alpha}));
+    }
+    return out;
+}
+
+constexpr std::uint64_t corpus_seed = 27;  // the committed corpus was written with this seed
+
+std::string corpus_path() { return std::string(CRSPLINE_REFERENCE_DIR) + "/../analysis/data/decision_corpus.json"; }
+
+// CRSPLINE_WRITE_DECISION_CORPUS=path writes the corpus (for exact_decision.py).
+TEST(Decision, WriteCorpusWhenAsked) {
+    const char* path = std::getenv("CRSPLINE_WRITE_DECISION_CORPUS");
+    if (!path) GTEST_SKIP() << "set CRSPLINE_WRITE_DECISION_CORPUS=path to write the corpus";
+    const auto corpus = make_corpus(corpus_seed);
+    std::FILE* f = std::fopen(path, "w");
+    ASSERT_TRUE(f);
+    std::fprintf(f, "{\"provenance\":\"tests/analysis/test_decision.cpp make_corpus(seed %llu): Bezier points of each "
+                    "curve as catmull_rom::bezier() returns them (17 significant digits)\",\"curves\":[\n",
+                 (unsigned long long)corpus_seed);
+    for (std::size_t i = 0; i < corpus.size(); ++i) {
+        const auto& c = corpus[i];
+        std::fprintf(f, "%s{\"kind\":\"%s\",\"index\":%zu,\"gap\":%.17g,\"closed\":%s,\"segments\":[", i ? ",\n" : "",
+                     c.kind.c_str(), c.index, c.gap, c.curve.closed() ? "true" : "false");
+        const auto b = c.curve.bezier();
+        for (std::size_t s = 0; s < b.size(); ++s) {
+            std::fprintf(f, "%s[", s ? "," : "");
+            for (std::size_t q = 0; q < 4; ++q) std::fprintf(f, "%s[%.17g,%.17g]", q ? "," : "", b[s][q][0], b[s][q][1]);
+            std::fprintf(f, "]");
+        }
+        std::fprintf(f, "]}");
+    }
+    std::fprintf(f, "\n]}\n");
+    std::fclose(f);
+}
+
+std::set<std::pair<std::size_t, std::size_t>> crossing_pairs(const decision& d) {
+    std::set<std::pair<std::size_t, std::size_t>> s;
+    for (const auto& c : d.crossings) s.insert({std::min(c.segment[0], c.segment[1]), std::max(c.segment[0], c.segment[1])});
+    return s;
+}
+
+// Every verdict agrees with the exact check.
+TEST(Decision, AgreesWithTheExactCheck) {
+    std::ifstream in(corpus_path());
+    ASSERT_TRUE(in) << corpus_path();
+    const json corpus = json::parse(in);
+    std::size_t checked = 0, touches = 0;
+    std::map<std::string, std::size_t> by_verdict;
+    for (const auto& c : corpus["curves"]) {
+        SCOPED_TRACE(c["kind"].get<std::string>() + " " + std::to_string(c["index"].get<std::size_t>()));
+        std::vector<std::array<P, 4>> segs;
+        for (const auto& s : c["segments"]) {
+            std::array<P, 4> b;
+            for (std::size_t q = 0; q < 4; ++q) b[q] = P{{s[q][0].get<double>(), s[q][1].get<double>()}};
+            segs.push_back(b);
+        }
+        const decision d = decide(bezier_path{segs, c["closed"].get<bool>()});
+        const auto& ex = c["exact"];
+        const std::string exact = ex["verdict"];
+        ++by_verdict[to_string(d.result)];
+        if (d.result == verdict::touches) {
+            ++touches;
+            // A contact is within the floor; the exact check found no crossing either.
+            EXPECT_NE(exact, "crosses");
+            for (const auto& t : d.touches) {
+                EXPECT_FALSE(t.budget_exhausted);
+                EXPECT_LE(t.distance, 4 * d.floor);
+            }
+        } else {
+            EXPECT_EQ(to_string(d.result), exact);
+            std::set<std::pair<std::size_t, std::size_t>> ep;
+            for (const auto& p : ex["crossing_pairs"]) ep.insert({p[0].get<std::size_t>(), p[1].get<std::size_t>()});
+            EXPECT_EQ(crossing_pairs(d), ep);
+        }
+        ++checked;
+    }
+    // The corpus as written: make_corpus's count (a shrunken file checks less).
+    EXPECT_EQ(checked, make_corpus(corpus_seed).size());
+    std::printf("%zu curves: simple %zu, crosses %zu, touches %zu (%.2f%%)\n", checked, by_verdict["simple"],
+                by_verdict["crosses"], touches, 100.0 * double(touches) / double(checked));
+}
+
+// Live, on a seeded corpus (CRSPLINE_SEED to vary it).
+TEST(Decision, LiveCorpusProperties) {
+    CRSPLINE_SEEDED(seed, corpus_seed);
+    const auto corpus = make_corpus(seed);
+    std::size_t walks = 0, walks_decided = 0, fast = 0, touches = 0, near = 0;
+    for (const auto& c : corpus) {
+        SCOPED_TRACE(c.kind + " " + std::to_string(c.index));
+        const decision d = decide(c.curve);
+        const decision full = decide(c.curve, {.fast_path = false});
+        // The fast path is only ever a shortcut to the same answer.
+        if (d.fast_path) {
+            ++fast;
+            EXPECT_EQ(full.result, verdict::simple);
+        } else {
+            EXPECT_EQ(d.result, full.result);
+        }
+        if (full.result == verdict::touches) ++touches;
+        for (const auto& t : full.touches) {
+            EXPECT_FALSE(t.budget_exhausted);
+            EXPECT_LE(t.distance, 4 * full.floor);
+        }
+        if (c.kind.rfind("walk_", 0) == 0 && c.kind != "walk_kb" && c.kind != "walk_closed") {
+            ++walks;
+            if (full.result != verdict::touches) ++walks_decided;
+        }
+        if (c.kind == "near_tangent") {
+            ++near;
+            // The size is about 7 (the curve spans [0, 7] x [0, 1]).
+            if (std::abs(c.gap) > 1e-9 * 7) {
+                EXPECT_NE(full.result, verdict::touches) << "gap " << c.gap;
+            }
+            if (c.gap > 1e-9 * 7) {
+                EXPECT_EQ(full.result, verdict::simple) << "gap " << c.gap;
+            }
+            if (c.gap < -1e-9 * 7) {
+                EXPECT_EQ(full.result, verdict::crosses) << "gap " << c.gap;
+            }
+        }
+    }
+    EXPECT_EQ(walks, 600u);
+    EXPECT_EQ(walks_decided, 600u);  // the issue's table, all decided
+    EXPECT_EQ(near, 75u);
+    EXPECT_GT(fast, 0u);
+    std::printf("seed %llu: %zu curves, %zu decided by the paper's certificate, touches %zu (%.2f%%)\n",
+                (unsigned long long)seed, corpus.size(), fast, touches, 100.0 * double(touches) / double(corpus.size()));
+}
+
+// Hand-made cases, one argument each.
+TEST(Decision, HandMadeCases) {
+    // A crossing, proved: uniform curve whose last segment comes back across the first.
+    const catmull_rom<2> x(std::vector<P>{P{{0, 0}}, P{{4, 0}}, P{{4, 3}}, P{{2, -2}}}, {.alpha = 0.0});
+    const decision dx = decide(x);
+    ASSERT_EQ(dx.result, verdict::crosses);
+    ASSERT_EQ(dx.crossings.size(), 1u);
+    const auto& cr = dx.crossings[0];
+    // The two intervals contain the crossing: both curves' points there agree
+    // to within the intervals' width times the speed (a few ulps of 4: 1e-13).
+    const auto s0 = x.segment(cr.segment[0]), s1 = x.segment(cr.segment[1]);
+    const double u0 = (cr.u[0][0] + cr.u[0][1]) / 2, u1 = (cr.u[1][0] + cr.u[1][1]) / 2;
+    EXPECT_LT(norm(s0.at(u0) - s1.at(u1)), 1e-12);
+    EXPECT_LT(cr.u[0][1] - cr.u[0][0], 1e-12);
+    // Issue 31 point 4: a coincident point is not a crossing (neighbours through a zero-length segment).
+    const catmull_rom<2> line(std::vector<P>{P{{0, 0}}, P{{1, 0}}, P{{1, 0}}, P{{2, 0}}});
+    EXPECT_EQ(decide(line).result, verdict::simple);
+    // The README's chordal curve decided (the certificate said not_centripetal).
+    const catmull_rom<2> q(std::vector<P>{P{{0, 0}}, P{{1, 2}}, P{{3, 3}}, P{{4, 0}}}, {.alpha = 1.0});
+    EXPECT_EQ(decide(q).result, verdict::simple);
+    // Exact tangency: the dent touching the line -> touches, at distance 0 near (3, 0).
+    const decision dt = decide(catmull_rom<2>(dent(0.0), {.alpha = 0.5}));
+    ASSERT_EQ(dt.result, verdict::touches);
+    ASSERT_FALSE(dt.touches.empty());
+    for (const auto& t : dt.touches) EXPECT_LE(t.distance, 4 * dt.floor);
+    // Bad input: a path whose segments do not join names the segment.
+    const std::array<P, 4> s0b{P{{0, 0}}, P{{1, 0}}, P{{2, 0}}, P{{3, 0}}}, s1b{P{{3, 1}}, P{{4, 1}}, P{{5, 1}}, P{{6, 1}}};
+    const std::array<P, 4> both[2] = {s0b, s1b};
+    try {
+        (void)decide(bezier_path{both, false});
+        ADD_FAILURE() << "no error";
+    } catch (const invalid_input& e) {
+        EXPECT_NE(std::string(e.what()).find("segment 0 does not end where segment 1 starts"), std::string::npos) << e.what();
+    }
+}
+
+// Two curves and a set of curves.
+TEST(Decision, PairAndSet) {
+    const catmull_rom<2> a(std::vector<P>{P{{0, 0}}, P{{1, 1}}, P{{2, 0}}});
+    const catmull_rom<2> b(std::vector<P>{P{{0, 1}}, P{{1, 0}}, P{{2, 1}}});
+    const catmull_rom<2> c(std::vector<P>{P{{0, 5}}, P{{1, 6}}, P{{2, 5}}});
+    const decision ab = decide(a, b);
+    EXPECT_EQ(ab.result, verdict::crosses);
+    EXPECT_EQ(ab.crossings.size(), 2u);  // the arch and the valley cross twice
+    for (const auto& x : ab.crossings) EXPECT_EQ(x.curve, (std::array<std::size_t, 2>{0, 1}));
+    EXPECT_EQ(decide(a, c).result, verdict::simple);
+    const std::vector<catmull_rom<2>> set{a, c, b};
+    const decision s = decide(std::span<const catmull_rom<2>>(set));
+    EXPECT_EQ(s.result, verdict::crosses);
+    ASSERT_EQ(s.crossings.size(), 2u);
+    for (const auto& x : s.crossings) EXPECT_EQ(x.curve, (std::array<std::size_t, 2>{0, 2}));
+    // Seeded: n parallel walks shifted far apart never cross each other; set verdict simple.
+    CRSPLINE_SEEDED(seed, 2701);
+    std::mt19937_64 rng(seed);
+    std::vector<catmull_rom<2>> apart;
+    for (std::size_t i = 0; i < 50; ++i) {
+        auto p = walk(rng, 8);
+        for (auto& x : p) x = x * 0.02 + P{{double(i), 0}};
+        apart.emplace_back(p);
+    }
+    EXPECT_EQ(decide(std::span<const catmull_rom<2>>(apart)).result, verdict::simple);
+}
+
+}  // namespace
