@@ -33,7 +33,7 @@ namespace py = pybind11;
 /// dimension, 5 to 16 as the one wide curve of crspline::with_dimension
 /// (16 coordinates, zero-padded; see crspline/dispatch.hpp). _make_curve and
 /// the many-curve calls pad through crspline::make_curve; the Python layer
-/// (crspline/__init__.py) cuts results back to the input's dimension, and
+/// (crspline/_curve.py) cuts results back to the input's dimension, and
 /// hands _make_hermite only 1 to 4 columns.
 inline constexpr std::size_t max_dimension = max_runtime_dimension;
 

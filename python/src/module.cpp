@@ -1,6 +1,6 @@
 // crspline Python module `crspline._crspline`: the compiled part of the
 // `crspline` package. The public API (CatmullRom, KochanekBartels) is the
-// pure-Python layer in crspline/__init__.py; this module is private.
+// pure-Python layer in crspline/ (the curve class in crspline/_curve.py); this module is private.
 #include <exception>
 #include <optional>
 
