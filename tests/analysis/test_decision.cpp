@@ -333,3 +333,61 @@ TEST(Decision, PairAndSet) {
 }
 
 }  // namespace
+
+// Clearance against brute force: dense samples of every non-adjacent pair of
+// segments. The sampled minimum m is at least the true minimum, and at most
+// the true minimum plus the samples' largest spacing s (each curve point is
+// within s / 2 of a sample): so distance <= m + accuracy (the promise) and
+// distance >= m - s.
+template <std::size_t D>
+void check_clearance(std::mt19937_64& rng, std::size_t cases) {
+    std::normal_distribution<double> g(0.0, 1.0);
+    std::size_t measured = 0;
+    for (std::size_t i = 0; i < cases; ++i) {
+        std::vector<vec<D>> p(6 + i % 6);
+        for (std::size_t k = 1; k < p.size(); ++k)
+            for (std::size_t d = 0; d < D; ++d) p[k][d] = p[k - 1][d] + g(rng);
+        const bool closed = i % 4 == 3;
+        const catmull_rom<D> c(p, {.alpha = double(i % 3) / 2, .closed = closed});
+        const auto r = clearance(c, 1e-9);
+        const std::size_t n = c.segment_count(), m = 400;
+        double brute = std::numeric_limits<double>::infinity(), spacing = 0;
+        std::vector<std::vector<vec<D>>> samples(n);
+        for (std::size_t s = 0; s < n; ++s) {
+            const auto b = c.bezier(s);
+            for (std::size_t k = 0; k <= m; ++k) samples[s].push_back(bezier_at(b, double(k) / double(m)));
+            for (std::size_t k = 0; k < m; ++k) spacing = std::max(spacing, norm(samples[s][k + 1] - samples[s][k]));
+        }
+        for (std::size_t s = 0; s < n; ++s)
+            for (std::size_t t = s + 2; t < n; ++t) {
+                if (closed && s == 0 && t == n - 1) continue;
+                for (const auto& x : samples[s])
+                    for (const auto& y : samples[t]) brute = std::min(brute, norm(x - y));
+            }
+        if (!std::isfinite(brute)) continue;
+        ++measured;
+        EXPECT_LE(r.distance, brute + 1e-9 + 1e-12) << "case " << i;
+        EXPECT_GE(r.distance, brute - spacing) << "case " << i;
+        EXPECT_LE(r.lower_bound, r.distance);
+        EXPECT_LE(r.distance - r.lower_bound, 1e-9 * (1 + 1e-9));
+        EXPECT_FALSE(r.exhausted);
+        // The points reported are the curve's at the parameters reported (rounding: 1e-12 of a unit walk).
+        EXPECT_LT(norm(r.points[0] - bezier_at(c.bezier(r.segment[0]), r.u[0])), 1e-12);
+        EXPECT_LT(norm(r.points[1] - bezier_at(c.bezier(r.segment[1]), r.u[1])), 1e-12);
+        EXPECT_NEAR(norm(r.points[0] - r.points[1]), r.distance, 1e-12);
+    }
+    EXPECT_EQ(measured, cases);  // every case has non-adjacent segments (at least 5 segments)
+}
+
+TEST(Decision, ClearanceAgainstBruteForce) {
+    CRSPLINE_SEEDED(seed, 2702);
+    std::mt19937_64 rng(seed);
+    check_clearance<2>(rng, 20);
+    check_clearance<3>(rng, 20);
+    // Two curves: the hairpin's runs as two curves, 1e-3 apart.
+    const catmull_rom<2> lo(std::vector<P>{P{{0, 0}}, P{{1, 0}}, P{{2, 0}}, P{{3, 0}}});
+    const catmull_rom<2> hi(std::vector<P>{P{{0, 1}}, P{{1.5, 1e-3}}, P{{3, 1}}}, {.alpha = 0.0});
+    const auto r = clearance(lo, hi, 1e-12);
+    EXPECT_NEAR(r.distance, 1e-3, 1e-12);  // by symmetry the lowest point of hi is its vertex (1.5, 1e-3)
+    EXPECT_EQ(r.curve, (std::array<std::size_t, 2>{0, 1}));
+}
