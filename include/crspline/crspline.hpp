@@ -17,6 +17,7 @@
 #include "point_traits.hpp"
 #include "report.hpp"
 #include "resolution.hpp"
+#include "rotation/pose.hpp"
 #include "segment.hpp"
 #include "spec.hpp"
 #include "tessellate.hpp"
