@@ -135,11 +135,13 @@ class CatmullRom:
 
     def spec(self):
         """How the curve was built, as the curve file holds it (docs/spec.md):
-        a dict with ``points`` (lists), ``alpha`` or ``grid``, ``end``
-        (``'natural'``, ``'reflect'``, ``'closed'`` or ``{'start': ...,
-        'end': ...}`` with names or tangents), ``tension``, and ``kb`` and
-        ``strict`` when set. ``crspline.from_spec(c.spec())`` builds the same
-        curve (in float64); ``crspline.save`` writes it as JSON."""
+        a dict with ``points`` (lists), ``alpha`` or ``grid``, then
+        ``closed: True`` for a closed curve or ``start`` and ``end`` for an
+        open one (each ``'natural'``, ``'reflect'`` or a tangent list),
+        ``tension``, and ``kb`` and ``strict`` when set: the words of the
+        specification's table, one spelling. ``crspline.from_spec(c.spec())``
+        builds the same curve (in float64); ``crspline.save`` writes it as
+        JSON."""
         s = self._c.spec()
         dim = self._dim
         pts = _np.asarray(s["points"], dtype=_np.float64).reshape(-1, s["dimension"])[:, :dim]
@@ -153,11 +155,10 @@ class CatmullRom:
             return e if isinstance(e, str) else list(e[:dim])
 
         if s["closed"]:
-            out["end"] = "closed"
-        elif isinstance(s["start"], str) and s["start"] == s["end"]:
-            out["end"] = s["start"]
+            out["closed"] = True  # a closed curve has no end conditions
         else:
-            out["end"] = {"start": end(s["start"]), "end": end(s["end"])}
+            out["start"] = end(s["start"])
+            out["end"] = end(s["end"])
         out["tension"] = s["tension"]
         kb = {k: s["kb_" + k] for k in ("tension", "continuity", "bias") if s["kb_" + k]}
         if kb:

@@ -12,16 +12,62 @@ from ._curve import CatmullRom
 from ._kochanek_bartels import KochanekBartels
 
 
-#: The fields of the curve file that crspline.load reads (docs/spec.md).
-_FILE_FIELDS = ("points", "alpha", "grid", "end", "tension", "kb", "strict")
+#: The fields of the curve file that crspline.load reads (docs/spec.md's table).
+_FILE_FIELDS = ("points", "alpha", "grid", "closed", "start", "end", "tension", "kb", "strict")
 
 
 def _file_end(e, which):
+    """One end as the file gives it: a name (the core checks it) or a tangent list."""
     if isinstance(e, str):
         return e
     if isinstance(e, list):
         return e
     raise TypeError(f"'{which}' must be \"natural\", \"reflect\" or a tangent [dx/dt, ...], got {type(e).__name__}")
+
+
+def _file_ends(spec):
+    """The ends of a curve file in the core's form: ``'closed'``, one name
+    for both ends, or a pair (start, end).
+
+    The table's words (docs/spec.md): ``"closed": true|false``, ``"start":
+    E``, ``"end": E``, E ``"natural"``, ``"reflect"`` or a tangent list; a
+    missing end is natural. The older compact forms stay readable: ``"end":
+    "closed"``, ``"end": {"start": E, "end": E}``, and a name in ``end``
+    given without ``start`` and ``closed`` applies to both ends. Fields that
+    contradict each other are a ValueError naming them."""
+    closed = spec.get("closed")
+    if "closed" in spec and not isinstance(closed, bool):
+        raise TypeError(f"'closed' must be true or false, got {type(closed).__name__}")
+    has_start, end = "start" in spec, spec.get("end")
+    if isinstance(end, str) and end == "closed":  # compact: "end": "closed"
+        if closed is False:
+            raise ValueError("fields 'closed' and 'end' contradict: \"closed\": false, but \"end\": \"closed\"")
+        if has_start:
+            raise ValueError("fields 'start' and 'end' contradict: \"end\": \"closed\" makes a closed curve, "
+                             "which has no start condition")
+        return "closed"
+    if isinstance(end, _Mapping):  # compact: "end": {"start": E, "end": E}
+        for key in end:
+            if key not in ("start", "end"):
+                raise ValueError(f"unknown field '{key}' in 'end' (expected \"start\" and \"end\")")
+        if closed:
+            raise ValueError("fields 'closed' and 'end' contradict: a closed curve has no end conditions")
+        if has_start:
+            raise ValueError("fields 'start' and 'end' contradict: both give the start condition (\"start\": E, "
+                             "and \"end\": {\"start\": E, ...}); write \"start\": E, \"end\": E")
+        return (_file_end(end.get("start", "natural"), "end.start"), _file_end(end.get("end", "natural"), "end.end"))
+    if closed:
+        given = [key for key in ("start", "end") if key in spec]
+        if given:
+            names = ", ".join(f"'{key}'" for key in ["closed"] + given[:-1]) + f" and '{given[-1]}'"
+            raise ValueError(f"fields {names} contradict: a closed curve has no end conditions")
+        return "closed"
+    if isinstance(end, str) and not has_start and "closed" not in spec:
+        return end  # compact: one name for both ends (the core checks it)
+    if end is not None and not isinstance(end, (str, list)):
+        raise TypeError(f"'end' must be \"natural\", \"reflect\", a tangent [dx/dt, ...], \"closed\" or "
+                        f"{{\"start\": ..., \"end\": ...}}, got {type(end).__name__}")
+    return (_file_end(spec.get("start", "natural"), "start"), _file_end(spec.get("end", "natural"), "end"))
 
 
 def _file_kb(values, which):
@@ -43,10 +89,14 @@ def from_spec(spec):
     returns and ``crspline.load`` reads; docs/spec.md): a ``CatmullRom``, or
     a ``KochanekBartels`` when it has ``kb``. Always float64.
 
-    A field that is not part of the curve file raises ``ValueError`` naming it
-    (``unknown field 'foo'``, the command line's words); ``tangents`` (a
-    Hermite curve, which the command line reads) is refused by name. The
-    values are checked by the core (``SpecError``)."""
+    The fields are the specification table's (``closed``, ``start``,
+    ``end``, ...); the older compact ``end`` forms are read too (see
+    ``_file_ends``), and fields that contradict each other are a
+    ``ValueError`` naming them. A field that is not part of the curve file
+    raises ``ValueError`` naming it (``unknown field 'foo'``, the command
+    line's words); ``tangents`` (a Hermite curve, which the command line
+    reads) is refused by name. The values are checked by the core
+    (``SpecError``)."""
     if not isinstance(spec, _Mapping):
         raise TypeError(f"a curve file holds a JSON object {{\"points\": ...}}, got {type(spec).__name__}")
     for key in spec:
@@ -62,15 +112,7 @@ def from_spec(spec):
     if alpha is not None:
         alpha = _real(alpha, "alpha")
     grid = spec.get("grid")
-    end = spec.get("end", "natural")
-    if isinstance(end, _Mapping):
-        for key in end:
-            if key not in ("start", "end"):
-                raise ValueError(f"unknown field '{key}' in 'end' (expected \"start\" and \"end\")")
-        end = (_file_end(end.get("start", "natural"), "end.start"), _file_end(end.get("end", "natural"), "end.end"))
-    elif not isinstance(end, str):
-        raise TypeError(f"'end' must be \"natural\", \"reflect\", \"closed\" or {{\"start\": ..., \"end\": ...}}, "
-                        f"got {type(end).__name__}")
+    end = _file_ends(spec)
     tension = _real(spec.get("tension", 0.0), "tension")
     strict = spec.get("strict", False)
     if not isinstance(strict, bool):
