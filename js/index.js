@@ -146,6 +146,17 @@ export function catmullRom(points, options = {}) {
   for (const key of Object.keys(options))
     if (!OPTIONS.has(key) && options[key] !== undefined)
       throw inputError(`unknown option '${key}' (options are ${[...OPTIONS].join(', ')})`, key);
+  // The options' ends are the specification table's words (closed, start,
+  // end); a truthy non-boolean closed or a curve file's compact
+  // {"start": E, "end": E} in start / end would otherwise be misread.
+  if (options.closed !== undefined && typeof options.closed !== 'boolean')
+    throw inputError(`closed must be true or false, got ${JSON.stringify(options.closed) ?? String(options.closed)}`, 'closed', null, null, String(options.closed));
+  for (const key of ['start', 'end']) {
+    const e = options[key];
+    if (e !== null && typeof e === 'object' && !('tangent' in e) && typeof e.length !== 'number')
+      throw inputError(`${key} condition must be 'natural', 'reflect' or a tangent ([dx/dt, ...] or {tangent: [...]}), got ${JSON.stringify(e)}` +
+        ' (a curve file\'s "end": {"start": ..., "end": ...} is the options start and end)', key, null, null, JSON.stringify(e));
+  }
   const [flat, dim] = flatten(points, options.dimension);
   const { dimension: _, ...rest } = options;
   return new CatmullRom(new M.Spline(flat, dim, rest));

@@ -53,7 +53,7 @@ export class CRSplineCurve3 extends Curve {
     if (alpha === undefined)
       throw Object.assign(new Error(`curveType must be 'centripetal', 'chordal' or 'catmullrom', got '${this.curveType}'`),
         { field: 'curveType', index: null, component: null, value: String(this.curveType) });
-    const options = { alpha, closed: this.closed };
+    const options = { alpha, closed: Boolean(this.closed) };  // three.js takes any truthy value
     if (!this.closed) options.start = options.end = 'reflect';  // three.js' phantom points 2 P0 - P1
     if (this.curveType === 'catmullrom') {
       // three.js: tangent tension * (P[i+1] - P[i-1]) on the uniform grid;

@@ -196,6 +196,12 @@ test('errors are Error objects with the core words and field / index / component
     [() => catmullRom([[0, 0], [1, 1]], { start: 'clamped' }), /^start condition must be 'natural', 'reflect' or a tangent, got 'clamped'$/, { field: 'start' }],
     [() => catmullRom([[0, 0], [1, 1]], { end: { tangent: [1, 2, 3] } }), /^end tangent has 3 coordinates, expected 2/, { field: 'end' }],
     [() => catmullRom([[0, 0], [1, 1]], { closed: true, start: 'reflect' }), /^a closed curve takes no end conditions$/, { field: 'start' }],
+    // The ends are the table's words (issue 26): closed a boolean, start and
+    // end one end each (a curve file's compact forms are named, not misread).
+    [() => catmullRom([[0, 0], [1, 1]], { closed: 'yes' }), /^closed must be true or false, got "yes"$/, { field: 'closed', value: 'yes' }],
+    [() => catmullRom([[0, 0], [1, 1]], { end: { start: 'reflect', end: 'natural' } }),
+      /^end condition must be 'natural', 'reflect' or a tangent \(\[dx\/dt, \.\.\.\] or \{tangent: \[\.\.\.\]\}\), got \{"start":"reflect","end":"natural"\} \(a curve file's "end": \{"start": \.\.\., "end": \.\.\.\} is the options start and end\)$/, { field: 'end' }],
+    [() => catmullRom([[0, 0], [1, 1]], { end: 'closed' }), /^end condition must be 'natural', 'reflect' or a tangent, got 'closed'$/, { field: 'end' }],
     [() => catmullRom([Array(17).fill(0), Array(17).fill(1)]), /^dimension must be 1 to 16, got 17$/, { field: 'dimension', value: '17' }],
     // What only JavaScript can get wrong, in the same shape.
     [() => catmullRom([[0, 0], [1, 1, 1]]), /^point 1 has 3 coordinates, point 0 has 2$/, { field: 'points', index: 1 }],

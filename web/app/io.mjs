@@ -128,11 +128,15 @@ function checkOptions(o, where) {
   return out;
 }
 
-// The curve file's end conditions ("end" as the command line reads it:
-// "natural" | "reflect" | "closed" | {"start": E, "end": E}) as editor
-// options; a tangent is supported only when it is zero (d3's end), with as
-// many coordinates as the points.
-function endFromFile(e, where, dimension) {
+// The curve file's ends (docs/spec.md, "The curve file") as editor options:
+// the table's words, "closed": true | false, "start": E and "end": E with E
+// "natural", "reflect" or a tangent [dx/dt, ...]; and the compact forms the
+// command line still reads: "end": "closed", "end": {"start": E, "end": E},
+// and a name in "end" with neither "start" nor "closed" beside it, for both
+// ends. Two fields that say different things are an error naming them (the
+// command line's rules, cli/json_input.cpp read_ends). A zero tangent of as
+// many coordinates as the points is the editor's 'zero' (d3's end).
+function endsFromFile(data, where, dimension) {
   const zero = `[${new Array(dimension).fill(0).join(', ')}]`;
   const one = (x, path) => {
     if (x === 'natural' || x === 'reflect') return x;
@@ -141,15 +145,35 @@ function endFromFile(e, where, dimension) {
     }
     throw new Error(`${where}: ${path}: expected "natural", "reflect" or a tangent like ${zero}, got ${JSON.stringify(x)}`);
   };
-  if (e === 'closed') return { closed: true };
-  if (typeof e === 'string') return { closed: false, start: one(e, 'end'), end: one(e, 'end') };
-  if (e && typeof e === 'object' && !Array.isArray(e)) {
-    for (const key of Object.keys(e)) {
+  const { closed, start, end } = data;
+  if (closed !== undefined && typeof closed !== 'boolean') throw new Error(`${where}: closed: expected true or false, got ${JSON.stringify(closed)}`);
+  if (end === 'closed') {  // the compact closed curve
+    if (closed === false) throw new Error(`${where}: end: "end": "closed" contradicts "closed": false`);
+    if (start !== undefined) throw new Error(`${where}: start: a closed curve ("end": "closed") has no start condition`);
+    return { closed: true };
+  }
+  if (closed === true) {
+    if (start !== undefined || end !== undefined) {
+      const key = start !== undefined ? 'start' : 'end';
+      throw new Error(`${where}: ${key}: a closed curve ("closed": true) has no ${key} condition`);
+    }
+    return { closed: true };
+  }
+  if (end && typeof end === 'object' && !Array.isArray(end)) {  // the compact {"start": E, "end": E}
+    if (start !== undefined) throw new Error(`${where}: start: given twice: in "start" and in "end": {"start": ...}`);
+    for (const key of Object.keys(end)) {
       if (key !== 'start' && key !== 'end') throw new Error(`${where}: end: unknown field '${key}' (expected "start" and "end")`);
     }
-    return { closed: false, start: one(e.start ?? 'natural', 'end.start'), end: one(e.end ?? 'natural', 'end.end') };
+    return { closed: false, start: one(end.start ?? 'natural', 'end.start'), end: one(end.end ?? 'natural', 'end.end') };
   }
-  throw new Error(`${where}: end: expected "natural", "reflect", "closed" or {"start": ..., "end": ...}, got ${JSON.stringify(e)}`);
+  if (end !== undefined && typeof end !== 'string' && !Array.isArray(end)) {
+    throw new Error(`${where}: end: expected "natural", "reflect", a tangent like ${zero}, "closed" or {"start": ..., "end": ...}, got ${JSON.stringify(end)}`);
+  }
+  const o = { closed: false };
+  if (start !== undefined) o.start = one(start, 'start');
+  if (typeof end === 'string' && start === undefined && closed === undefined) o.start = o.end = one(end, 'end');  // the compact name for both ends
+  else if (end !== undefined) o.end = one(end, 'end');
+  return o;
 }
 
 // The fields of a curve file the editor reads: the command line's
@@ -158,7 +182,7 @@ function endFromFile(e, where, dimension) {
 // requests (what to compute: t, s, derivatives, ...) are not part of the
 // curve: they are read past and named in `notKept`, which the editor shows.
 // Any other field is an error naming it, never dropped.
-const fileFields = ['points', 'alpha', 'grid', 'tension', 'end', 'kb', 'strict', 'format', 'dimension', 'options'];
+const fileFields = ['points', 'alpha', 'grid', 'tension', 'closed', 'start', 'end', 'kb', 'strict', 'format', 'dimension', 'options'];
 export const requestFields = ['t', 's', 'u', 'arc_fraction', 'knots', 'derivatives', 'accuracy', 'count', 'spacing', 'tolerance', 'summary', 'search'];
 
 function optionsFromFile(data, where, dimension) {
@@ -171,19 +195,20 @@ function optionsFromFile(data, where, dimension) {
   if (data.dimension !== undefined && data.dimension !== dimension) {
     throw new Error(`${where}: dimension is ${JSON.stringify(data.dimension)}, but the points have ${dimension} coordinates`);
   }
-  const top = ['alpha', 'grid', 'tension', 'end', 'kb', 'strict'].filter((k) => data[k] !== undefined);
+  const top = ['alpha', 'grid', 'tension', 'closed', 'start', 'end', 'kb', 'strict'].filter((k) => data[k] !== undefined);
   if (top.length && data.options !== undefined) {
     throw new Error(`${where}: give "options" or the top-level ${top.map((k) => `"${k}"`).join(', ')}, not both`);
   }
   if (data.options !== undefined) return checkOptions(data.options, where);
   const o = {};
   for (const key of ['alpha', 'tension', 'grid', 'kb', 'strict']) if (data[key] !== undefined) o[key] = data[key];
-  if (data.end !== undefined) Object.assign(o, endFromFile(data.end, where, dimension));
+  if (data.closed !== undefined || data.start !== undefined || data.end !== undefined) Object.assign(o, endsFromFile(data, where, dimension));
   return checkOptions(o, where);
 }
 
 /// Parse a curve file: JSON (the curve file of docs/spec.md: {points,
-/// alpha, tension, end}; the older {points, options}; or a bare
+/// alpha, tension, closed, start, end, ...}, its compact "end" forms too;
+/// the older {points, options}; or a bare
 /// [[x, y, ...], ...]) or CSV (one point per line, 2 to 16 numbers; a header
 /// line names the coordinates; # comments are skipped).
 /// Returns { points: Float64Array (flat, `dimension` numbers per point),
@@ -247,17 +272,17 @@ const pairs = (flat) => Array.from({ length: flat.length / 2 }, (_, i) => [flat[
 const rows = (flat, d) => Array.from({ length: flat.length / d }, (_, i) => Array.from(flat.subarray(d * i, d * i + d), num));
 
 /// The curve file (docs/spec.md): the points (`dimension` numbers each) and
-/// the command line's fields, so that every crspline subcommand reads an
-/// export unchanged.
+/// the command line's fields in the table's words ("closed": true, or
+/// "closed": false with "start" and "end"), so that every crspline
+/// subcommand and Python's crspline.load read an export unchanged.
 export function pointsToJson(flat, options, dimension = 2) {
   const o = checkOptions(options, 'options');
   const body = rows(Float64Array.from(flat), dimension).map((p) => `    [${p.join(', ')}]`).join(',\n');
-  const e = (x) => (x === 'zero' ? new Array(dimension).fill(0) : Array.isArray(x) ? `[${x.map(num).join(', ')}]` : x);
-  const same = typeof o.start === 'string' && o.start === o.end && o.start !== 'zero';
-  const text = (x) => (typeof x === 'string' && x.startsWith('[') ? x : JSON.stringify(x));
-  const end = o.closed ? '"closed"' : same ? JSON.stringify(o.start) : `{"start": ${text(e(o.start))}, "end": ${text(e(o.end))}}`;
+  const e = (x) => (x === 'zero' ? `[${new Array(dimension).fill(0).join(', ')}]` : Array.isArray(x) ? `[${x.map(num).join(', ')}]` : JSON.stringify(x));
   const list = (a) => `[${a.map((v) => (Number.isNaN(v) ? 'null' : num(v))).join(', ')}]`;
-  const fields = [o.grid ? `  "grid": ${list(o.grid)}` : `  "alpha": ${num(o.alpha)}`, `  "tension": ${num(o.tension)}`, `  "end": ${end}`];
+  const fields = [o.grid ? `  "grid": ${list(o.grid)}` : `  "alpha": ${num(o.alpha)}`, `  "tension": ${num(o.tension)}`];
+  if (o.closed) fields.push('  "closed": true');
+  else fields.push('  "closed": false', `  "start": ${e(o.start)}`, `  "end": ${e(o.end)}`);
   if (o.kb) fields.push(`  "kb": {${Object.entries(o.kb).map(([k, v]) => `"${k}": ${list(v)}`).join(', ')}}`);
   if (o.strict) fields.push('  "strict": true');
   return `{\n${fields.join(',\n')},\n  "points": [\n${body}\n  ]\n}\n`;

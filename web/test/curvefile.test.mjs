@@ -12,8 +12,8 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { open, idle, pagePoint, canvasPixels, bluePixels } from './harness.mjs';
-import { repoDir } from './support.mjs';
-import { requestFields } from '../app/io.mjs';
+import { repoDir, loadModule } from './support.mjs';
+import { requestFields, parsePoints, pointsToJson, splineOptions } from '../app/io.mjs';
 
 const cli = [process.env.CRSPLINE_CLI, path.join(repoDir, 'build/release/cli/crspline'), path.join(repoDir, 'build/rel/cli/crspline')]
   .find((p) => p && fs.existsSync(p));
@@ -101,13 +101,22 @@ describe('curve files in the editor', () => {
     // difference to them), so the same check runs on inputs where every
     // option the editor holds changes the curve.
     const uneven = [[0, 0], [1, 3], [5, 3.5], [5.5, 0], [9, -1]];
+    // Each with the fields its export must hold: the table's words
+    // ("closed", "start", "end"; issue 26), whichever spelling came in.
     const own = [
-      { alpha: 0 }, { alpha: 1, tension: 0.3 }, { alpha: 0.25, end: 'reflect' }, { end: 'closed' },
-      { alpha: 0.75, end: { start: [0, 0], end: 'reflect' } },
-      { grid: [0, 1, 2.5, 3, 4.5] }, { end: 'closed', grid: [0, 1, 2, 3.5, 4, 5.5] },
-      { kb: { tension: [null, 0.2, -0.1, 0.3, null], continuity: [0, 0.1, 0, -0.2, 0], bias: [0, 0, 0.3, 0, 0] } },
-      { strict: true, tension: 0.2, end: { start: [2, -1], end: 'reflect' } },
-    ].map((o, k) => ({ where: `own input ${k} ${JSON.stringify(o)}`, name: 'own.json', text: JSON.stringify({ points: uneven, ...o }) }));
+      [{ alpha: 0 }], [{ alpha: 1, tension: 0.3 }],
+      [{ alpha: 0.25, end: 'reflect' }, { alpha: 0.25, closed: false, start: 'reflect', end: 'reflect' }],
+      [{ end: 'closed' }, { closed: true }],
+      [{ alpha: 0.75, end: { start: [0, 0], end: 'reflect' } }, { alpha: 0.75, closed: false, start: [0, 0], end: 'reflect' }],
+      [{ grid: [0, 1, 2.5, 3, 4.5] }], [{ end: 'closed', grid: [0, 1, 2, 3.5, 4, 5.5] }, { closed: true, grid: [0, 1, 2, 3.5, 4, 5.5] }],
+      [{ kb: { tension: [null, 0.2, -0.1, 0.3, null], continuity: [0, 0.1, 0, -0.2, 0], bias: [0, 0, 0.3, 0, 0] } }],
+      [{ strict: true, tension: 0.2, end: { start: [2, -1], end: 'reflect' } }, { strict: true, tension: 0.2, closed: false, start: [2, -1], end: 'reflect' }],
+      // The table's words themselves.
+      [{ closed: true, alpha: 0.3 }], [{ closed: false, start: 'reflect', end: [1, -1] }],
+      [{ closed: false, end: 'reflect' }, { closed: false, start: 'natural', end: 'reflect' }],
+      [{ start: [0.5, 2], tension: 0.1 }, { closed: false, start: [0.5, 2], end: 'natural', tension: 0.1 }],
+    ].map(([o, words], k) => ({ where: `own input ${k} ${JSON.stringify(o)}`, name: 'own.json', text: JSON.stringify({ points: uneven, ...o }),
+      words: { points: uneven, ...(words ?? o) } }));
     own.push({ where: 'own CSV', name: 'own.csv', text: 'a,b\n' + uneven.map((p) => p.join(',')).join('\n') + '\n' });
     for (const e of [...found, ...own]) {
       const want = cliLength(e.text, e.name);
@@ -124,7 +133,8 @@ describe('curve files in the editor', () => {
       // Exported back: the same fields (what the curve file holds).
       if (e.where.startsWith('own input')) {
         const back = JSON.parse(await page.evaluate(() => window.editor.exportJson()));
-        for (const [k, v] of Object.entries(JSON.parse(e.text))) assert.deepEqual(back[k], v, `${e.where}: exported ${k}`);
+        for (const [k, v] of Object.entries(e.words)) assert.deepEqual(back[k], v, `${e.where}: exported ${k}`);
+        assert.ok(!back.closed || (back.start === undefined && back.end === undefined), `${e.where}: a closed export has no ends`);
       }
       // Nothing is dropped without a word: a request field is named.
       const keys = e.name.endsWith('.json') ? Object.keys(JSON.parse(e.text)).filter((k) => requestFields.includes(k)) : [];
@@ -164,7 +174,8 @@ describe('curve files in the editor', () => {
     // Exported unedited: the same 3-D file (the same doubles, options).
     const back = JSON.parse(await page.evaluate(() => window.editor.exportJson()));
     assert.deepEqual(back.points, helix);
-    assert.deepEqual([back.alpha, back.tension, back.end], [0.5, 0.25, { start: 'reflect', end: [0, 0, 0] }]);
+    // In the table's words (issue 26; the file said "end": {"start": ..., "end": ...}).
+    assert.deepEqual([back.alpha, back.tension, back.closed, back.start, back.end], [0.5, 0.25, false, 'reflect', [0, 0, 0]]);
     assert.equal(cliLength(JSON.stringify(back), 'back.json'), want);
     // CSV too: a header and 3 numbers per line.
     const csvPoints = JSON.parse(await page.evaluate(() => JSON.stringify(window.editor.fullPoints)));
@@ -309,5 +320,102 @@ describe('curve files in the editor', () => {
     await page.reload();
     await page.waitForFunction(() => window.editor !== undefined);
     assert.equal(await page.isChecked('#y-up'), false);
+  });
+});
+
+// One spelling (issue 26): the curve file's ends are the table's words of
+// docs/spec.md ("closed": true | false, "start": E, "end": E); the compact
+// forms of older files ("end": "closed", "end": {"start": E, "end": E}, a
+// name in "end" alone for both ends) still read the same; the export writes
+// the table's words. Node only: the reader and writer, and the WASM module
+// for "the same curve".
+describe("the curve file's ends in the table's words (issue 26)", () => {
+  const pts = [[0, 0], [1, 3], [5, 3.5], [5.5, 0], [9, -1]];
+  const read = (fields) => parsePoints(JSON.stringify({ points: pts, ...fields }), 'a.json');
+
+  test('every end the table allows reads in its words and in its compact form, with the same options', () => {
+    // [table's words, compact form, the editor's options]
+    const cases = [
+      [{ closed: true }, { end: 'closed' }, { closed: true, start: 'natural', end: 'natural' }],
+      [{ closed: false }, {}, { closed: false, start: 'natural', end: 'natural' }],
+      [{ start: 'reflect', end: 'reflect' }, { end: 'reflect' }, { closed: false, start: 'reflect', end: 'reflect' }],
+      [{ closed: false, start: 'natural', end: 'natural' }, { end: 'natural' }, { closed: false, start: 'natural', end: 'natural' }],
+      [{ start: 'reflect' }, { end: { start: 'reflect' } }, { closed: false, start: 'reflect', end: 'natural' }],
+      [{ closed: false, end: 'reflect' }, { end: { end: 'reflect' } }, { closed: false, start: 'natural', end: 'reflect' }],
+      [{ start: [1, -1], end: 'reflect' }, { end: { start: [1, -1], end: 'reflect' } }, { closed: false, start: [1, -1], end: 'reflect' }],
+      [{ start: [0, 0], end: [2, 0.5] }, { end: { start: [0, 0], end: [2, 0.5] } }, { closed: false, start: 'zero', end: [2, 0.5] }],
+      [{ end: [2, 0.5] }, { end: { end: [2, 0.5] } }, { closed: false, start: 'natural', end: [2, 0.5] }],
+    ];
+    let checked = 0;
+    for (const [words, compact, want] of cases) {
+      const a = read(words).options, b = read(compact).options;
+      for (const [k, v] of Object.entries(want)) assert.deepEqual(a[k], v, `${JSON.stringify(words)}: ${k}`);
+      assert.deepEqual(a, b, `${JSON.stringify(words)} and ${JSON.stringify(compact)}`);
+      // Exported: the table's words, and read back the same.
+      const back = JSON.parse(pointsToJson(read(words).points, a));
+      assert.equal(back.closed, want.closed, JSON.stringify(words));
+      if (want.closed) assert.deepEqual([back.start, back.end], [undefined, undefined], JSON.stringify(words));
+      else assert.deepEqual([back.start, back.end], [want.start === 'zero' ? [0, 0] : want.start, want.end], JSON.stringify(words));
+      assert.deepEqual(read({ closed: back.closed, start: back.start, end: back.end }).options, a);
+      ++checked;
+    }
+    assert.equal(checked, cases.length);
+  });
+
+  test("the table's words and the compact form make the same curve (arc length, Bézier points) in the WASM module", async () => {
+    const M = await loadModule();
+    const forms = [
+      [{ closed: true, alpha: 0 }, { end: 'closed', alpha: 0 }],
+      [{ closed: false, start: 'reflect', end: [1, -2] }, { end: { start: 'reflect', end: [1, -2] } }],
+      [{ start: 'reflect', end: 'reflect', tension: 0.3 }, { end: 'reflect', tension: 0.3 }],
+      [{ closed: false, end: 'reflect' }, { end: { end: 'reflect' } }],
+    ];
+    const curve = (fields) => {
+      const r = read(fields);
+      const c = new M.Spline(r.points, r.dimension, splineOptions(r.options, r.dimension));
+      try { return { length: c.arcLength(), bez: Array.from(c.bezierAll()) }; } finally { c.delete(); }
+    };
+    const lengths = new Set();
+    for (const [words, compact] of forms) {
+      const a = curve(words), b = curve(compact);
+      // The same options build the same curve: identical numbers.
+      assert.deepEqual(a, b, `${JSON.stringify(words)} vs ${JSON.stringify(compact)}`);
+      lengths.add(a.length);
+    }
+    // The four forms are four different curves (so the ends were read, not dropped).
+    assert.equal(lengths.size, forms.length);
+  });
+
+  test('fields that say different things are an error naming them; a closed export has no ends', () => {
+    const bad = [
+      [{ closed: true, start: 'reflect' }, 'JSON: start: a closed curve ("closed": true) has no start condition'],
+      [{ closed: true, end: [1, 0] }, 'JSON: end: a closed curve ("closed": true) has no end condition'],
+      [{ closed: false, end: 'closed' }, 'JSON: end: "end": "closed" contradicts "closed": false'],
+      [{ start: 'natural', end: 'closed' }, 'JSON: start: a closed curve ("end": "closed") has no start condition'],
+      [{ start: 'reflect', end: { end: 'natural' } }, 'JSON: start: given twice: in "start" and in "end": {"start": ...}'],
+      [{ closed: 'yes' }, 'JSON: closed: expected true or false, got "yes"'],
+      [{ closed: 1 }, 'JSON: closed: expected true or false, got 1'],
+      [{ start: 'closed' }, 'JSON: start: expected "natural", "reflect" or a tangent like [0, 0], got "closed"'],
+      [{ start: 'zero' }, 'JSON: start: expected "natural", "reflect" or a tangent like [0, 0], got "zero"'],
+      [{ end: 3 }, 'JSON: end: expected "natural", "reflect", a tangent like [0, 0], "closed" or {"start": ..., "end": ...}, got 3'],
+      [{ closed: true, options: {} }, 'JSON: give "options" or the top-level "closed", not both'],
+    ];
+    for (const [fields, message] of bad) assert.throws(() => read(fields), (e) => e.message === message, `${JSON.stringify(fields)}: expected ${message}`);
+    assert.equal(bad.length, 11);
+    const text = pointsToJson(Float64Array.from(pts.flat()), { alpha: 0.5, tension: 0, closed: true, start: 'reflect', end: [1, 1] });
+    assert.deepEqual(Object.keys(JSON.parse(text)), ['alpha', 'tension', 'closed', 'points']);
+    const open = pointsToJson(Float64Array.from(pts.flat()), { alpha: 0.5, tension: 0, closed: false, start: 'reflect', end: 'zero' });
+    assert.deepEqual(Object.keys(JSON.parse(open)), ['alpha', 'tension', 'closed', 'start', 'end', 'points']);
+    assert.deepEqual(JSON.parse(open).end, [0, 0]);
+  });
+
+  test("the spec table's closed, start and end rows are the words the editor reads and writes", () => {
+    // docs/spec.md's table names the fields; a row the editor did not know
+    // would be refused on import as "field '...' is not supported".
+    const spec = fs.readFileSync(path.join(repoDir, 'docs', 'spec.md'), 'utf8');
+    const rows = [...spec.matchAll(/^\| `([a-z_.]+)`(?:, `([a-z_.]+)`)? \|/gm)].flatMap((m) => [m[1], m[2]]).filter(Boolean);
+    for (const word of ['closed', 'start', 'end']) assert.ok(rows.includes(word), `docs/spec.md's table has no row '${word}' (rows: ${rows.join(', ')})`);
+    const text = pointsToJson(Float64Array.from(pts.flat()), { alpha: 0.5, tension: 0, closed: false, start: 'reflect', end: 'natural' });
+    for (const key of Object.keys(JSON.parse(text))) assert.ok(rows.includes(key), `the export writes '${key}', which docs/spec.md's table does not name`);
   });
 });

@@ -325,7 +325,7 @@ test('io: JSON and CSV round trips are exact; SVG path has one cubic per segment
   const opts = { alpha: 0.25, tension: 0.1, closed: true, start: 'reflect', end: 'zero' };
   const j = parsePoints(pointsToJson(pts, opts), 'a.json');
   assert.deepEqual(Array.from(j.points), Array.from(pts));
-  // A closed curve has no end conditions in the curve file ("end": "closed").
+  // A closed curve has no end conditions in the curve file ("closed": true).
   assert.deepEqual(j.options, { ...opts, start: 'natural', end: 'natural' });
   const open = { ...opts, closed: false };
   assert.deepEqual(parsePoints(pointsToJson(pts, open), 'a.json').options, open);
