@@ -76,6 +76,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <initializer_list>
 #include <map>
 #include <queue>
 #include <span>
@@ -672,6 +673,75 @@ inline decision decide(std::span<const catmull_rom<2>> curves, bool self = false
         p[i] = {b[i], curves[i].closed()};
     }
     return detail::decide_paths(p, self, true, opt);
+}
+
+
+/// The decision as a report value, made by a report_builder B (report.hpp):
+///
+///     {"verdict": "simple" | "crosses" | "touches", "fast_path": bool,
+///      "floor": number,
+///      "crossings": [{"curves": [i, j], "segments": [a, b],
+///                     "u": [[lo, hi], [lo, hi]], "point": [x, y]}],
+///      "touches": [{"curves", "segments", "u": [u, v], "distance",
+///                   "budget_exhausted"}],
+///      "pairs": [{"curves", "segments", "arguments": ["separation", ...]}]}
+///
+/// A whole-curve report puts `verdict` at its top and this object under
+/// "decision" (report.hpp's writer calls this: the keys are written here
+/// once).
+template <class B>
+typename B::value report_decision(B& b, const decision& d) {
+    auto idx2 = [&](const std::array<std::size_t, 2>& a) {
+        auto v = b.array();
+        for (const std::size_t i : a) b.push(v, b.integer(i));
+        return v;
+    };
+    auto nums = [&](std::initializer_list<double> xs) {
+        auto v = b.array();
+        for (const double x : xs) b.push(v, b.number(x));
+        return v;
+    };
+    auto o = b.object();
+    b.set(o, "verdict", b.string(to_string(d.result)));
+    b.set(o, "fast_path", b.boolean(d.fast_path));
+    b.set(o, "floor", b.number(d.floor));
+    auto crossings = b.array();
+    for (const auto& c : d.crossings) {
+        auto x = b.object();
+        b.set(x, "curves", idx2(c.curve));
+        b.set(x, "segments", idx2(c.segment));
+        auto u = b.array();
+        b.push(u, nums({c.u[0][0], c.u[0][1]}));
+        b.push(u, nums({c.u[1][0], c.u[1][1]}));
+        b.set(x, "u", std::move(u));
+        b.set(x, "point", nums({c.point[0], c.point[1]}));
+        b.push(crossings, std::move(x));
+    }
+    b.set(o, "crossings", std::move(crossings));
+    auto touches = b.array();
+    for (const auto& t : d.touches) {
+        auto x = b.object();
+        b.set(x, "curves", idx2(t.curve));
+        b.set(x, "segments", idx2(t.segment));
+        b.set(x, "u", nums({t.u[0], t.u[1]}));
+        b.set(x, "distance", b.number(t.distance));
+        b.set(x, "budget_exhausted", b.boolean(t.budget_exhausted));
+        b.push(touches, std::move(x));
+    }
+    b.set(o, "touches", std::move(touches));
+    auto pairs = b.array();
+    for (const auto& p : d.pairs) {
+        auto x = b.object();
+        b.set(x, "curves", idx2(p.curve));
+        b.set(x, "segments", idx2(p.segment));
+        auto names = b.array();
+        for (unsigned bit = 1; bit <= unresolved; bit <<= 1)
+            if (p.arguments & bit) b.push(names, b.string(argument_names(bit)));
+        b.set(x, "arguments", std::move(names));
+        b.push(pairs, std::move(x));
+    }
+    b.set(o, "pairs", std::move(pairs));
+    return o;
 }
 
 

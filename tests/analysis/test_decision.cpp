@@ -391,3 +391,40 @@ TEST(Decision, ClearanceAgainstBruteForce) {
     EXPECT_NEAR(r.distance, 1e-3, 1e-12);  // by symmetry the lowest point of hi is its vertex (1.5, 1e-3)
     EXPECT_EQ(r.curve, (std::array<std::size_t, 2>{0, 1}));
 }
+
+// The report value: the keys report.hpp's writer puts under "decision".
+struct json_builder {
+    using value = json;
+    value object() { return json::object(); }
+    value array() { return json::array(); }
+    void set(value& o, std::string_view k, value v) { o[std::string(k)] = std::move(v); }
+    void push(value& a, value v) { a.push_back(std::move(v)); }
+    value number(double x) { return x; }
+    value integer(std::size_t n) { return n; }
+    value boolean(bool f) { return f; }
+    value string(std::string_view s) { return std::string(s); }
+    value null() { return nullptr; }
+};
+
+TEST(Decision, ReportValue) {
+    const catmull_rom<2> x(std::vector<P>{P{{0, 0}}, P{{4, 0}}, P{{4, 3}}, P{{2, -2}}}, {.alpha = 0.0});
+    json_builder b;
+    const json r = report_decision(b, decide(x));
+    EXPECT_EQ(r["verdict"], "crosses");
+    EXPECT_EQ(r["fast_path"], false);
+    ASSERT_EQ(r["crossings"].size(), 1u);
+    EXPECT_EQ(r["crossings"][0]["segments"], json::parse("[0, 2]"));
+    EXPECT_EQ(r["crossings"][0]["u"].size(), 2u);
+    EXPECT_TRUE(r["touches"].empty());
+    // Every examined pair names at least one argument, and the crossing pair names "crossing".
+    std::size_t crossing_named = 0;
+    for (const auto& p : r["pairs"]) {
+        EXPECT_FALSE(p["arguments"].empty());
+        for (const auto& a : p["arguments"]) crossing_named += a == "crossing";
+    }
+    EXPECT_EQ(crossing_named, 1u);
+    const json s = report_decision(b, decide(catmull_rom<2>(std::vector<P>{P{{0, 0}}, P{{1, 2}}, P{{3, 3}}, P{{4, 0}}})));
+    EXPECT_EQ(s["verdict"], "simple");
+    EXPECT_EQ(s["fast_path"], true);
+    EXPECT_EQ(s["pairs"][0]["arguments"], json::parse(R"(["paper_rule"])"));
+}
