@@ -156,7 +156,7 @@ struct decided_pair {
 
 struct decision_options {
     bool fast_path = true;             ///< try the paper's certificate first (single curves)
-    std::size_t budget = 1u << 24;     ///< visits in all before every remaining pair is a contact
+    std::size_t budget = 0;            ///< visits in all before every remaining pair is a contact (0: 2^24 or 256 per piece, the larger)
     std::size_t pair_budget = 1u << 17;  ///< visits for one pair of pieces (an overlap or a near tangency)
     bool record_pairs = true;          ///< fill decision::pairs
 };
@@ -551,6 +551,7 @@ struct decision_engine {
         }
         first_piece.push_back(pieces.size());
         out.pieces = pieces.size();
+        if (budget == 0) budget = std::max<std::size_t>(std::size_t(1) << 24, 256 * pieces.size());
     }
 
     // Is the pair (p, q), p < q, consecutive? Returns 1 when p ends where q
