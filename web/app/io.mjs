@@ -83,7 +83,7 @@ function checkPoints(points, where) {
 // what the values may be (alpha and tension in [0, 1], a grid's length and
 // order, a tangent's length, where a KB null may stand) is the library's to
 // judge, in its words: the editor builds the curve when it imports a file
-// (editor.mjs importFile), as the command line and Python do.
+// (files.mjs importFile), as the command line and Python do.
 function checkOptions(o, where) {
   const out = { ...defaultOptions };
   if (o == null) return out;
