@@ -7,6 +7,7 @@ compiled `_crspline` into the `crspline` package.
 import pathlib
 import re
 
+from setuptools import find_packages
 from skbuild import setup
 
 HERE = pathlib.Path(__file__).resolve().parent
@@ -17,7 +18,9 @@ setup(
     version=VERSION,
     description="Cubic Catmull-Rom curves in any dimension, over NumPy",
     long_description="Python bindings of the crspline C++ library; see docs/python.md.",
-    packages=["crspline"],
+    # The package and any subpackage (every module in them ships: the
+    # package is split one job a module).
+    packages=find_packages(include=["crspline", "crspline.*"]),
     package_data={"crspline": ["py.typed", "*.pyi"]},
     cmake_source_dir=".",
     cmake_args=["-DCMAKE_BUILD_TYPE=Release"],
