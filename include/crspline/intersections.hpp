@@ -339,10 +339,26 @@ intersection_result<D, T> find_intersections_among(const catmull_rom<D, T>& c, T
     }
 
     std::vector<detail::box<D, T>> boxes(n);
+    // Zero-length segments (a knot interval of 0: coincident points with
+    // alpha > 0, or a segment whose Bezier points are one point) join the
+    // segments on either side at their shared point, as a joint does:
+    // segments joined through a run of them are neighbours (issue 31: the
+    // line 0,0 / 1,0 / 1,0 / 2,0 does not cross itself at 1,0). zero_before[k]
+    // counts them among segments [0, k); empty when there are none.
+    std::vector<std::size_t> zero_before;
     for (std::size_t i = 0; i < n; ++i) {
         const auto bx = detail::box_of(bez[i]);
         boxes[i] = {bx[0], bx[1]};
+        if (c.segment(i).h == 0 || bx[0] == bx[1]) {
+            if (zero_before.empty()) zero_before.assign(n + 1, 0);
+            zero_before[i + 1] = 1;
+        }
     }
+    for (std::size_t k = 0; k < zero_before.size() && k < n; ++k) zero_before[k + 1] += zero_before[k];
+    // Whether every segment in [a, b) has zero length (true when empty).
+    const auto all_zero = [&](std::size_t a, std::size_t b) {
+        return a >= b || (!zero_before.empty() && zero_before[b] - zero_before[a] == b - a);
+    };
     // Candidate pairs by their boxes in absolute coordinates: pad by the
     // rounding of those coordinates too, so no pair is dropped for it (the
     // per-pair search below is relative and exact to the tolerance).
@@ -352,9 +368,13 @@ intersection_result<D, T> find_intersections_among(const catmull_rom<D, T>& c, T
         for (const std::size_t j : candidates.row(i)) {
             if (!detail::boxes_meet(boxes[i], boxes[j], pad)) continue;
             // Joint of adjacent segments: (end of i, start of j) or, closing
-            // a closed curve, (start of i = 0, end of j = n - 1).
-            const bool next = j == i + 1;
-            const bool wrap = c.closed() && i == 0 && j == n - 1 && n > 2;
+            // a closed curve, (start of i = 0, end of j = n - 1); either
+            // through zero-length segments between them.
+            const bool next = all_zero(i + 1, j);
+            const bool wrap = c.closed() && n > 2 && all_zero(0, i) && all_zero(j + 1, n);
+            // A zero-length segment is its neighbours' shared point: they
+            // meet it there and nowhere else.
+            if ((next || wrap) && (all_zero(i, i + 1) || all_zero(j, j + 1))) continue;
             const auto joint = next ? detail::pair_joint::next : wrap ? detail::pair_joint::wrap : detail::pair_joint::none;
             const auto& A = c.segment(i);
             const auto& B = c.segment(j);

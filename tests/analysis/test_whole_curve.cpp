@@ -110,6 +110,116 @@ TEST(Intersections, AgreeWithPolylinesOnRandomCurves) {
     EXPECT_GT(crossings, count / 10);
 }
 
+// Issue 31 point 4: segments joined through zero-length segments (repeated
+// points, alpha > 0) are neighbours, meeting at their shared point by
+// construction: the straight line 0,0 / 1,0 / 1,0 / 2,0 does not cross
+// itself, open or closed, and the certificate's search agrees.
+TEST(Intersections, ZeroLengthSegmentsJoinTheirNeighbours) {
+    const std::vector<std::vector<P2>> cases{
+        {P2{{0, 0}}, P2{{1, 0}}, P2{{1, 0}}, P2{{2, 0}}},                         // the issue's line
+        {P2{{0, 0}}, P2{{1, 0}}, P2{{1, 0}}, P2{{1, 0}}, P2{{1, 1}}, P2{{2, 3}}},  // a run of three, a turn
+        {P2{{0, 0}}, P2{{1, 0}}, P2{{1, 1}}, P2{{0, 1}}, P2{{0, 0}}},              // closed: repeated across the seam
+        {P2{{0, 0}}, P2{{0, 0}}, P2{{1, 0}}, P2{{1, 1}}, P2{{0, 1}}, P2{{0, 0}}},  // closed: both sides of it
+    };
+    int checked = 0;
+    for (std::size_t k = 0; k < cases.size(); ++k)
+        for (const double alpha : {0.5, 1.0}) {
+            const bool closed = k >= 2;
+            const catmull_rom<2> c(cases[k], {.alpha = alpha, .closed = closed});
+            const auto r = find_intersections(c);
+            EXPECT_TRUE(r.intersections.empty()) << "case " << k << " alpha " << alpha << ": segments "
+                                                 << r.intersections[0].segments[0] << " and "
+                                                 << r.intersections[0].segments[1];
+            EXPECT_TRUE(r.overlaps.empty()) << "case " << k;
+            EXPECT_TRUE(r.complete);
+            const auto cert = certify_intersection_free(c);
+            EXPECT_FALSE(cert.certified);  // coincident points: not certified, but not crossing either
+            EXPECT_EQ(cert.failed_rule, certify_rule::coincident_points);
+            EXPECT_EQ(cert.intersects, std::optional<bool>(false)) << "case " << k << " alpha " << alpha;
+            ++checked;
+        }
+    EXPECT_EQ(checked, 8);
+    // A real crossing away from the repeated point is still found: the
+    // figure eight of FigureEightCrossesOnce with its second point doubled.
+    const catmull_rom<2> eight({P2{{0, 0}}, P2{{4, 4}}, P2{{4, 4}}, P2{{4, 0}}, P2{{0, 4}}});
+    const auto r = find_intersections(eight);
+    ASSERT_EQ(r.intersections.size(), 1u);
+    EXPECT_EQ(r.intersections[0].segments, (std::array<std::size_t, 2>{0, 3}));
+}
+
+// Seeded random polygons with runs of repeated points (alpha > 0, open and
+// closed, runs across a closed curve's seam too): the curve is the Hermite
+// curve of the same points without the repeats, with the same tangents and
+// knots (a zero-length segment only has a knot interval of 0), and its
+// self-intersections are that curve's, segment for segment: none at a
+// shared point, every real crossing found.
+TEST(Intersections, RepeatedPointsAddNoCrossings) {
+    CRSPLINE_SEEDED(seed, 3104);
+    std::mt19937_64 rng(seed);
+    std::size_t curves = 0, zero_segments = 0, crossings = 0;
+    const std::size_t count = std::size_t(200 * property_scale());
+    for (std::size_t rep = 0; rep < count; ++rep) {
+        const double alpha = std::array{0.5, 1.0, 0.25}[rep % 3];
+        const bool closed = rep % 3 == 1;
+        const auto base = crspline::test::random_polygon<2>(rng, 5 + rep % 6, 1.0);
+        // Repeat one or two vertices one to three times; a closed curve
+        // sometimes ends where it starts (a zero chord across the seam).
+        std::vector<P2> p;
+        std::uniform_int_distribution<std::size_t> pick(0, base.size() - 1), times(1, 3);
+        const std::size_t r1 = pick(rng), r2 = rep % 2 ? pick(rng) : base.size();
+        for (std::size_t i = 0; i < base.size(); ++i) {
+            p.push_back(base[i]);
+            if (i == r1 || i == r2)
+                for (std::size_t t = times(rng); t > 0; --t) p.push_back(base[i]);
+        }
+        if (closed && rep % 2 == 0) p.push_back(base[0]);
+        const catmull_rom<2> c(p, {.alpha = alpha, .closed = closed});
+        // The same curve without its zero-length segments.
+        std::vector<std::size_t> kept;  // segments of c with a length
+        for (std::size_t i = 0; i < c.segment_count(); ++i)
+            if (c.grid()[i + 1] > c.grid()[i]) kept.push_back(i);
+            else ++zero_segments;
+        std::vector<P2> q, out, in;
+        std::vector<double> g;
+        for (const std::size_t i : kept) {
+            q.push_back(c.bezier(i)[0]);
+            out.push_back(c.tangents(i)[0]);
+            g.push_back(c.grid()[i]);
+        }
+        in.assign(q.size(), P2{});
+        for (std::size_t k = 0; k < kept.size(); ++k) in[(k + 1) % q.size()] = c.tangents(kept[k])[1];
+        if (!closed) {
+            q.push_back(c.bezier(kept.back())[3]);
+            out.push_back(P2{});
+            in.push_back(c.tangents(kept.back())[1]);
+        }
+        g.push_back(c.grid()[kept.back() + 1]);
+        const auto h = catmull_rom<2>::hermite(std::span<const P2>(q), std::span<const P2>(out),
+                                               std::span<const P2>(in), std::span<const double>(g), closed);
+        ASSERT_EQ(h.segment_count(), kept.size());
+        const auto rc = find_intersections(c), rh = find_intersections(h);
+        ASSERT_TRUE(rc.complete && rh.complete) << "rep " << rep;
+        const double scale = crspline::test::scale_of(p);
+        ASSERT_EQ(rc.intersections.size(), rh.intersections.size()) << "rep " << rep << " alpha " << alpha;
+        for (std::size_t k = 0; k < rc.intersections.size(); ++k) {
+            const auto& x = rc.intersections[k];
+            const auto& y = rh.intersections[k];
+            EXPECT_EQ(kept[y.segments[0]], x.segments[0]) << "rep " << rep;
+            EXPECT_EQ(kept[y.segments[1]], x.segments[1]) << "rep " << rep;
+            // The same cubics up to the rounding of h times the tangent: the
+            // polished meetings agree to the search's own precision.
+            EXPECT_LE(norm(x.point - y.point), 1e-9 * scale) << "rep " << rep;
+            ++crossings;
+        }
+        ++curves;
+    }
+    std::printf("repeated points: %zu curves, %zu zero-length segments, %zu crossings\n", curves, zero_segments,
+                crossings);
+    EXPECT_EQ(curves, count);
+    EXPECT_GE(zero_segments, count);  // at least one repeat per curve
+    EXPECT_GT(crossings, count / 20);  // real crossings were there to find
+}
+
 TEST(Intersections, ThreeDClosestApproaches) {
     // The figure eight in the plane z = 0, then with one vertex lifted.
     std::vector<P3> p{P3{{0, 0, 0}}, P3{{4, 4, 0}}, P3{{4, 0, 0}}, P3{{0, 4, 0}}};
