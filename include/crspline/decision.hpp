@@ -210,6 +210,13 @@ struct decision_engine {
     std::map<std::array<std::size_t, 4>, unsigned> pair_flags;
     std::map<std::array<std::size_t, 4>, std::size_t> contact_index;
     std::size_t budget = 0, pair_budget = 0;
+    static constexpr std::size_t npos = std::size_t(-1);
+    // Per curve: each segment's rank among the non-point segments, and its
+    // neighbours (the next and previous non-point segments sharing its end
+    // and start point exactly; npos if none).
+    std::vector<std::vector<std::size_t>> rank, next_seg, prev_seg;
+    std::vector<std::size_t> nonpoint;
+    std::vector<std::array<std::array<double, 2>, 2>> crossing_range;  // per crossing: curve ranges (rank + u)
 
     static double norm1(const P& d) noexcept { return std::abs(d[0]) + std::abs(d[1]); }
     double margin(double e, const P& d) const noexcept { return (e + 10 * eps * M) * norm1(d); }
@@ -323,16 +330,39 @@ struct decision_engine {
         return r;
     }
 
+    // One side of F: a segment f on s in [0, 1], or two consecutive
+    // segments f then g on s in [0, 2] (u = s - 1 in g): a crossing at or
+    // next to a vertex. The curve is continuous there and its derivative in
+    // s jumps at most; the mean value form below needs only that the
+    // derivative's enclosure over S holds every one-sided derivative in S
+    // (F(x) - F(m) is the integral of the derivative along the segment from
+    // m to x, an average of values in that enclosure).
+    struct side {
+        const std::array<ipoint, 4>* f = nullptr;
+        const std::array<ipoint, 4>* g = nullptr;
+        ipoint at(double s) const { return g && s >= 1 ? eval(*g, interval::point(s) - interval::point(1)) : eval(*f, interval::point(s)); }
+        ipoint slope(const interval& S) const {
+            const bool in_f = S.lo < 1 || !g, in_g = g && S.hi >= 1;
+            ipoint r{};
+            if (in_f) r = deriv(*f, g ? interval{S.lo, std::min(S.hi, 1.0)} : S);
+            if (in_g) {
+                const ipoint q = deriv(*g, interval{std::max(S.lo, 1.0), S.hi} - interval::point(1));
+                r = in_f ? ipoint{hull(r[0], q[0]), hull(r[1], q[1])} : q;
+            }
+            return r;
+        }
+    };
+
     // Krawczyk's operator K(X) = m - C F(m) + (I - C J(X)) (X - m) for
     // F(u, v) = A(u) - B(v); K(X) strictly inside X proves exactly one zero
     // in X, with every J in J(X) invertible. X is tightened to K(X) & X.
-    bool krawczyk(const std::array<ipoint, 4>& A, const std::array<ipoint, 4>& B, std::array<interval, 2>& X) const {
+    static bool krawczyk(const side& A, const side& B, std::array<interval, 2>& X) {
         bool proved = false;
         for (int it = 0; it < 6; ++it) {
             const double m[2] = {X[0].mid(), X[1].mid()};
-            const ipoint fa = eval(A, interval::point(m[0])), fb = eval(B, interval::point(m[1]));
+            const ipoint fa = A.at(m[0]), fb = B.at(m[1]);
             const ipoint F{fa[0] - fb[0], fa[1] - fb[1]};
-            const ipoint ja = deriv(A, X[0]), jb = deriv(B, X[1]);
+            const ipoint ja = A.slope(X[0]), jb = B.slope(X[1]);
             const interval J[2][2] = {{ja[0], -jb[0]}, {ja[1], -jb[1]}};
             const double j00 = J[0][0].mid(), j01 = J[0][1].mid(), j10 = J[1][0].mid(), j11 = J[1][1].mid();
             const double det = j00 * j11 - j01 * j10;
@@ -361,45 +391,140 @@ struct decision_engine {
         return proved;
     }
 
-    bool try_crossing(const piece& a, const piece& b) {
-        const auto& A = exact[a.curve][a.segment];
-        const auto& B = exact[b.curve][b.segment];
-        const double wa = (a.u1 - a.u0) / 4, wb = (b.u1 - b.u0) / 4;
-        interval U{std::max(0.0, a.u0 - wa), std::min(1.0, a.u1 + wa)};
-        interval V{std::max(0.0, b.u0 - wb), std::min(1.0, b.u1 + wb)};
-        if (a.curve == b.curve && a.segment == b.segment) {
-            // Keep u and v apart: u = v is a trivial zero of F.
-            if (a.u1 <= b.u0) {
-                const double g = (b.u0 - a.u1) / 3;
-                U.hi = std::min(U.hi, a.u1 + g);
-                V.lo = std::max(V.lo, b.u0 - g);
-            } else {
-                const double g = (a.u0 - b.u1) / 3;
-                V.hi = std::min(V.hi, b.u1 + g);
-                U.lo = std::max(U.lo, a.u0 - g);
+    // The side of piece p for Krawczyk's test, its parameter range in s, the
+    // domain of s, and where s = 0 lies along the curve (the rank of its
+    // first segment among the curve's non-point segments). With `chain`, a
+    // piece at an end of its segment takes the neighbouring segment along.
+    struct side_of {
+        side sd;
+        double s0, s1, dom, base;
+        std::size_t f_seg, g_seg;
+    };
+    side_of make_side(const piece& p, bool chain) const {
+        const auto& ex = exact[p.curve];
+        const std::size_t nx = next_seg[p.curve][p.segment], pv = prev_seg[p.curve][p.segment];
+        const double r = double(rank[p.curve][p.segment]);
+        if (chain && p.u1 == 1 && nx != npos)
+            return {{&ex[p.segment], &ex[nx]}, p.u0, p.u1, 2, r, p.segment, nx};
+        if (chain && p.u0 == 0 && pv != npos)
+            return {{&ex[pv], &ex[p.segment]}, p.u0 + 1, p.u1 + 1, 2, r - 1, pv, p.segment};
+        return {{&ex[p.segment], nullptr}, p.u0, p.u1, 1, r, p.segment, npos};
+    }
+    // Do the curve ranges [x0, x1] and [y0, y1] (curve coordinates: rank +
+    // u) overlap, around a closed curve of n non-point segments too?
+    static bool overlap(double x0, double x1, double y0, double y1, bool closed_curve, double n) {
+        for (const double k : {-n, 0.0, n})
+            if ((closed_curve || k == 0) && x0 <= y1 + k && y0 + k <= x1) return true;
+        return false;
+    }
+
+    bool try_crossing(const piece& a, const piece& b, bool chain) {
+        const side_of A = make_side(a, chain), B = make_side(b, chain);
+        const bool same = a.curve == b.curve;
+        const double n = double(nonpoint[a.curve]);
+        // Inflate each range by a quarter of its width, within its domain;
+        // on one curve, by less than a third of the gap between them, so
+        // that the boxes never hold a point paired with itself (u = v: a
+        // zero of F that is no crossing).
+        double ia = (A.s1 - A.s0) / 4, ib = (B.s1 - B.s0) / 4;
+        if (same) {
+            const double x0 = A.base + A.s0, x1 = A.base + A.s1, y0 = B.base + B.s0, y1 = B.base + B.s1;
+            double gap = std::numeric_limits<double>::infinity();
+            for (const double k : {-n, 0.0, n}) {
+                if (!closed[a.curve] && k != 0) continue;
+                gap = std::min({gap, std::abs(y0 + k - x1), std::abs(x0 - (y1 + k))});
+                if (x0 <= y1 + k && y0 + k <= x1) gap = 0;
             }
-            if (!(U.hi < V.lo || V.hi < U.lo)) return false;
+            if (!(gap > 0)) return false;
+            ia = std::min(ia, gap / 3);
+            ib = std::min(ib, gap / 3);
         }
+        interval U{std::max(0.0, A.s0 - ia), std::min(A.dom, A.s1 + ia)};
+        interval V{std::max(0.0, B.s0 - ib), std::min(B.dom, B.s1 + ib)};
+        if (same && overlap(A.base + U.lo, A.base + U.hi, B.base + V.lo, B.base + V.hi, closed[a.curve], n)) return false;
         std::array<interval, 2> X{U, V};
-        if (!krawczyk(A, B, X)) return false;
+        if (!krawczyk(A.sd, B.sd, X)) return false;
         // One crossing per zero: a neighbouring pair of pieces may prove the same one.
-        for (const auto& c : out.crossings)
-            if (c.curve[0] == a.curve && c.curve[1] == b.curve && c.segment[0] == a.segment &&
-                c.segment[1] == b.segment && c.u[0][0] <= X[0].hi && X[0].lo <= c.u[0][1] && c.u[1][0] <= X[1].hi &&
-                X[1].lo <= c.u[1][1])
-                return true;
+        const std::array<std::array<double, 2>, 2> g{{{A.base + X[0].lo, A.base + X[0].hi}, {B.base + X[1].lo, B.base + X[1].hi}}};
+        for (std::size_t k = 0; k < out.crossings.size(); ++k) {
+            const auto& c = out.crossings[k];
+            const auto& h = crossing_range[k];
+            for (const int flip : {0, 1}) {
+                const std::size_t p = std::size_t(flip), q = std::size_t(1 - flip);
+                if (c.curve[p] == a.curve && c.curve[q] == b.curve &&
+                    overlap(h[p][0], h[p][1], g[0][0], g[0][1], closed[a.curve], double(nonpoint[a.curve])) &&
+                    overlap(h[q][0], h[q][1], g[1][0], g[1][1], closed[b.curve], double(nonpoint[b.curve])))
+                    return true;
+            }
+        }
+        // Reported in the segment that holds the middle of the interval
+        // (the interval may reach past that segment's end at a vertex).
+        auto place = [](const side_of& sd, const interval& x, std::size_t& seg, std::array<double, 2>& u) {
+            if (sd.g_seg != npos && x.mid() >= 1) {
+                seg = sd.g_seg;
+                u = {x.lo - 1, x.hi - 1};
+            } else {
+                seg = sd.f_seg;
+                u = {x.lo, x.hi};
+            }
+        };
         proved_crossing c;
         c.curve = {a.curve, b.curve};
-        c.segment = {a.segment, b.segment};
-        c.u = {{{X[0].lo, X[0].hi}, {X[1].lo, X[1].hi}}};
-        c.point = bezier_at(curves[a.curve][a.segment], X[0].mid());
+        place(A, X[0], c.segment[0], c.u[0]);
+        place(B, X[1], c.segment[1], c.u[1]);
+        c.point = bezier_at(curves[a.curve][c.segment[0]], (c.u[0][0] + c.u[0][1]) / 2);
         out.crossings.push_back(c);
+        crossing_range.push_back(g);
         return true;
     }
 
+    // Do two pieces run along each other within their rounding margins?
+    // Both flat (their control points within w of their chord lines, w =
+    // 2 (their error bounds) + 16 eps M), their chords parallel to within w
+    // over their length, each one's end points within w of the other's
+    // chord line, the chords' projections overlapping. Such pieces are
+    // within a few w of each other all along (an overlap, as in a fold, or
+    // a tangency at the margins' scale); no separating axis can ever be
+    // proved for them and their halves repeat the same: a contact at once,
+    // instead of 2^32 pieces down to the floor.
+    bool along(const piece& a, const piece& b) const {
+        const P ca = a.b[3] - a.b[0], cb = b.b[3] - b.b[0];
+        const double la = norm(ca), lb = norm(cb), w = 2 * (a.err + b.err) + 16 * eps * M;
+        if (!(la > w) || !(lb > w)) return false;
+        auto off = [](const P& x, const P& o, const P& c, double l) { return std::abs(cross2(x - o, c)) / l; };
+        for (std::size_t k = 1; k < 3; ++k)
+            if (off(a.b[k], a.b[0], ca, la) > w || off(b.b[k], b.b[0], cb, lb) > w) return false;
+        if (std::abs(cross2(ca, cb)) > w * std::max(la, lb)) return false;
+        if (off(b.b[0], a.b[0], ca, la) > w || off(b.b[3], a.b[0], ca, la) > w) return false;
+        const double p0 = dot(b.b[0] - a.b[0], ca) / la, p1 = dot(b.b[3] - a.b[0], ca) / la;
+        return std::max(p0, p1) > 0 && std::min(p0, p1) < la;
+    }
+    static double cross2(const P& x, const P& y) noexcept { return x[0] * y[1] - x[1] * y[0]; }
+
+    // A contact's distance and where: the closest of nine samples of b to
+    // the polyline through nine samples of a (rounded; the pieces are small
+    // or flat, so this is their distance to within the floor).
     void add_contact(const piece& a, const piece& b, bool exhausted) {
-        const double ua = (a.u0 + a.u1) / 2, ub = (b.u0 + b.u1) / 2;
-        const double dist = norm(bezier_at(curves[a.curve][a.segment], ua) - bezier_at(curves[b.curve][b.segment], ub));
+        const auto& ga = curves[a.curve][a.segment];
+        const auto& gb = curves[b.curve][b.segment];
+        double ua = (a.u0 + a.u1) / 2, ub = (b.u0 + b.u1) / 2, dist = std::numeric_limits<double>::infinity();
+        constexpr int n = 8;
+        std::array<P, n + 1> sa, sb;
+        for (int k = 0; k <= n; ++k) {
+            sa[std::size_t(k)] = bezier_at(ga, a.u0 + (a.u1 - a.u0) * k / n);
+            sb[std::size_t(k)] = bezier_at(gb, b.u0 + (b.u1 - b.u0) * k / n);
+        }
+        for (int l = 0; l <= n; ++l)
+            for (int k = 0; k < n; ++k) {
+                const P e = sa[std::size_t(k) + 1] - sa[std::size_t(k)], x = sb[std::size_t(l)] - sa[std::size_t(k)];
+                const double ee = dot(e, e), w = ee > 0 ? std::clamp(dot(x, e) / ee, 0.0, 1.0) : 0.0;
+                const double dd = norm(x - w * e);
+                if (dd < dist) {
+                    dist = dd;
+                    ua = a.u0 + (a.u1 - a.u0) * (k + w) / n;
+                    ub = b.u0 + (b.u1 - b.u0) * l / n;
+                }
+            }
         const std::array<std::size_t, 4> key{a.curve, a.segment, b.curve, b.segment};
         const auto it = contact_index.find(key);
         if (it != contact_index.end()) {
@@ -450,13 +575,22 @@ struct decision_engine {
             if (separated(t.a, t.b)) { f |= separation; continue; }
             if (t.corner && apart_at_joint(t.a, t.b)) { f |= joint; continue; }
             if (!t.corner && (t.a.depth + t.b.depth > 0 || t.a.segment != t.b.segment || t.a.curve != t.b.curve) &&
-                try_crossing(t.a, t.b)) {
+                try_crossing(t.a, t.b, false)) {
                 f |= crossing;
+                continue;
+            }
+            if (!t.corner && along(t.a, t.b)) {  // an overlap or a tangency along a stretch: a contact
+                add_contact(t.a, t.b, false);
+                f |= unresolved;
                 continue;
             }
             const double ea = extent(t.a), eb = extent(t.b);
             const bool can_a = t.a.depth < max_depth, can_b = t.b.depth < max_depth;
-            if (std::max(ea, eb) <= floor || (!can_a && !can_b)) {  // a contact
+            if (std::max(ea, eb) <= floor || (!can_a && !can_b)) {  // a contact, unless it crosses at a vertex
+                if (!t.corner && try_crossing(t.a, t.b, true)) {
+                    f |= crossing;
+                    continue;
+                }
                 add_contact(t.a, t.b, false);
                 f |= unresolved;
                 continue;
@@ -516,6 +650,30 @@ struct decision_engine {
                     }
         }
         M = std::nextafter(M * (1 + 1e-12), std::numeric_limits<double>::infinity());
+        for (std::size_t ci = 0; ci < curves.size(); ++ci) {
+            const auto& c = curves[ci];
+            const std::size_t n = c.size();
+            auto point_seg = [&](std::size_t s) { return c[s][0] == c[s][1] && c[s][1] == c[s][2] && c[s][2] == c[s][3]; };
+            std::vector<std::size_t> order;
+            rank.emplace_back(n, npos);
+            next_seg.emplace_back(n, npos);
+            prev_seg.emplace_back(n, npos);
+            for (std::size_t s = 0; s < n; ++s)
+                if (!point_seg(s)) {
+                    rank[ci][s] = order.size();
+                    order.push_back(s);
+                }
+            nonpoint.push_back(order.size());
+            for (std::size_t k = 0; k < order.size(); ++k) {
+                const bool last = k + 1 == order.size();
+                if (last && !closed[ci]) continue;
+                const std::size_t s = order[k], t = order[last ? 0 : k + 1];
+                if (s != t && c[s][3] == c[t][0]) {
+                    next_seg[ci][s] = t;
+                    prev_seg[ci][t] = s;
+                }
+            }
+        }
         floor = std::ldexp(M, -32);
         out.floor = floor;
         // 2. Monotone pieces of every segment that is not a single point.

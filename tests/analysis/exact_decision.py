@@ -70,10 +70,11 @@ def cross(a, b):
 
 class Piece:
     """Control points as integers over 2**shift (shift relative to the curve's scale)."""
-    __slots__ = ("b", "shift", "seg", "start_is_joint", "end_is_joint", "depth")
+    __slots__ = ("b", "shift", "seg", "depth", "at_start", "at_end")
 
-    def __init__(self, b, shift, seg, depth):
+    def __init__(self, b, shift, seg, depth, at_start=True, at_end=True):
         self.b, self.shift, self.seg, self.depth = b, shift, seg, depth
+        self.at_start, self.at_end = at_start, at_end  # touches its segment's u = 0 / u = 1
 
 
 def halve(p):
@@ -81,7 +82,8 @@ def halve(p):
     f = lambda *t: tuple(sum(x[k] * w for x, w in t) for k in range(2))
     l = [f((b0, 8)), f((b0, 4), (b1, 4)), f((b0, 2), (b1, 4), (b2, 2)), f((b0, 1), (b1, 3), (b2, 3), (b3, 1))]
     r = [l[3], f((b1, 2), (b2, 4), (b3, 2)), f((b2, 4), (b3, 4)), f((b3, 8))]
-    return Piece(l, p.shift + 3, p.seg, p.depth + 1), Piece(r, p.shift + 3, p.seg, p.depth + 1)
+    return (Piece(l, p.shift + 3, p.seg, p.depth + 1, p.at_start, False),
+            Piece(r, p.shift + 3, p.seg, p.depth + 1, False, p.at_end))
 
 
 def common(p, q):
@@ -132,8 +134,10 @@ def joint_apart(a, b):
 
 
 def crossing_lemma(a, b):
-    """The rectangle argument in the frame of the two chords (exact)."""
-    dA, dB = sub(a[3], a[0]), sub(b[3], b[0])
+    """The rectangle argument in the frame of the two chords (exact). a and b
+    are control points of paths (one Bézier piece, or two end to end): each
+    path lies in the hull of its points and runs from the first to the last."""
+    dA, dB = sub(a[-1], a[0]), sub(b[-1], b[0])
     D = cross(dA, dB)
     if D == 0:
         return False
@@ -144,16 +148,42 @@ def crossing_lemma(a, b):
     tA = [T(x) for x in a]
     x0, x1 = min(sB), max(sB)
     y0, y1 = min(tA), max(tA)
-    if not (S(a[0]) < x0 and S(a[3]) > x1):
+    if not (S(a[0]) < x0 and S(a[-1]) > x1):
         return False
-    tb0, tb3 = T(b[0]), T(b[3])
+    tb0, tb3 = T(b[0]), T(b[-1])
     return (tb0 < y0 and tb3 > y1) or (tb3 < y0 and tb0 > y1)
 
 
-def decide_pair(p, q, corner, out):
+def chained(p, ctx):
+    """p's path continued through the vertex at its segment's end or start
+    into the neighbouring segment's piece of the same depth, as a list of
+    control points (two Bézier pieces, end to end), or None."""
+    segs, nxt, prv = ctx
+    return chained_with_key(p, ctx)[0]
+
+
+def chained_with_key(p, ctx):
+    """(chained(p), the vertex it passes through as "v<segment starting there>")."""
+    segs, nxt, prv = ctx
+    if p.at_end and nxt.get(p.seg) is not None:
+        q = Piece(list(segs[nxt[p.seg]]), 0, nxt[p.seg], 0)
+        while q.depth < p.depth:
+            q = halve(q)[0]
+        a, b = common(p, q)
+        return a + b, "v%d" % nxt[p.seg]
+    if p.at_start and prv.get(p.seg) is not None:
+        q = Piece(list(segs[prv[p.seg]]), 0, prv[p.seg], 0)
+        while q.depth < p.depth:
+            q = halve(q)[1]
+        a, b = common(q, p)
+        return a + b, "v%d" % p.seg
+    return None, None
+
+
+def decide_pair(p, q, corner, out, ctx=None):
     """out: dict with 'crossing' (bool) and 'undecided' (int)."""
     stack = [(p, q, corner)]
-    crossed = False
+    crossed = set()  # keys of the crossings: ("s<segment>" or "v<vertex>") pairs
     while stack:
         a, b, c = stack.pop()
         pa, pb = common(a, b)
@@ -162,9 +192,16 @@ def decide_pair(p, q, corner, out):
         if c and joint_apart(pa, pb):
             continue
         if not c and crossing_lemma(pa, pb):
-            crossed = True
+            crossed.add(tuple(sorted(("s%d" % a.seg, "s%d" % b.seg))))
             continue
         if a.depth >= MAX_DEPTH and b.depth >= MAX_DEPTH:
+            # A crossing at a vertex: the paths through it, chained (both
+            # pieces are at the same depth, so on the same integer scale).
+            if not c and ctx is not None:
+                (ca, ka), (cb, kb) = chained_with_key(a, ctx), chained_with_key(b, ctx)
+                if (ca is not None or cb is not None) and crossing_lemma(ca or a.b, cb or b.b):
+                    crossed.add(tuple(sorted((ka or "s%d" % a.seg, kb or "s%d" % b.seg))))
+                    continue
             out["undecided"] += 1
             continue
         ea = max(max(x[k] for x in pa) - min(x[k] for x in pa) for k in range(2))
@@ -212,11 +249,21 @@ def decide_curve(segments, closed):
             l, r = halve(p)
             stack.append(r)
             stack.append(l)
+    # Neighbouring segments through a shared point (point segments skipped), for vertex crossings.
+    live = [i for i, g in enumerate(segs) if not (g[0] == g[1] == g[2] == g[3])]
+    nxt, prv = {}, {}
+    for k, i in enumerate(live):
+        if k + 1 == len(live) and not closed:
+            break
+        j = live[(k + 1) % len(live)]
+        if i != j and segs[i][3] == segs[j][0]:
+            nxt[i], prv[j] = j, i
+    ctx = (segs, nxt, prv)
     if closed and len(pieces) == 2:  # two pieces would be adjacent at both ends: halve them
         pieces = [h for p in pieces for h in halve(p)]
     n = len(pieces)
     out = {"undecided": undecided_self}
-    crossing_pairs = set()
+    crossing_pairs, crossing_keys = set(), set()
 
     def same_point(p, k, q, m):
         s = max(p.shift, q.shift)
@@ -234,11 +281,13 @@ def decide_curve(segments, closed):
                 a, b, corner = q, p, True
             else:
                 a, b, corner = p, q, False
-            if decide_pair(a, b, corner, out):
+            keys = decide_pair(a, b, corner, out, ctx)
+            crossing_keys |= keys
+            if any(k[0][0] == "s" and k[1][0] == "s" for k in keys):
                 crossing_pairs.add((min(p.seg, q.seg), max(p.seg, q.seg)))
-    verdict = "crosses" if crossing_pairs else "touches" if out["undecided"] else "simple"
+    verdict = "crosses" if crossing_keys else "touches" if out["undecided"] else "simple"
     return {"verdict": verdict, "crossing_pairs": sorted([list(x) for x in crossing_pairs]),
-            "undecided": out["undecided"]}
+            "crossing_keys": sorted([list(x) for x in crossing_keys]), "undecided": out["undecided"]}
 
 
 def main():
