@@ -19,8 +19,8 @@
 //   touches  nothing crosses that could be proved, and some pieces come
 //            within the floor delta (decision::floor) of each other without
 //            either a proof that they are apart or a proof that they cross:
-//            a tangency, a cusp, a fold, a curve passing through one of its
-//            vertices twice, or a contact closer than double precision can
+//            a tangency, a cusp, a fold, two vertices at one point that do
+//            not cross, or a contact closer than double precision can
 //            resolve. Each is reported with where and how close.
 //
 // The paper's certificate (certify.hpp) is the fast path: when it certifies
@@ -42,7 +42,10 @@
 //     points carry positive weight away from its end);
 //   * crossing: Krawczyk's operator of F over a parameter box lies strictly
 //     inside the box, which proves one zero there and every Jacobian in the
-//     box invertible (a transversal crossing);
+//     box invertible (a transversal crossing); at the floor the box may
+//     span a vertex into the neighbouring segment (a crossing at a vertex);
+//   * a contact when both run along each other within their rounding
+//     margins (flat, parallel, overlapping: a fold or a tangency);
 //   * else split in halves (de Casteljau), down to the floor.
 // Rounding: the subdivided control points carry an error bound (the
 // initial difference, plus 2 eps M per level, where M bounds every
@@ -129,7 +132,9 @@ inline std::string argument_names(unsigned arguments) {
 
 /// A proved crossing: the two pieces meet exactly once, transversally, at
 /// local parameters u in [u[0][0], u[0][1]] of segment[0] of curve[0] and
-/// [u[1][0], u[1][1]] of segment[1] of curve[1].
+/// [u[1][0], u[1][1]] of segment[1] of curve[1]. At a vertex an interval
+/// may reach past its segment's end (below 0 or above 1): that part lies in
+/// the neighbouring segment (u - 1, or u + 1, there).
 struct proved_crossing {
     std::array<std::size_t, 2> curve{};
     std::array<std::size_t, 2> segment{};
