@@ -740,3 +740,5 @@ class NewGridAdapter:
             return _np.zeros(uu.shape)
         t = _np.clip(self._new2old.evaluate(uu), *self._t_range)
         return _np.asarray(self.curve.evaluate(t))
+
+from . import _splines_quaternion as quaternion  # noqa: E402  (splines.quaternion's drop-in, issue 28)

@@ -10,6 +10,7 @@
 
 namespace py = pybind11;
 using namespace crspline::python;
+namespace crspline::python { void bind_rotation(py::module_& m); }  // bind_rotation.cpp: crspline.rotation's core
 
 PYBIND11_MODULE(_crspline, m) {
     m.doc() = "Compiled core of the crspline package (private: use crspline.CatmullRom).";
@@ -61,6 +62,7 @@ PYBIND11_MODULE(_crspline, m) {
     bind_arc_length(m, cls);
     bind_hermite(m, cls);
     bind_batch(m);
+    bind_rotation(m);
 #ifdef CRSPLINE_PY_GEOMETRY
     bind_geometry(m, cls);
 #endif

@@ -1,0 +1,203 @@
+"""crspline.rotation and crspline.splines.quaternion (issue 28): the reference
+files (tests/reference/quaternion_splines.json, rotation_spline_scipy.json)
+through the Python front ends, and a comparison with SciPy's own
+RotationSpline and Slerp (python3-scipy)."""
+import numpy as np
+import pytest
+
+from conftest import load_reference
+
+from crspline import rotation
+from crspline.splines import quaternion as sq
+
+Rotation = pytest.importorskip("scipy.spatial.transform").Rotation
+scipy_transform = pytest.importorskip("scipy.spatial.transform")
+
+
+def unit(q):
+    w, x, y, z = q
+    return sq.UnitQuaternion.from_unit_xyzw((x, y, z, w))
+
+
+def wxyz(objs):
+    return np.array([o.wxyz for o in np.ravel(objs)])
+
+
+def up_to_sign(a, b):
+    a, b = np.atleast_2d(a), np.atleast_2d(b)
+    return np.minimum(np.abs(a - b).max(axis=1), np.abs(a + b).max(axis=1))
+
+
+QS = load_reference("quaternion_splines.json")
+
+
+def drop_in_curve(c):
+    cls, keys = c["class"], [unit(k) for k in c["keys"] or []]
+    kw = {}
+    if c["alpha"] is not None:
+        kw["alpha"] = c["alpha"]
+    if cls == "DeCasteljau":
+        return sq.DeCasteljau([[unit(k) for k in s] for s in c["segments"]], c["grid"])
+    if cls == "PiecewiseSlerp":
+        return sq.PiecewiseSlerp(keys, grid=c["grid"], closed=c["closed"])
+    if cls in ("CatmullRom", "KochanekBartels"):
+        if c["closed"]:
+            kw["endconditions"] = "closed"
+        if cls == "KochanekBartels" and c["tcb"] is not None:
+            kw["tcb"] = c["tcb"]
+        return getattr(sq, cls)(keys, c["grid"], **kw)
+    return getattr(sq, cls)(keys, c["grid"], **kw)
+
+
+@pytest.mark.parametrize("case", QS["cases"], ids=[c["id"] for c in QS["cases"]])
+def test_splines_quaternion_drop_in(case):
+    """Every case of quaternion_splines.json through `from crspline.splines
+    import quaternion`: the package's values (samples.q, with its signs) and,
+    for the De Casteljau family, its evaluate(t, 1) (samples.omega), within
+    the case's tol.q and tol.omega (which include the package's own error)."""
+    s, tol = case["samples"], case["tol"]
+    if case["class"] == "slerp":
+        a, b = (unit(k) for k in case["keys"])
+        got = wxyz([sq.slerp(a, b, t) for t in s["t"]])
+        assert np.abs(got - np.array(s["q"])).max() <= tol["q"]
+        return
+    curve = drop_in_curve(case)
+    assert np.allclose(curve.grid, case["grid_used"], rtol=0, atol=0), "the package's grid, bit for bit"
+    got = wxyz(curve.evaluate(np.array(s["t"])))
+    assert got.shape == (len(s["t"]), 4)
+    assert np.abs(got - np.array(s["q"])).max() <= tol["q"]
+    one = curve.evaluate(s["t"][1])
+    assert isinstance(one, sq.UnitQuaternion)
+    if s["omega"] is not None:
+        w = curve.evaluate(np.array(s["t"]), 1)
+        assert w.shape == (len(s["t"]), 3)
+        assert np.abs(w - np.array(s["omega"])).max() <= tol["omega"]
+
+
+def test_drop_in_counts():
+    """Every case above ran: the file's own counts."""
+    assert QS["about"]["counts"]["total"] == len(QS["cases"]) == 52
+    assert sum(c["samples"]["omega"] is not None for c in QS["cases"]) == 31
+
+
+def test_native_exact_values_and_documented_natural_end():
+    """The native QuaternionSpline gives q_exact and omega_exact (the true
+    angular velocity, not the package's formula) of every Catmull-Rom case,
+    and its default natural end is the documented one (doc_natural)."""
+    n = 0
+    for c in QS["cases"]:
+        if c["class"] != "CatmullRom":
+            continue
+        s, tol = c["samples"], c["tol"]
+        kw = dict(alpha=c["alpha"], grid=c["grid"], closed=c["closed"])
+        seg, t = np.array(s["seg"]), np.array(s["t_exact"])
+        pkg = rotation.QuaternionSpline(c["keys"], start="natural_splines", end="natural_splines", **kw)
+        assert np.abs(pkg.evaluate_on(seg, t) - np.array(s["q_exact"])).max() <= tol["q_exact"]
+        assert np.abs(pkg.evaluate_on(seg, t, 1) - np.array(s["omega_exact"])).max() <= tol["omega_exact"]
+        if c["doc_natural"] is not None:
+            doc = rotation.QuaternionSpline(c["keys"], **kw)
+            assert np.abs(doc.evaluate_on(seg, t) - np.array(c["doc_natural"]["q_exact"])).max() <= tol["q_exact"]
+        n += 1
+    assert n == 17
+
+
+SC = load_reference("rotation_spline_scipy.json")
+SPLINE_CASES = [c for c in SC["cases"] if c["class"] == "RotationSpline"]
+SLERP_CASES = [c for c in SC["cases"] if c["class"] == "Slerp"]
+
+
+@pytest.mark.parametrize("case", SPLINE_CASES, ids=[c["name"] for c in SPLINE_CASES])
+def test_rotation_spline_converged(case):
+    """crspline.rotation.RotationSpline reproduces SciPy's `converged` block:
+    rotations to 1e-12 (up to sign), body rates and accelerations to 1e-10
+    of their scale; the same with a SciPy Rotation in (and out); its
+    acceleration jump at the keys is at rounding (<= 1e-9 of the scale)."""
+    ref = case["converged"]
+    t = np.array(case["t"])
+    rate, accel = np.array(ref["rate"]), np.array(ref["accel"])
+    rate_scale, accel_scale = max(1, np.abs(rate).max()), max(1, np.abs(accel).max())
+    s = rotation.RotationSpline(case["times"], np.array(case["keys"]))
+    assert up_to_sign(s(t), np.array(ref["q"])).max() <= 1e-12
+    assert np.abs(s(t, 1) - rate).max() <= 1e-10 * rate_scale
+    assert np.abs(s(t, 2) - accel).max() <= 1e-10 * accel_scale
+    assert s.residual <= 1e-9 * accel_scale
+    keys = np.array(case["keys"])
+    r = rotation.RotationSpline(case["times"], Rotation.from_quat(keys[:, [1, 2, 3, 0]]))
+    out = r(t)
+    assert isinstance(out, Rotation)
+    assert up_to_sign(out.as_quat()[:, [3, 0, 1, 2]], np.array(ref["q"])).max() <= 1e-12
+    assert np.abs(r(t[3], 1) - rate[3]).max() <= 1e-10 * rate_scale  # a scalar t gives one vector
+
+
+@pytest.mark.parametrize("case", SLERP_CASES, ids=[c["name"] for c in SLERP_CASES])
+def test_slerp_matches_scipy_file(case):
+    s = rotation.Slerp(case["times"], np.array(case["keys"]))
+    assert up_to_sign(s(np.array(case["t"])), np.array(case["q"])).max() <= 1e-12
+
+
+def test_counts_of_scipy_file():
+    assert (len(SPLINE_CASES), len(SLERP_CASES)) == (8, 3)
+
+
+def test_against_scipy_itself(seed):
+    """SciPy's own RotationSpline (10 fixed-point rounds) and crspline's
+    (Newton to rounding) agree where SciPy's iteration converges (5 degree
+    steps: within 1e-9 of the rate scale); with 150-170 degree steps SciPy's
+    acceleration jumps at the keys are larger than crspline's, which stay at
+    rounding (<= 1e-9 of the scale). Slerp agrees with SciPy's to 1e-13."""
+    rng = np.random.default_rng(seed)
+    n = 15
+    times = np.cumsum(rng.uniform(0.3, 2.0, n))
+    for lo, hi in ((4, 5), (150, 170)):
+        steps = rng.uniform(lo, hi, n - 1) * np.pi / 180
+        axes = rng.normal(size=(n - 1, 3))
+        axes /= np.linalg.norm(axes, axis=1)[:, None]
+        r = [Rotation.random(random_state=rng.integers(2**31))]
+        for a, ang in zip(axes, steps):
+            r.append(Rotation.from_rotvec(a * ang) * r[-1])
+        rots = Rotation.concatenate(r)
+        ours, theirs = rotation.RotationSpline(times, rots), scipy_transform.RotationSpline(times, rots)
+        t = np.sort(rng.uniform(times[0], times[-1], 200))
+        scale = max(1, np.abs(ours(t, 1)).max())
+        accel_scale = max(1, np.abs(ours(t, 2)).max())
+        eps = 1e-7 * (times[-1] - times[0])
+
+        def fd_jumps(spline):  # the jump seen by central points eps apart (includes 2 eps |jerk|)
+            k = times[1:-1]
+            return np.abs(spline(k + eps, 2) - spline(k - eps, 2)).max()
+
+        seg = np.arange(1, n - 1)
+        exact = np.abs(ours._c.evaluate_on(seg - 1, times[1:-1], 2, "body")[2] -
+                       ours._c.evaluate_on(seg, times[1:-1], 2, "body")[2]).max()
+        assert exact <= 1e-9 * accel_scale
+        if lo == 4:
+            assert np.abs(ours(t, 1) - theirs(t, 1)).max() <= 1e-9 * scale
+            assert up_to_sign(ours(t).as_quat(), theirs(t).as_quat()).max() <= 1e-10
+        else:
+            assert fd_jumps(theirs) > fd_jumps(ours)  # SciPy's 10 rounds leave a jump above the same floor
+        sl, their_sl = rotation.Slerp(times, rots), scipy_transform.Slerp(times, rots)
+        assert up_to_sign(sl(t).as_quat(), their_sl(t).as_quat()).max() <= 1e-13
+
+
+def test_native_api_and_errors():
+    q = np.array([[1, 0, 0, 0], [np.cos(0.25), np.sin(0.25), 0, 0], [np.cos(0.5), 0, np.sin(0.5), 0]])
+    c = rotation.QuaternionSpline(q, alpha=0.5)
+    assert c.evaluate(np.zeros((2, 3))).shape == (2, 3, 4)
+    assert c.evaluate(0.1, 1).shape == (3,)
+    with pytest.raises(ValueError, match=r"key 1 \[0.5, 0, 0, 0\] is not a unit quaternion"):
+        rotation.QuaternionSpline([[1, 0, 0, 0], [0.5, 0, 0, 0]])
+    with pytest.raises(ValueError, match=r"t = 9 \(index 1\) is outside"):
+        c.evaluate([0.0, 9.0])
+    with pytest.raises(ValueError, match="Values in `times` must be in a strictly increasing order."):
+        rotation.RotationSpline([0, 0], q[:2])
+    c2 = rotation.C2RotationSpline([0, 1, 3, 4], np.vstack([q, q[:1]]), closed=False, start="natural", end="natural")
+    assert c2.residual <= 1e-12 * max(1, c2.acceleration_scale)
+    assert abs(rotation.QuaternionSpline(q, "piecewise_slerp").angle_length() - 0.5 - np.arccos(np.cos(0.25) * np.cos(0.5)) * 2) < 1e-12
+    m = rotation.as_matrix(q)
+    assert np.abs(up_to_sign(rotation.from_matrix(m), q)).max() <= 4e-16
+    e = rotation.as_euler(q, "ZYX")
+    assert np.abs(up_to_sign(rotation.from_euler("ZYX", e), q)).max() <= 1e-15
+    assert np.allclose(e, Rotation.from_quat(q[:, [1, 2, 3, 0]]).as_euler("ZYX"), atol=1e-14)
+    pose = rotation.PoseCurve([[0, 0, 0], [1, 0, 0], [1, 2, 0]], q)
+    pos, quat, vel, w = pose.evaluate(np.linspace(pose.grid[0], pose.grid[-1], 5))
+    assert pos.shape == (5, 3) and quat.shape == (5, 4)
