@@ -36,7 +36,9 @@ undecided, else simple.
 
 Usage: exact_decision.py corpus.json out.json
 Writes the corpus back with, per curve, "exact": {"verdict", "crossing_pairs",
-"undecided"}.
+"crossing_keys", "undecided"}. exact_decision.py --check corpus.json
+recomputes a written corpus and fails when any verdict differs (a CTest
+case: analysis.exact_decision_reproduces).
 """
 import json
 import sys
@@ -290,7 +292,24 @@ def decide_curve(segments, closed):
             "crossing_keys": sorted([list(x) for x in crossing_keys]), "undecided": out["undecided"]}
 
 
+def check(path):
+    """Recompute every verdict of a corpus that holds them; exit 1 on any difference."""
+    corpus = json.load(open(path))
+    bad = 0
+    for c in corpus["curves"]:
+        got = decide_curve(c["segments"], c["closed"])
+        if got != c["exact"]:
+            bad += 1
+            print("differs: %s %d: %s, recorded %s" % (c["kind"], c["index"], got, c["exact"]))
+    print("%d curves, %d differ from the recorded verdicts" % (len(corpus["curves"]), bad))
+    if not corpus["curves"]:
+        bad = 1
+    sys.exit(1 if bad else 0)
+
+
 def main():
+    if sys.argv[1] == "--check":
+        check(sys.argv[2])
     corpus = json.load(open(sys.argv[1]))
     counts = {}
     for c in corpus["curves"]:
