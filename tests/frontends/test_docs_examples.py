@@ -27,7 +27,8 @@ the conventions, as a page author writes them:
 * `<!-- not run: REASON -->` on the line before a block: skipped, counted.
 * Anything else (```json, ```cpp, ```cmake, plain blocks) is shown text. A
   shown-text block with a line that starts like a command (`$ `, `>>> `)
-  fails the test: it would look tested and not be.
+  fails the test: it would look tested and not be. (README's C++ example and
+  its output are checked by the examples.readme_shows_quickstart case.)
 
 Everywhere, doctest's ELLIPSIS applies: `...` in the shown output matches
 any text. It is how a page says that digits legitimately vary; the test
