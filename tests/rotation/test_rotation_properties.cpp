@@ -600,3 +600,27 @@ TEST(RotationProperties, PoseCurve) {
         pc.grid(), [&](std::size_t, double t) { return crspline::norm(pc.evaluate(t, 1)); });
     for (std::size_t k = 0; k < cs.size(); ++k) EXPECT_NEAR(table.length_at(cs[k]), table.total() * double(k) / 20, 1e-10 * table.total());
 }
+
+// keep_signs: a key given with a negative dot is reached the long way (the
+// piecewise slerp turns through 2 pi - theta instead of theta; a closed form
+// to 1e-12 relative, the angle table's promise); by default the short way.
+TEST(RotationProperties, KeepSignsTakesTheLongWay) {
+    CRSPLINE_SEEDED(seed, 2823);
+    std::mt19937_64 rng(seed);
+    int checked = 0;
+    for (int round = 0; round < 20; ++round) {
+        auto keys = random_keys(rng, 2, 10, 170);
+        if (dot(keys[0], keys[1]) > 0) keys[1] = -keys[1];
+        const double theta = angle_between(keys[0], keys[1]);
+        auto o = make_options(spline_kind::piecewise_slerp, false, std::nullopt);
+        const quaternion_spline<double> short_way(keys, o);
+        o.keep_signs = true;
+        const quaternion_spline<double> long_way(keys, o);
+        EXPECT_NEAR(angle_length(short_way), theta, 1e-12 * theta);
+        EXPECT_NEAR(angle_length(long_way), 2 * std::numbers::pi - theta, 1e-12 * 2 * std::numbers::pi);
+        // Both end at the same rotation.
+        EXPECT_LE(qdiff_sign(short_way(1.0), long_way(1.0)), 8 * eps);
+        ++checked;
+    }
+    EXPECT_EQ(checked, 20);
+}
