@@ -207,8 +207,13 @@ class CatmullRom:
         return self._cut(self._c.tangents())
 
     def segment_index(self, t):
-        """Index of the segment that owns each t (clamped to the first and last);
-        an int64 array shaped like t (a NumPy integer for a number)."""
+        """Index of the segment that owns each t; an int64 array shaped like t
+        (a NumPy integer for a number).
+
+        t outside the domain, infinities included, clamps to the first or
+        last segment (no error: this answers "which piece", not "is t on the
+        curve"; ``evaluate`` checks the domain). NaN is refused: it raises
+        ``OutOfDomain`` (a ``ValueError``) naming its index in ``t.ravel()``."""
         return _scalar_or_array(self._c.locate(self._t(t)))
 
     # ------------------------------------------------------------ arc length
@@ -232,7 +237,10 @@ class CatmullRom:
         return self._c.arc_length_between(a, b, accuracy)
 
     def arc_length_at(self, t, *, accuracy=default_accuracy):
-        """Arc length from the start of the curve to each t (array or number)."""
+        """Arc length from the start of the curve to each t (array or number).
+
+        Raises ``OutOfDomain`` (a ``ValueError``) for t outside ``domain``,
+        naming the first such value and its index in ``t.ravel()``."""
         return _scalar_or_array(self._table(accuracy).s_at(self._t(t)))
 
     def t_at_arc_length(self, s, *, accuracy=default_accuracy):
@@ -321,7 +329,9 @@ class CatmullRom:
         """Curvature |x' ^ x''| / |x'|^3 at each t (any dimension; 0 in 1-D).
 
         At a zero-speed point: 0 where the curve is locally straight, +inf at
-        a cusp. Never NaN."""
+        a cusp. Never NaN. A t outside ``domain`` raises ``OutOfDomain`` naming
+        the first such value and its index in ``t.ravel()`` (so do
+        ``signed_curvature`` and ``torsion``)."""
         return _scalar_or_array(self._need("curvature", "frames.hpp")(self._t(t)))
 
     def signed_curvature(self, t):

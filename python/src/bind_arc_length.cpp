@@ -16,9 +16,11 @@ using tables_of = std::variant<arc_length_table<1, T>, arc_length_table<2, T>, a
                                arc_length_table<4, T>, arc_length_table<wide_dimension, T>>;
 
 /// The cumulative arc-length table of one curve (it copies the segments, so
-/// it does not refer to the curve).
+/// it does not refer to the curve), and the curve's domain [t_min, t_max]
+/// (its first and last knot, exactly) for naming a t outside it.
 struct table {
     concat<tables_of<double>, tables_of<float>>::type v;
+    double t_min = 0, t_max = 0;
     template <class F>
     decltype(auto) visit(F&& f) const { return std::visit(std::forward<F>(f), v); }
 };
@@ -55,8 +57,9 @@ void bind_arc_length(py::module_& m, py::class_<curve>& cls) {
             using T = scalar_t<decltype(cr)>;
             constexpr std::size_t D = dimension_v<decltype(cr)>;
             check_relative_accuracy(accuracy);
+            const double t_min = double(cr.grid().front()), t_max = double(cr.grid().back());
             py::gil_scoped_release nogil;
-            return table{arc_length_table<D, T>(cr, T(accuracy))};
+            return table{arc_length_table<D, T>(cr, T(accuracy)), t_min, t_max};
         });
     }, py::arg("accuracy") = default_accuracy, "Build the arc-length table (releases the GIL).");
 
@@ -100,6 +103,7 @@ void bind_arc_length(py::module_& m, py::class_<curve>& cls) {
         return t.visit([&](const auto& x) -> py::array {
             using T = table_scalar_t<decltype(x)>;
             auto ts = contiguous<T>(tv);
+            check_batch_domain<T>(ts, T(t.t_min), T(t.t_max));  // exact: the knots are T
             py::array_t<T, py::array::c_style> out(shape_plus(ts, {}));
             const T* in = ts.data();
             T* o = out.mutable_data();

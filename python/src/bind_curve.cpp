@@ -1,5 +1,6 @@
 // crspline Python module: building a curve, its attributes, evaluation and
 // Bézier form.
+#include <cmath>
 #include <optional>
 #include <string>
 #include <utility>
@@ -198,10 +199,20 @@ void bind_curve(py::module_& m, py::class_<curve>& cls) {
             py::array_t<std::int64_t> out(shape_plus(ts, {}));
             const T* in = ts.data();
             std::int64_t* o = out.mutable_data();
-            for (py::ssize_t k = 0; k < ts.size(); ++k) o[k] = std::int64_t(cr.locate(in[k]));
+            // Values outside the domain, infinities included, clamp to the
+            // first or last segment; NaN has no side to clamp to.
+            for (py::ssize_t k = 0; k < ts.size(); ++k) {
+                if (std::isnan(in[k]))
+                    throw out_of_domain(std::string("t = nan") +
+                                        (ts.ndim() == 0 ? "" : " (index " + std::to_string(k) + ")") +
+                                        " is not a number: segment_index clamps t outside the domain to the "
+                                        "first or last segment, but NaN is on neither side");
+                o[k] = std::int64_t(cr.locate(in[k]));
+            }
             return out;
         });
-    }, py::arg("t"), "Index of the segment that owns each t (clamped to the first and last).");
+    }, py::arg("t"),
+       "Index of the segment that owns each t (t outside the domain clamped to the first or last; NaN refused).");
 }
 
 }  // namespace crspline::python

@@ -11,10 +11,12 @@ namespace crspline::python {
 
 namespace {
 
-/// out[k] = f(t[k]) for every t (any shape), with the GIL released.
-template <class T, class F>
-py::array map_t(const py::array& t, F&& f) {
+/// out[k] = f(t[k]) for every t (any shape), with the GIL released; an
+/// array's t outside the curve's domain is named with its index first.
+template <class T, class C, class F>
+py::array map_t(const C& cr, const py::array& t, F&& f) {
     auto ts = contiguous<T>(t);
+    check_batch_domain<T>(ts, cr.grid().front(), cr.grid().back());
     py::array_t<T, py::array::c_style> out(shape_plus(ts, {}));
     const T* in = ts.data();
     T* o = out.mutable_data();
@@ -32,7 +34,7 @@ void bind_frames(py::module_&, py::class_<curve>& cls) {
     cls.def("curvature", [](const curve& c, const py::array& t) {
         return c.visit([&](const auto& cr) -> py::array {
             using T = scalar_t<decltype(cr)>;
-            return map_t<T>(t, [&](T x) { return curvature(cr, x); });
+            return map_t<T>(cr, t, [&](T x) { return curvature(cr, x); });
         });
     }, py::arg("t"), "Curvature at every t (any shape).");
 
@@ -40,7 +42,7 @@ void bind_frames(py::module_&, py::class_<curve>& cls) {
         return c.visit([&](const auto& cr) -> py::array {
             using T = scalar_t<decltype(cr)>;
             if constexpr (dimension_v<decltype(cr)> == 2) {
-                return map_t<T>(t, [&](T x) { return signed_curvature(cr, x); });
+                return map_t<T>(cr, t, [&](T x) { return signed_curvature(cr, x); });
             } else {
                 throw invalid_input("signed curvature needs a 2-D curve, this one is " +
                                     std::to_string(dimension_v<decltype(cr)>) + "-D");
@@ -52,7 +54,7 @@ void bind_frames(py::module_&, py::class_<curve>& cls) {
         return c.visit([&](const auto& cr) -> py::array {
             using T = scalar_t<decltype(cr)>;
             if constexpr (dimension_v<decltype(cr)> == 3) {
-                return map_t<T>(t, [&](T x) { return torsion(cr, x); });
+                return map_t<T>(cr, t, [&](T x) { return torsion(cr, x); });
             } else {
                 throw invalid_input("torsion needs a 3-D curve, this one is " +
                                     std::to_string(dimension_v<decltype(cr)>) + "-D");

@@ -142,6 +142,22 @@ py::array_t<T> vector_array(std::span<const T> v) {
     return out;
 }
 
+/// Every t of an array with at least one axis inside [lo, hi], or
+/// out_of_domain naming the first that is not, with its index in t.ravel()
+/// and its value, in the words of catmull_rom::evaluate on a batch
+/// ("t = 5 (index 2) is outside the domain [0, 3]"). A number (0-d) is left
+/// to the scalar call, whose message names no index, as evaluate does.
+template <class T>
+void check_batch_domain(const py::array_t<T, py::array::c_style>& t, T lo, T hi) {
+    if (t.ndim() == 0) return;
+    const T* in = t.data();
+    for (py::ssize_t k = 0; k < t.size(); ++k)
+        if (!(in[k] >= lo && in[k] <= hi))
+            throw out_of_domain("t = " + detail::num(double(in[k])) + " (index " + std::to_string(k) +
+                                ") is outside the domain [" + detail::num(double(lo)) + ", " +
+                                detail::num(double(hi)) + "]");
+}
+
 /// A query point of dimension D from a 1-D sequence (validated length).
 template <std::size_t D, class T>
 vec<D, T> to_vec(const std::vector<double>& c, const char* what) {

@@ -109,3 +109,48 @@ def test_kochanek_bartels_errors():
         crspline.KochanekBartels(P, tcb=[(np.nan, 0, 0), (0, 0, 0)])
     with pytest.raises(TypeError):
         crspline.KochanekBartels(P, tcb="tcb")
+
+
+def test_out_of_domain_messages_name_the_index_and_the_value():
+    # Issue 31 point 7: every call taking an array of t names the first t
+    # outside the domain, its index in t.ravel() and its value (evaluate's
+    # words); a number gets the scalar message, which has no index.
+    c = crspline.CatmullRom(P, alpha=0)  # domain [0, 3]
+    space = crspline.CatmullRom([[0, 0, 0], [1, 2, 0], [3, 2, 1], [4, 0, 2]], alpha=0)
+    calls = [("evaluate", c.evaluate), ("arc_length_at", c.arc_length_at), ("curvature", c.curvature),
+             ("signed_curvature", c.signed_curvature), ("torsion", space.torsion),
+             ("curvature (3-D)", space.curvature)]
+    for name, f in calls:
+        with pytest.raises(crspline.OutOfDomain, match=r"^t = 3.5 \(index 2\) is outside the domain \[0, 3\]$"):
+            f([0.0, 1.5, 3.5, 2.0, -1.0])
+        with pytest.raises(crspline.OutOfDomain, match=r"^t = -1 \(index 3\) is outside the domain \[0, 3\]$"):
+            f([[0.0, 1.0], [2.0, -1.0]])  # the index in t.ravel()
+        with pytest.raises(crspline.OutOfDomain, match=r"^t = nan \(index 1\) is outside the domain \[0, 3\]$"):
+            f(np.array([0.0, np.nan]))
+        with pytest.raises(crspline.OutOfDomain, match=r"^t = 3.5 is outside the domain \[0, 3\]$"):
+            f(3.5)
+        assert np.all(np.isfinite(f([0.0, 1.5, 3.0]))), name  # inside: no error
+    # float32 curves name the value as float32 holds it.
+    c32 = crspline.CatmullRom(np.array(P, dtype=np.float32), alpha=0)
+    for f in (c32.arc_length_at, c32.curvature):
+        with pytest.raises(crspline.OutOfDomain, match=r"^t = 4 \(index 1\) is outside the domain \[0, 3\]$"):
+            f(np.array([1, 4], dtype=np.float32))
+    # frames (the core's batch call) names it in its own words.
+    with pytest.raises(crspline.OutOfDomain, match=r"^t\[2\] = 3.5 is outside the domain \[0, 3\]$"):
+        c.frames([0.0, 1.0, 3.5])
+
+
+def test_segment_index_clamps_outside_values_and_refuses_nan():
+    # Issue 31 point 7: values outside the domain clamp to the first or last
+    # segment (documented); NaN, which is on neither side, is refused by index.
+    c = crspline.CatmullRom(P, alpha=0)  # segments [0, 1), [1, 2), [2, 3]
+    t = [-np.inf, -1e300, -1.0, 0.0, 0.5, 1.0, 2.999, 3.0, 4.0, 1e300, np.inf]
+    assert c.segment_index(t).tolist() == [0, 0, 0, 0, 0, 1, 2, 2, 2, 2, 2]
+    assert c.segment_index(1e300) == 2 and c.segment_index(-1e300) == 0
+    with pytest.raises(crspline.OutOfDomain, match=r"^t = nan \(index 2\) is not a number"):
+        c.segment_index([0.0, 1.0, np.nan, np.nan])
+    with pytest.raises(crspline.OutOfDomain, match=r"^t = nan \(index 3\) is not a number"):
+        c.segment_index(np.array([[0.0, 1.0], [2.0, np.nan]], dtype=np.float32))
+    with pytest.raises(crspline.OutOfDomain, match=r"^t = nan is not a number"):
+        c.segment_index(float("nan"))
+
