@@ -74,8 +74,14 @@ class Intersection(TypedDict):
     point: list[float]
     distance: float
 
+class Overlap(TypedDict):
+    segments: list[int]
+    u: _Pair
+    v: _Pair
+
 class Intersections(TypedDict):
     intersections: list[Intersection]
+    overlaps: list[Overlap]
     folds: list[int]
     complete: bool
     any: bool
@@ -139,8 +145,9 @@ class Analysis(TypedDict):
     segments: list[SegmentReport]
     cusp_t: list[float]
     has_cusp: bool
-    has_self_intersection: bool
+    has_self_intersection: Union[bool, None]  # None: not searched, and no segment loops or folds
     intersections: Union[list[Intersection], None]
+    overlaps: Union[list[Overlap], None]
     folds: Union[list[int], None]
     complete: Union[bool, None]
     certificate: Union[Certificate, None]

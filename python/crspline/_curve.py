@@ -373,14 +373,17 @@ class CatmullRom:
         report. The schema, field by field: docs/report.md.
 
         ``{'dimension', 'segments': [...], 'cusp_t', 'has_cusp',
-        'has_self_intersection', 'intersections', 'folds', 'complete',
-        'certificate'}``: one dict per segment (cusps, loops and folds with
-        their local u and global t, chord-frame quantities, measured
-        distances, the paper's bounds), the whole-curve search (crossings
-        between segments, loops inside one, each with its ``distance``;
-        ``complete`` is False if the search ran out of its work budget) and
-        the Section 5 certificate. ``intersections=False`` skips the search
-        (``intersections``, ``folds`` and ``complete`` are then None).
+        'has_self_intersection', 'intersections', 'overlaps', 'folds',
+        'complete', 'certificate'}``: one dict per segment (cusps, loops and
+        folds with their local u and global t, chord-frame quantities,
+        measured distances, the paper's bounds), the whole-curve search
+        (crossings between segments, loops inside one, each with its
+        ``distance``; collinear overlaps; ``complete`` is False if the search
+        ran out of its work budget) and the Section 5 certificate.
+        ``intersections=False`` skips the search: ``intersections``,
+        ``overlaps``, ``folds`` and ``complete`` are then None, and so is
+        ``has_self_intersection`` (unknown) unless a segment loops or folds
+        by itself (then True).
         """
         f = self._need("analyze", "report.hpp")
         return f(bool(intersections), None, self._dim)
@@ -392,7 +395,8 @@ class CatmullRom:
 
         Returns the report's search object (docs/report.md):
         ``{'intersections': [{'segments': [i, j], 'u': [u_i, u_j], 't': [t_i,
-        t_j], 'point': [...], 'distance': d}, ...], 'folds': [...],
+        t_j], 'point': [...], 'distance': d}, ...], 'overlaps': [{'segments':
+        [i, j], 'u': [u0, u1], 'v': [v0, v1]}, ...], 'folds': [...],
         'complete': bool, 'any': bool}``. ``complete`` is False if a pair of
         segments exhausted the search's work budget."""
         f = self._need("intersections", "intersections.hpp")

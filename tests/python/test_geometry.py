@@ -1,5 +1,6 @@
 """Geometry through the Python API: tessellation, bounding boxes, nearest
 points, curvature and frames, analysis; and that batch work releases the GIL."""
+import json
 import threading
 import time
 
@@ -258,3 +259,27 @@ def test_batch_work_releases_the_gil():
     assert span["call"] > 0.02, "the call was too short to tell"
     gaps = np.diff(stamps) if len(stamps) > 1 else np.array([span["call"]])
     assert len(stamps) > 100 and gaps.max() < 0.5 * span["call"], (len(stamps), gaps.max(), span["call"])
+
+
+def test_analysis_without_the_search_says_unknown_not_false():
+    # Issue 31 point 5: analyze(intersections=False) cannot know whether two
+    # segments cross: has_self_intersection is None (JSON null), like the
+    # search's own fields, unless a segment loops or folds by itself.
+    eight = [(0, 0), (1, 1), (2, 0), (1, -1), (0, 0.2), (-1, 1), (-2, 0), (-1, -1)]
+    c = crspline.CatmullRom(eight, endconditions="closed")
+    full = c.analyze()
+    assert full["has_self_intersection"] is True and full["intersections"]
+    assert not any(s["has_self_intersection"] for s in full["segments"])  # crossings between segments only
+    quick = c.analyze(intersections=False)
+    assert quick["has_self_intersection"] is None
+    for key in ("intersections", "overlaps", "folds", "complete"):
+        assert quick[key] is None, key
+    assert '"has_self_intersection": null' in json.dumps(quick)
+    # A curve that does not cross itself: False from the search, None without it.
+    plain = crspline.CatmullRom([[0, 0], [1, 2], [3, 2], [4, 0]])
+    assert plain.analyze()["has_self_intersection"] is False
+    assert plain.analyze(intersections=False)["has_self_intersection"] is None
+    # A loop inside one segment is known without the search (docs/report.md's
+    # example: uniform knots, the short middle edge makes segment 1 loop).
+    loop = crspline.CatmullRom([[0, 0], [1, 1], [1.1, 1], [2, 0]], alpha=0).analyze(intersections=False)
+    assert loop["segments"][1]["has_self_intersection"] and loop["has_self_intersection"] is True
