@@ -154,3 +154,18 @@ def test_segment_index_clamps_outside_values_and_refuses_nan():
     with pytest.raises(crspline.OutOfDomain, match=r"^t = nan is not a number"):
         c.segment_index(float("nan"))
 
+
+@pytest.mark.parametrize("alpha", [0.0, 0.5, 1.0])
+def test_points_whose_differences_overflow_are_refused_at_construction(alpha):
+    # Issue 31 point 3 (needs the core's refusal of non-finite chords, knot
+    # intervals and Bezier points): the difference of these finite points
+    # overflows; before, alpha 0 gave arc_length() 0.0, evaluate(0.5) NaN and
+    # infinite Bezier points, alpha 1 the grid [0, inf].
+    points = [[-1.5e308, 0.0], [1.5e308, 0.0]]
+    with pytest.raises(ValueError, match=r"\bpoints 0 and 1\b"):
+        crspline.CatmullRom(points, alpha=alpha)
+    with pytest.raises(ValueError, match=r"\bpoints 0 and 1\b"):
+        crspline.from_spec({"points": points, "alpha": alpha})
+    with pytest.raises(ValueError, match=r"^curve 1: .*\bpoints 0 and 1\b"):
+        crspline.arc_lengths([[[0.0, 0.0], [1.0, 1.0]], points], alpha=alpha)
+
