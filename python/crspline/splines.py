@@ -394,6 +394,9 @@ class KochanekBartels(CubicHermite):
 _GL_X, _GL_W = _np.polynomial.legendre.leggauss(10)
 _GL_X, _GL_W = (_GL_X + 1) / 2, _GL_W / 2
 _GL_PIECES = 64  # per segment: the speed of a cubic is smooth away from cusps
+# The arc-length accuracy promise (relative to the length): the core's table
+# is built to it, and an s within it of either end maps to that end.
+_ARC_LENGTH_ACCURACY = 1e-12
 
 
 class UnitSpeedAdapter:
@@ -412,7 +415,7 @@ class UnitSpeedAdapter:
         curves = getattr(curve, "_curves", None)
         self._table = None
         if isinstance(curve, CubicHermite) and len(curves) == 1:
-            self._table = curves[0].arc_length_table(1e-12)
+            self._table = curves[0].arc_length_table(_ARC_LENGTH_ACCURACY)
             self.grid = [float(s) for s in self._table.knot_lengths]
             return
         g = _np.asarray(curve.grid, dtype=_np.float64)
@@ -454,13 +457,23 @@ class UnitSpeedAdapter:
         return t
 
     def evaluate(self, s):
-        """The point at arc length s (a number, or any sequence or array)."""
+        """The point at arc length s (a number, or any sequence or array).
+
+        A length measured by another tool (``splines``' own total, say) is
+        known only to the accuracy promise, 1e-12 relative: s within that of
+        either end maps to the end, as in the core (issue 26); further out
+        raises ValueError('s too small: ...' / 's too big: ...')."""
         if not _np.isscalar(s):
             return _np.array([self.evaluate(x) for x in s])
+        slack = _ARC_LENGTH_ACCURACY * self.grid[-1]
         if s < self.grid[0]:
-            raise ValueError(f"s too small: {s}")
+            if not s >= self.grid[0] - slack:
+                raise ValueError(f"s too small: {s}")
+            s = self.grid[0]
         if not (s < self.grid[-1] or s == self.grid[-1]):
-            raise ValueError(f"s too big: {s}")
+            if not s <= self.grid[-1] + slack:
+                raise ValueError(f"s too big: {s}")
+            s = self.grid[-1]
         return self.curve.evaluate(self._s2t(s))
 
 

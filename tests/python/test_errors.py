@@ -169,3 +169,24 @@ def test_points_whose_differences_overflow_are_refused_at_construction(alpha):
     with pytest.raises(ValueError, match=r"^curve 1: .*\bpoints 0 and 1\b"):
         crspline.arc_lengths([[[0.0, 0.0], [1.0, 1.0]], points], alpha=alpha)
 
+
+def test_an_arc_length_within_the_accuracy_of_the_total_maps_to_the_end():
+    # Issue 26 point 1: a length computed by another tool cannot be known
+    # better than the accuracy promise (1e-12 relative): s within it of
+    # either end maps to that end; further out is still an error.
+    c = crspline.CatmullRom(P)
+    total = c.arc_length()
+    lo, hi = c.domain
+    near = total * (1 + 8e-15)  # the issue's case: 8e-15 relative, far inside 1e-12
+    assert near > total
+    assert c.t_at_arc_length(near) == hi
+    assert c.t_at_arc_length([0.0, total / 2, near]).tolist()[-1] == hi
+    assert c.t_at_arc_length(-total * 8e-15) == lo
+    with pytest.raises(crspline.OutOfDomain, match=r"is outside the arc-length range \[0, "):
+        c.t_at_arc_length(total * (1 + 1e-9))
+    with pytest.raises(crspline.OutOfDomain, match=r"\(index 1\) is outside the arc-length range"):
+        c.t_at_arc_length([0.0, total * (1 + 1e-9)])
+    with pytest.raises(crspline.OutOfDomain, match=r"is outside the arc-length range"):
+        c.t_at_arc_length(-total * 1e-9)
+    # The promise is the table's own accuracy: at 1e-6, 1e-9 past the end is the end.
+    assert c.t_at_arc_length(total * (1 + 1e-9), accuracy=1e-6) == hi

@@ -402,6 +402,16 @@ def test_unit_speed_adapter_on_a_straight_line(dim):
     np.testing.assert_allclose(u.evaluate(s), s[:, None] * p1 / 5, rtol=0, atol=1e-10)
     with pytest.raises(ValueError, match="s too big: 5.5"):
         u.evaluate(5.5)
+    # Issue 26 point 1: a total measured elsewhere is known only to the
+    # accuracy promise (1e-12 relative); within it of either end maps to the
+    # end, further out is refused.
+    total = u.grid[-1]
+    assert np.array_equal(u.evaluate(total * (1 + 8e-15)), u.evaluate(total))
+    assert np.array_equal(u.evaluate(-total * 8e-15), u.evaluate(0.0))
+    with pytest.raises(ValueError, match="^s too big: "):
+        u.evaluate(total * (1 + 1e-9))
+    with pytest.raises(ValueError, match="^s too small: "):
+        u.evaluate(-total * 1e-9)
 
 
 def test_unit_speed_adapter_has_unit_speed_on_the_docs_curve():
