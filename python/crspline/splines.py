@@ -16,7 +16,8 @@ with the ``splines`` formulas (a subclass that overrides
 tangents, one call per vertex as in ``splines``); the curve itself is a cubic
 Hermite curve built and evaluated by the C++ core
 (``crspline._crspline._make_hermite``), vectorized, with the GIL released.
-More coordinates than the core compiles (``crspline.max_dimension``, 4) are
+More coordinates than the core's Hermite curves take (4: its fixed-dimension
+curves; ``crspline.max_dimension``, 16, is what ``crspline.CatmullRom`` takes) are
 split into groups of at most 4 coordinates, each a Hermite curve on the same
 grid with its part of the tangents: every quantity here is computed per
 coordinate from the shared knots, so this is exact, whatever alpha.
