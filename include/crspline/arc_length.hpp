@@ -519,48 +519,79 @@ public:
         return pieces_[k].s0 + detail::gauss_length_rule(seg, pieces_[k].u0, u, pieces_[k].rule);
     }
 
-    /// Parameter t at arc length s in [0, total()] (checked). The result
-    /// satisfies |s_at(t) - s| <= accuracy * total() up to rounding.
+    /// How far outside [0, total()] an arc length may lie and still be
+    /// taken as the nearer end: max(accuracy, 4 eps) * total(), the
+    /// tolerance t_at promises. Why: total() is itself only known to that
+    /// accuracy, so a length computed by another tool (or by this one at
+    /// another accuracy) may end up to that much past it; s =
+    /// total() (1 + 8e-15) is the curve's end to the promised 1e-12,
+    /// while s = total() (1 + 1e-9) is not and stays an out_of_domain
+    /// error. (4 eps: below that the sum of the pieces is not known
+    /// either.) 0 for a curve of length 0.
+    T end_slack() const noexcept {
+        return std::max(accuracy_, T(4) * std::numeric_limits<T>::epsilon()) * total_;
+    }
+    /// Whether t_at accepts s: -end_slack() <= s <= total() + end_slack()
+    /// (false for NaN). The one rule every front end checks arc lengths by.
+    bool in_range(T s) const noexcept {
+        const T slack = end_slack();
+        return s >= -slack && s <= total_ + slack;
+    }
+
+    /// Parameter t at arc length s (checked: in_range(s), else
+    /// out_of_domain). The result satisfies |s_at(t) - s| <= accuracy *
+    /// total() up to rounding; s within end_slack() of an end (outside
+    /// [0, total()] included) gives that end's knot exactly.
     T t_at(T s) const {
-        check_s(s, std::nullopt);
-        // The end is known exactly: no Newton landing within the tolerance.
+        s = checked_s(s, std::nullopt);
+        // The ends are known exactly: no Newton landing within the tolerance.
         if (s == total_ && !pieces_.empty()) return t_end();
+        if (s == 0) return segments_.front().t0;
         return t_in_piece(locate_piece(s), s, std::nullopt);
     }
 
-    /// Batch: t[k] = t_at(s[k]). Sorted s walks the pieces forward (no
-    /// search) and starts Newton from the previous answer.
-    void t_at(std::span<const T> s, std::span<T> t) const {
-        if (s.size() != t.size())
+    /// Batch: t[k] = t_at(s[k]), the same rule at the ends (an out_of_domain
+    /// error names the first index outside). Sorted s walks the pieces
+    /// forward (no search) and starts Newton from the previous answer.
+    void t_at(std::span<const T> s_in, std::span<T> t) const {
+        if (s_in.size() != t.size())
             throw invalid_input("output has " + std::to_string(t.size()) + " values for " +
-                                std::to_string(s.size()) + " arc lengths");
-        for (std::size_t k = 0; k < s.size(); ++k) check_s(s[k], k);
-        std::size_t at = s.empty() ? 0 : locate_piece(s[0]);
+                                std::to_string(s_in.size()) + " arc lengths");
+        for (std::size_t k = 0; k < s_in.size(); ++k) checked_s(s_in[k], k);
+        // Each s as t_at(s) takes it: within end_slack() of an end, that end.
+        const auto s = [&](std::size_t k) { return std::clamp(s_in[k], T(0), total_); };
+        std::size_t at = s_in.empty() ? 0 : locate_piece(s(0));
         // Warm start: the previous answer (u_a, with arc length s_a from the
         // curve's start) anchors the next query when it is in the same piece
         // and not before it; only the increment from u_a is integrated.
         bool anchored = false;
         T u_a = 0, s_a = 0;
-        for (std::size_t k = 0; k < s.size(); ++k) {
-            if (k > 0 && s[k] >= s[k - 1]) {
+        for (std::size_t k = 0; k < s_in.size(); ++k) {
+            const T sk = s(k);
+            if (k > 0 && sk >= s(k - 1)) {
                 const std::size_t before = at;
-                while (at + 1 < pieces_.size() && piece_start_[at + 1] <= s[k]) ++at;
+                while (at + 1 < pieces_.size() && piece_start_[at + 1] <= sk) ++at;
                 anchored = anchored && at == before;
             } else {
-                at = locate_piece(s[k]);
+                at = locate_piece(sk);
                 anchored = false;
             }
             if (pieces_.empty()) {
                 t[k] = segments_.front().t0;
                 continue;
             }
-            if (s[k] == total_) {  // the end, exactly (as t_at(s) gives it)
+            if (sk == total_) {  // the end, exactly (as t_at(s) gives it)
                 t[k] = t_end();
                 anchored = false;
                 continue;
             }
+            if (sk == 0) {  // the start, exactly (as t_at(s) gives it)
+                t[k] = segments_.front().t0;
+                anchored = false;
+                continue;
+            }
             if (!anchored) u_a = pieces_[at].u0, s_a = pieces_[at].s0;
-            t[k] = t_from_anchor(at, s[k], u_a, s_a);
+            t[k] = t_from_anchor(at, sk, u_a, s_a);
             anchored = true;
         }
     }
@@ -612,11 +643,14 @@ private:
             throw out_of_domain("t = " + detail::num(double(t)) + " is outside the domain [" +
                                 detail::num(double(lo)) + ", " + detail::num(double(hi)) + "]");
     }
-    void check_s(T s, std::optional<std::size_t> index) const {
-        if (!(s >= 0 && s <= total_))
+    // s if in_range(s), clamped to [0, total()]; else out_of_domain naming
+    // s (and its index in a batch) and the range.
+    T checked_s(T s, std::optional<std::size_t> index) const {
+        if (!in_range(s))
             throw out_of_domain("s = " + detail::num(double(s)) +
                                 (index ? " (index " + std::to_string(*index) + ")" : std::string()) +
                                 " is outside the arc-length range [0, " + detail::num(double(total_)) + "]");
+        return std::clamp(s, T(0), total_);
     }
 
     // Sorted batches: solve s_a + integral_{u_a}^{u} speed = s for u in piece

@@ -524,6 +524,69 @@ TEST(ArcLength, SegmentLengthsKeepTheirOwnPrecision) {
     EXPECT_LE(std::abs(arc_length(c.segment(1)) - exact), 1e-12 * exact);
 }
 
+// Issue 26 point 1: an arc length within the promised accuracy of either
+// end of [0, total] is that end (a length computed by another tool is only
+// known to that accuracy); further out it is still out_of_domain. Both the
+// scalar and the batch t_at, on seeded random curves at every accuracy.
+TEST(ArcLength, ArcLengthsWithinTheAccuracyOfAnEndAreThatEnd) {
+    CRSPLINE_SEEDED(seed, 2611);
+    std::mt19937_64 rng(seed);
+    int checked = 0;
+    for (int trial = 0; trial < 20; ++trial) {
+        const catmull_rom<2> c(test::random_polygon<2>(rng, 3 + std::size_t(trial % 7)), {.alpha = 0.1 * (trial % 11)});
+        for (const double acc : accuracies) {
+            const arc_length_table<2> table(c, acc);
+            const double total = table.total();
+            ASSERT_GT(total, 0);
+            // The slack is the tolerance t_at promises: max(accuracy, 4 eps) * total.
+            EXPECT_EQ(table.end_slack(), std::max(acc, 4 * std::numeric_limits<double>::epsilon()) * total);
+            // The issue's case: 8e-15 relative past the end (inside the promise at
+            // every accuracy here, >= 1e-12), and half the slack past either end.
+            const double inside[] = {total * (1 + 8e-15), total + table.end_slack() / 2, total + table.end_slack(),
+                                     -table.end_slack() / 2, -table.end_slack(), -0.0};
+            for (const double s : inside) {
+                const double want = s > total / 2 ? c.t_max() : c.t_min();
+                EXPECT_TRUE(table.in_range(s)) << "s = " << s << " total " << total;
+                EXPECT_EQ(table.t_at(s), want) << "s = " << s << " total " << total << " accuracy " << acc;
+                ++checked;
+            }
+            // The batch form, sorted and unsorted, with an interior value between.
+            const std::vector<double> batch{inside[4], total / 3, inside[0], inside[3], inside[2]};
+            const std::vector<double> t = table.t_at(std::span<const double>(batch));
+            ASSERT_EQ(t.size(), batch.size());
+            EXPECT_EQ(t[0], c.t_min());
+            // (t_at's promise, |s_at(t) - s| <= slack, doubled for s_at's own rounding.)
+            EXPECT_NEAR(table.s_at(t[1]), total / 3, 2 * table.end_slack());
+            EXPECT_EQ(t[2], c.t_max());
+            EXPECT_EQ(t[3], c.t_min());
+            EXPECT_EQ(t[4], c.t_max());
+            // Further out: twice the slack, and the issue's 1e-9 relative where the
+            // accuracy is finer than that. The message names the value and the range.
+            std::vector<double> outside{total + 2 * table.end_slack(), -2 * table.end_slack()};
+            if (acc < 1e-9) outside.push_back(total * (1 + 1e-9));
+            for (const double s : outside) {
+                EXPECT_FALSE(table.in_range(s)) << "s = " << s;
+                try {
+                    (void)table.t_at(s);
+                    ADD_FAILURE() << "s = " << s << " accepted, total " << total;
+                } catch (const out_of_domain& e) {
+                    EXPECT_EQ(std::string(e.what()), "s = " + detail::num(s) + " is outside the arc-length range [0, " +
+                                                         detail::num(total) + "]");
+                }
+                const std::vector<double> b{total / 2, s};
+                try {
+                    (void)table.t_at(std::span<const double>(b));
+                    ADD_FAILURE() << "s = " << s << " accepted in a batch";
+                } catch (const out_of_domain& e) {
+                    EXPECT_NE(std::string(e.what()).find("(index 1)"), std::string::npos) << e.what();
+                }
+                ++checked;
+            }
+        }
+    }
+    EXPECT_EQ(checked, 20 * 6 * (6 + 2) + 20 * 2);  // 1e-10 and 1e-12 add the 1e-9 case
+}
+
 TEST(ArcLength, BadArguments) {
     catmull_rom<2> c({P2{{0, 0}}, P2{{1, 0}}, P2{{2, 1}}});
     EXPECT_THROW(arc_length(c, 0.0), invalid_input);
