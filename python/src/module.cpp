@@ -11,6 +11,7 @@
 namespace py = pybind11;
 using namespace crspline::python;
 namespace crspline::python { void bind_rotation(py::module_& m); }  // bind_rotation.cpp: crspline.rotation's core
+namespace crspline::python { void bind_geo(py::module_& m); }  // bind_geo.cpp: crspline.geo's core
 
 PYBIND11_MODULE(_crspline, m) {
     m.doc() = "Compiled core of the crspline package (private: use crspline.CatmullRom).";
@@ -63,6 +64,7 @@ PYBIND11_MODULE(_crspline, m) {
     bind_hermite(m, cls);
     bind_batch(m);
     bind_rotation(m);
+    bind_geo(m);
 #ifdef CRSPLINE_PY_GEOMETRY
     bind_geometry(m, cls);
 #endif

@@ -78,8 +78,8 @@ enum class feature_status : std::uint8_t {
 /// How a feature's output meets the others and itself.
 enum class verdict : std::uint8_t {
     simple = 0,   ///< meets no other output, and itself only at its joints
-    touches = 1,  ///< shares a boundary or a junction with another feature (a coverage)
-    crosses = 2,  ///< an input crossing (or overlap) remains: the input segments there are output as they are
+    touches = 1,  ///< shares a boundary or a junction with another feature (a coverage), or its input touches one
+    crosses = 2,  ///< an input crossing remains: the input segments there are output as they are
 };
 
 inline const char* to_string(feature_status s) noexcept {
@@ -106,6 +106,11 @@ struct smooth_options {
     double tolerance = 0;                 ///< output polyline within this of the curve; > 0, required
     std::optional<double> max_deviation{};  ///< no curve point farther than this from the input polyline
     bool preserve_topology = true;        ///< shared arcs and the crossing proof; false: part by part, unchecked
+    /// If given, every curve stays inside this box (proved by its pieces'
+    /// control points, raised by tension like the rest): a geographic
+    /// layer's frame keeps latitudes within the poles and longitudes within
+    /// the antimeridian. Inputs outside it are left as they are there.
+    std::optional<box<2>> domain{};
 };
 
 /// One feature's outcome. Lengths and deviations in the layer's units.
@@ -127,7 +132,8 @@ struct smooth_stats {
     std::size_t linear_segments = 0;     ///< segments output as their input segment (tension 1)
     std::size_t pieces = 0;              ///< polyline pieces in the final proof
     std::size_t pairs_checked = 0;       ///< candidate pairs examined in the final proof
-    std::size_t input_crossings = 0;     ///< pairs of input segments that meet (left as they are)
+    std::size_t input_crossings = 0;     ///< pairs of input segments that cross (left as they are)
+    std::size_t input_touches = 0;       ///< pairs of input segments that touch or overlap without crossing
 };
 
 struct smooth_result {
@@ -168,6 +174,17 @@ inline bool segments_meet(const p2& a, const p2& b, const p2& c, const p2& d) no
     if (o1 != o2 && o3 != o4) return true;
     return (o1 == 0 && on(a, b, c)) || (o2 == 0 && on(a, b, d)) || (o3 == 0 && on(c, d, a)) ||
            (o4 == 0 && on(c, d, b));
+}
+
+// Whether [a, b] and [c, d] cross properly: each one's ends strictly on
+// both sides of the other's line.
+inline bool segments_cross(const p2& a, const p2& b, const p2& c, const p2& d) noexcept {
+    auto orient = [](const p2& p, const p2& q, const p2& r) {
+        const double v = cross2(q - p, r - p);
+        return (v > 0) - (v < 0);
+    };
+    const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+    return o1 * o2 < 0 && o3 * o4 < 0;
 }
 
 // Distance between the segments [a, b] and [c, d].
@@ -455,11 +472,14 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
                                                    pc.e;
                 a.max_dev = std::max(a.max_dev, dev);
                 if (opt.max_deviation && dev > *opt.max_deviation && !pc.linear) a.raise[s] = 1;
+                if (opt.domain && !pc.linear)
+                    for (const p2& q : pc.q)
+                        if (!opt.domain->contains(q)) a.raise[s] = 1;
                 pieces.push_back(pc);
             }
         }
         // Pairs, by a sweep along x over boxes padded by the largest margin.
-        std::size_t pairs = 0, crossings = 0;
+        std::size_t pairs = 0, crossings = 0, touches = 0;
         std::fill(arc_crossing.begin(), arc_crossing.end(), 0);
         if (opt.preserve_topology) {
             double emax = 0;
@@ -494,9 +514,13 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
                     }
                     if (proved) continue;
                     if (p.linear && q.linear) {
-                        // The input itself meets here: left as it is.
-                        ++crossings;
-                        arc_crossing[p.arc] = arc_crossing[q.arc] = 1;
+                        // The input itself meets here: left as it is. A
+                        // proper crossing (each segment's ends strictly on
+                        // both sides of the other) or a touch.
+                        const bool proper = detail::segments_cross(p.q[0], p.q[3], q.q[0], q.q[3]);
+                        ++(proper ? crossings : touches);
+                        for (auto ai : {p.arc, q.arc})
+                            arc_crossing[ai] = std::max<std::uint8_t>(arc_crossing[ai], proper ? 2 : 1);
                         continue;
                     }
                     fail(p);
@@ -506,6 +530,7 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
         }
         res.stats.pairs_checked = pairs;
         res.stats.input_crossings = crossings;
+        res.stats.input_touches = touches;
         res.stats.pieces = pieces.size();
         // Raise tension where needed.
         for (auto& a : arcs) {
@@ -619,8 +644,8 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
                 touches = touches || junction_features[v].size() > 1;
         for (std::size_t f : t.features) {
             auto& rep = res.features[f];
-            if (arc_crossing[i]) rep.verdict = verdict::crosses;
-            else if (touches && rep.verdict == verdict::simple) rep.verdict = verdict::touches;
+            if (arc_crossing[i] == 2) rep.verdict = verdict::crosses;
+            else if ((touches || arc_crossing[i] == 1) && rep.verdict == verdict::simple) rep.verdict = verdict::touches;
         }
     }
     return res;
