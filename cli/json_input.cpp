@@ -95,6 +95,51 @@ crspline::end_spec parse_end(const json& v, const std::string& path, const char*
     return {crspline::end_spec::kind::tangent, numbers(v, path)};
 }
 
+// The ends of the curve file (docs/spec.md, "The curve file"): the table's
+// words, "closed": true | false, "start": E and "end": E with E "natural",
+// "reflect" or a tangent [dx/dt, ...]; and the compact forms, still read:
+// "end": "closed", "end": {"start": E, "end": E}, and a name in "end" with
+// neither "start" nor "closed" beside it, for both ends. Two fields that
+// say different things are an error naming both.
+void read_ends(const json& root, crspline::curve_spec& c) {
+    const json* closed = root.contains("closed") ? &root["closed"] : nullptr;
+    const json* start = root.contains("start") ? &root["start"] : nullptr;
+    const json* end = root.contains("end") ? &root["end"] : nullptr;
+    if (closed && !closed->is_boolean()) fail("closed", "expected true or false, got " + describe(*closed));
+    const bool is_closed = closed && closed->get<bool>();
+    if (end && end->is_string() && *end == "closed") {  // the compact closed curve
+        if (closed && !is_closed) fail("end", "\"end\": \"closed\" contradicts \"closed\": false");
+        if (start) fail("start", "a closed curve (\"end\": \"closed\") has no start condition");
+        c.closed = true;
+        return;
+    }
+    if (is_closed) {
+        if (start || end)
+            fail(start ? "start" : "end", std::string("a closed curve (\"closed\": true) has no ") +
+                                              (start ? "start" : "end") + " condition");
+        c.closed = true;
+        return;
+    }
+    if (end && end->is_object()) {  // the compact {"start": E, "end": E}
+        if (start) fail("start", "given twice: in \"start\" and in \"end\": {\"start\": ...}");
+        for (const auto& [key, value] : end->items()) {
+            if (key == "start") c.start = parse_end(value, "end.start", "start");
+            else if (key == "end") c.end = parse_end(value, "end.end", "end");
+            else fail("end", "unknown field '" + key + "' (expected \"start\" and \"end\")");
+        }
+        return;
+    }
+    if (end && !end->is_string() && !end->is_array())
+        fail("end", "expected \"natural\", \"reflect\", a tangent [dx/dt, ...], \"closed\" or {\"start\": ..., "
+                    "\"end\": ...}, got " + describe(*end));
+    if (start) c.start = parse_end(*start, "start", "start");
+    if (end && end->is_string() && !start && !closed) {
+        set_ends(c, end->get_ref<const std::string&>());  // the compact name for both ends
+        return;
+    }
+    if (end) c.end = parse_end(*end, "end", "end");
+}
+
 // kb.tension / kb.continuity / kb.bias: one number per vertex, the count and
 // the values judged by the core. null stands where the library ignores the
 // value (the end vertices of an open curve: 0 there); anywhere else it is a
@@ -146,8 +191,8 @@ void parse_tangents(const json& root, const cli_options* f, curve_spec& c) {
         for (const auto& [given, flag] : flags)
             if (given) fail(flag, "given tangents (the input's \"tangents\") take no " + std::string(flag));
     }
-    if (root.contains("end") && !c.closed)
-        fail("tangents", "given tangents take no end conditions (only \"end\": \"closed\")");
+    if ((root.contains("end") || root.contains("start")) && !c.closed)
+        fail("tangents", "given tangents take no end conditions (only \"closed\": true or \"end\": \"closed\")");
     const std::size_t n = c.point_count();
     const json& t = root["tangents"];
     if (t.is_object()) {
@@ -258,7 +303,9 @@ std::string describe_spec_error(const crspline::spec_error& e, const curve_spec&
     return file + what;
 }
 
-curve_spec parse_curve(const document& doc, std::string_view command, std::initializer_list<std::string_view> extra) {
+namespace {
+
+curve_spec read_curve(const document& doc, std::string_view command, std::initializer_list<std::string_view> extra) {
     const json& root = doc.root;
     const cli_options* f = doc.flags;
     if (!root.is_object()) throw input_error("expected a JSON object {\"points\": ...}, got " + describe(root));
@@ -293,9 +340,9 @@ curve_spec parse_curve(const document& doc, std::string_view command, std::initi
     // say that two points are needed.
     if (pts.empty() && c.points.empty()) c.dimension = 1;
 
-    // end: --closed, --start, --end, else "end": "natural" | "reflect" |
-    // "closed" | {"start": E, "end": E}. A flag for one end leaves the other
-    // end as the JSON says (an open curve).
+    // The ends: --closed, --start, --end, else the file's "closed", "start"
+    // and "end" (read_ends). A flag for one end leaves the other end as the
+    // JSON says (an open curve).
     if (f && f->closed && (!f->start.empty() || !f->end.empty()))
         throw input_error("--closed: a closed curve has no end conditions (--start, --end)");
     // From here on the core judges the values (an end's name too): its
@@ -303,20 +350,8 @@ curve_spec parse_curve(const document& doc, std::string_view command, std::initi
     try {
         if (f && f->closed) {
             c.closed = true;
-        } else if (root.contains("end")) {
-            const json& e = root["end"];
-            if (e.is_string()) {
-                set_ends(c, e.get_ref<const std::string&>());
-            } else if (e.is_object()) {
-                for (const auto& [key, value] : e.items()) {
-                    if (key == "start") c.start = parse_end(value, "end.start", "start");
-                    else if (key == "end") c.end = parse_end(value, "end.end", "end");
-                    else fail("end", "unknown field '" + key + "' (expected \"start\" and \"end\")");
-                }
-            } else {
-                fail("end", "expected \"natural\", \"reflect\", \"closed\" or {\"start\": ..., \"end\": ...}, got " +
-                                describe(e));
-            }
+        } else {
+            read_ends(root, c);
         }
         if (f && (!f->start.empty() || !f->end.empty())) {
             c.closed = false;
@@ -411,8 +446,6 @@ curve_spec parse_curve(const document& doc, std::string_view command, std::initi
     return c;
 }
 
-namespace {
-
 // "accuracy" / --accuracy: relative accuracy of arc lengths, in (0, 1) and
 // not below what doubles resolve; default 1e-12.
 double parse_accuracy(const document& doc) {
@@ -430,13 +463,11 @@ std::string missing(const document& doc, const char* key) {
     return doc.has_fields ? "'" + std::string(key) + "'" : "--" + std::string(key);
 }
 
-}  // namespace
-
-eval_spec parse_eval(const document& doc) {
+eval_spec read_eval(const document& doc) {
     const json& root = doc.root;
     const cli_options* f = doc.flags;
     eval_spec e;
-    e.curve = parse_curve(doc, "eval", {"t", "s", "u", "arc_fraction", "knots", "derivatives", "accuracy"});
+    e.curve = read_curve(doc, "eval", {"t", "s", "u", "arc_fraction", "knots", "derivatives", "accuracy"});
     // Where to evaluate: exactly one of t, s, u, arc_fraction. A flag
     // replaces every field: --t 0,1 on a document with "s" evaluates at t.
     struct kind {
@@ -510,22 +541,18 @@ eval_spec parse_eval(const document& doc) {
     return e;
 }
 
-bezier_spec parse_bezier(const document& doc) { return {parse_curve(doc, "bezier", {})}; }
-
-curve_spec parse_analyze(const document& doc) { return parse_curve(doc, "analyze", {"summary", "search"}); }
-
-length_spec parse_length(const document& doc) {
+length_spec read_length(const document& doc) {
     length_spec l;
-    l.curve = parse_curve(doc, "length", {"accuracy"});
+    l.curve = read_curve(doc, "length", {"accuracy"});
     l.accuracy = parse_accuracy(doc);
     return l;
 }
 
-sample_spec parse_sample(const document& doc) {
+sample_spec read_sample(const document& doc) {
     const json& root = doc.root;
     const cli_options* f = doc.flags;
     sample_spec s;
-    s.curve = parse_curve(doc, "sample", {"count", "spacing", "tolerance", "accuracy"});
+    s.curve = read_curve(doc, "sample", {"count", "spacing", "tolerance", "accuracy"});
     s.accuracy = parse_accuracy(doc);
     const bool flag_count = f && !f->count.empty(), flag_tolerance = f && !f->tolerance.empty();
     if (flag_count && flag_tolerance)
@@ -571,6 +598,41 @@ sample_spec parse_sample(const document& doc) {
         s.by = sample_spec::kind::tolerance;
     }
     return s;
+}
+
+// A message about the input's fields starts with the file's name, as a
+// message about its values (describe_spec_error) and a list file's do: a
+// shape error ("points[1][1]: expected a finite number") or an unknown field
+// in curve.json reads "curve.json: points[1][1]: ...". Not for stdin (the
+// field's path is the whole address there, as it always was) nor for a
+// flag's message, which names the flag, nor for a CSV file, whose only
+// fields are flags (its own errors name its lines already).
+template <class F>
+auto in_file(const document& doc, F&& read) -> decltype(read()) {
+    try {
+        return read();
+    } catch (const input_error& e) {
+        const std::string what = e.what();
+        if (!doc.has_fields || doc.file.empty() || doc.file == "<stdin>" || what.rfind("--", 0) == 0 ||
+            what.rfind(doc.file + ": ", 0) == 0)
+            throw;
+        throw input_error(doc.file + ": " + what);
+    }
+}
+
+}  // namespace
+
+curve_spec parse_curve(const document& doc, std::string_view command, std::initializer_list<std::string_view> extra) {
+    return in_file(doc, [&] { return read_curve(doc, command, extra); });
+}
+eval_spec parse_eval(const document& doc) { return in_file(doc, [&] { return read_eval(doc); }); }
+length_spec parse_length(const document& doc) { return in_file(doc, [&] { return read_length(doc); }); }
+sample_spec parse_sample(const document& doc) { return in_file(doc, [&] { return read_sample(doc); }); }
+bezier_spec parse_bezier(const document& doc) {
+    return in_file(doc, [&] { return bezier_spec{read_curve(doc, "bezier", {})}; });
+}
+curve_spec parse_analyze(const document& doc) {
+    return in_file(doc, [&] { return read_curve(doc, "analyze", {"summary", "search"}); });
 }
 
 }  // namespace crspline::cli

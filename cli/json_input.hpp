@@ -102,8 +102,8 @@ struct bezier_spec {
 };
 
 /// The fields every subcommand reads to describe a curve.
-inline constexpr std::string_view curve_fields[] = {"points", "alpha", "grid", "end", "tension", "kb", "strict",
-                                                    "tangents"};
+inline constexpr std::string_view curve_fields[] = {"points", "alpha", "grid", "closed", "start", "end", "tension",
+                                                    "kb", "strict", "tangents"};
 
 /// Validates the curve part of a document. `extra_fields` are the other
 /// top-level keys the subcommand reads itself; any key in neither list is an

@@ -227,7 +227,12 @@ private:
     }
     std::string path_of_next() const { return path(true); }
     std::string path_of_parent() const { return path(false); }
-    std::string prefix(const std::string& path) const { return (path.empty() ? in_.name : path) + ": "; }
+    // A field of a named file after the file's name ("curve.json:
+    // points[1][1]: ..."); on stdin the field's path alone.
+    std::string prefix(const std::string& path) const {
+        if (path.empty()) return in_.name + ": ";
+        return (in_.name == "<stdin>" ? path : in_.name + ": " + path) + ": ";
+    }
 
     // nlohmann counts the end of input as one character read; the offending
     // character is the last one read, at byte index position - 1.

@@ -81,6 +81,6 @@ def test_tangent_errors_name_the_field_and_index():
     assert error_line(dict(base, tangents=[[1, 0]] * 3, tension=0.5)) == \
         "crspline: tangents: given tangents take no 'tension'"
     assert error_line(dict(base, tangents=[[1, 0]] * 3, end="reflect")) == \
-        "crspline: tangents: given tangents take no end conditions (only \"end\": \"closed\")"
+        "crspline: tangents: given tangents take no end conditions (only \"closed\": true or \"end\": \"closed\")"
     assert error_line(dict(base, tangents={"in": [[1, 0]] * 3})).startswith(
         "crspline: tangents: expected {\"in\": [...], \"out\": [...]}")
