@@ -366,8 +366,6 @@ class KochanekBartels(DeCasteljau):
         self._core = self._core_from_keys(keys, closed, "kochanek_bartels", flat)
         self.segments = [tuple(_unit(r) for r in s) for s in self._core.control_quaternions]
 
-    _value = _Curve._value
-
 
 class CatmullRom(KochanekBartels):
     """KochanekBartels with TCB (0, 0, 0)."""

@@ -56,7 +56,7 @@ struct c2_end {
 template <class T = double>
 struct c2_options {
     c2_end<T> start{}, end{};  ///< open curves only
-    bool closed = false;       ///< periodic: key 0 follows the last key after times.back() - times[n-1]... see c2_rotation_spline
+    bool closed = false;       ///< periodic: n keys, n + 1 times (the last: key 0's return)
     bool keep_signs = false;   ///< steps as the given signs say (up to 2 pi), not the short way
     int max_iterations = 100;  ///< Newton steps; convergence takes 3 to 8 in practice
     T unit_tolerance = T(1e-6);
@@ -287,7 +287,7 @@ private:
         t_.assign(times.begin(), times.end());
         for (std::size_t k = 0; k < n; ++k) q_.push_back(checked_unit(keys[k], k, opt.unit_tolerance));
         if (closed_) q_.push_back(q_.front());
-        const std::size_t nseg = q_.size() - 1, m = closed_ ? n : n;  // unknown rates
+        const std::size_t nseg = q_.size() - 1, m = n;  // unknown rates: one per key (closed: w_n is w_0)
         for (std::size_t i = 0; i < nseg; ++i) {
             const quat step = conj(q_[i]) * q_[i + 1];
             r_.push_back(opt.keep_signs ? T(2) * log(step) : to_rotation_vector(step));
@@ -415,10 +415,8 @@ private:
         }
         // The report: the largest acceleration jump at a key, against the largest acceleration there.
         residual_ = 0, accel_scale_ = T(1e-300);
-        for (std::size_t k = 0; k < m; ++k) {
-            if (kind[k] == row::interior) residual_ = std::max(residual_, max_abs(F[k]));
-            else if (kind[k] != row::fixed) residual_ = std::max(residual_, max_abs(F[k]));
-        }
+        for (std::size_t k = 0; k < m; ++k)
+            if (kind[k] != row::fixed) residual_ = std::max(residual_, max_abs(F[k]));
         for (std::size_t i = 0; i < nseg; ++i)
             accel_scale_ = std::max({accel_scale_, max_abs(a_start(i)), max_abs(a_end(i))});
     }

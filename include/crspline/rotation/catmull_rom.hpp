@@ -9,10 +9,10 @@
 //   de_casteljau: given control quaternions per segment (any m >= 2).
 //   barry_goldman: the Barry-Goldman pyramid of slerps.
 //   squad: slerp(slerp(q_i, q_(i+1), u), slerp(s_i+, s_(i+1)-, u), 2u(1-u)).
-// Every kind open or closed. Keys are made hemisphere-continuous by default
-// (the first key gets w >= 0... precisely: walk the keys with p = [1,0,0,0],
-// negate q when dot(p, q) < 0, then p = q, as `splines` does);
-// keep_signs keeps them as given (a negative dot then takes the long way).
+// Every kind open or closed. Keys are made hemisphere-continuous by default,
+// as `splines` does: walk the keys with p = [1, 0, 0, 0], negate q when
+// dot(p, q) < 0, then p = q. keep_signs keeps them as given (a negative dot
+// then takes the long way).
 //
 // The grid: explicit, or alpha: t(i+1) = t(i) + theta_i^alpha, theta_i the
 // rotation angle between consecutive keys as travelled, 4 atan2(|a - b|,
@@ -275,10 +275,12 @@ private:
             // 4 atan2(|p - q|, |p + q|), in [0, 2 pi] (pi at most for canonical keys).
             const T theta = T(4) * std::atan2(norm(p - q), norm(p + q));
             const bool repeated = theta <= T(16) * std::numeric_limits<T>::epsilon();
-            if (repeated && strict && a > 0)
-                throw invalid_input("keys " + std::to_string(k) + " and " + std::to_string((k + 1) % (count - 1 + !closed_)) +
+            if (repeated && strict && a > 0) {
+                const std::size_t keys = closed_ ? count - 1 : count;  // the closing chord wraps to key 0
+                throw invalid_input("keys " + std::to_string(k) + " and " + std::to_string((k + 1) % keys) +
                                     " are the same rotation (angle " + detail::num(double(theta)) +
                                     " rad; strict mode refuses repeated keys with alpha > 0)");
+            }
             const T h = a == 0 ? T(1) : repeated ? T(0) : T(std::pow(double(theta), a));
             grid_[k + 1] = grid_[k] + h;
         }

@@ -59,6 +59,9 @@ coefficients<T> jacobian_coefficients(T theta) noexcept {
             K1 += T(2 * jj) * u;
             v *= -z / T((2 * jj + 2) * (2 * jj + 3));
             K2 += T(2 * jj) * v;
+            // The terms fall faster than geometrically: stop once the largest
+            // (K1's, relative to its sum of about 1/12) is below rounding.
+            if (T(2 * jj) * std::abs(u) <= T(1e-17)) break;
         }
         c.k2 = k2, c.K1 = K1, c.K2 = K2;
     } else {
@@ -82,6 +85,7 @@ T inverse_coefficient(T theta) noexcept {
         for (int j = 2; j < 18; ++j) {
             s *= -y / T((2 * j) * (2 * j + 1));
             S += T(2 * j) * s;
+            if (T(2 * j) * std::abs(s) <= T(1e-17)) break;  // S is about 1/3: below rounding
         }
         const T xs = x > 0 ? x / std::sin(x) : T(1);
         return S * xs / 4;
