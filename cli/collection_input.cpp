@@ -28,7 +28,8 @@ std::string shown(const json& v) {
 }
 
 // A curve of the collection: its points read flat from JSON positions.
-document curve_from_positions(const input_text& in, const json& positions, const std::string& path, std::string id,
+document curve_from_positions(const input_text& in, const json& positions, const std::string& path,
+                              const std::string& pointer, std::string id, const json& feature_id,
                               const json& properties, bool ring) {
     if (!positions.is_array()) fail(in, path, "expected an array of positions [x, y, ...], got " + shown(positions));
     point_set p;
@@ -58,7 +59,9 @@ document curve_from_positions(const input_text& in, const json& positions, const
     document doc;
     doc.points = std::move(p);
     doc.id = std::move(id);
+    doc.source_id = feature_id;
     doc.properties = properties;
+    doc.geojson_pointer = pointer;
     doc.has_fields = false;
     if (ring) doc.root["end"] = "closed";
     return doc;
@@ -66,8 +69,9 @@ document curve_from_positions(const input_text& in, const json& positions, const
 
 // The curves of one GeoJSON geometry at `path`, named `id` (with " ring k"
 // or " part k" when it has several).
-void geometry_curves(const input_text& in, const json& g, const std::string& path, const std::string& id,
-                     const json& properties, std::vector<document>& out) {
+void geometry_curves(const input_text& in, const json& g, const std::string& path, const std::string& pointer,
+                     const std::string& id, const json& feature_id, const json& properties,
+                     std::vector<document>& out) {
     if (!g.is_object() || !g.contains("type") || !g["type"].is_string())
         fail(in, path, "expected a GeoJSON geometry {\"type\": ..., \"coordinates\": ...}, got " + shown(g));
     const std::string type = g["type"].get<std::string>();
@@ -75,10 +79,12 @@ void geometry_curves(const input_text& in, const json& g, const std::string& pat
         const json& gs = g.contains("geometries") ? g["geometries"] : json();
         if (!gs.is_array()) fail(in, path + ".geometries", "expected an array of geometries, got " + shown(gs));
         for (std::size_t i = 0; i < gs.size(); ++i)
-            geometry_curves(in, gs[i], index(path + ".geometries", i), id + " geometry " + std::to_string(i), properties, out);
+            geometry_curves(in, gs[i], index(path + ".geometries", i), pointer + "/geometries/" + std::to_string(i),
+                            id + " geometry " + std::to_string(i), feature_id, properties, out);
         return;
     }
-    const std::string cpath = path + ".coordinates";
+    const std::string cpath = path + ".coordinates", cptr = pointer + "/coordinates";
+    const auto item = [](const std::string& p, std::size_t i) { return p + "/" + std::to_string(i); };
     const json& c = g.contains("coordinates") ? g["coordinates"] : json();
     const auto list = [&](const json& v, const std::string& at) -> const json& {
         if (!v.is_array()) fail(in, at, "expected an array, got " + shown(v));
@@ -88,21 +94,23 @@ void geometry_curves(const input_text& in, const json& g, const std::string& pat
         return count == 1 ? base : base + " " + what + " " + std::to_string(k);
     };
     if (type == "LineString") {
-        out.push_back(curve_from_positions(in, c, cpath, id, properties, false));
+        out.push_back(curve_from_positions(in, c, cpath, cptr, id, feature_id, properties, false));
     } else if (type == "MultiLineString") {
         for (std::size_t i = 0; i < list(c, cpath).size(); ++i)
-            out.push_back(curve_from_positions(in, c[i], index(cpath, i), part(id, "part", i, c.size()), properties, false));
+            out.push_back(curve_from_positions(in, c[i], index(cpath, i), item(cptr, i), part(id, "part", i, c.size()),
+                                               feature_id, properties, false));
     } else if (type == "Polygon") {
         for (std::size_t r = 0; r < list(c, cpath).size(); ++r)
-            out.push_back(curve_from_positions(in, c[r], index(cpath, r), part(id, "ring", r, c.size()), properties, true));
+            out.push_back(curve_from_positions(in, c[r], index(cpath, r), item(cptr, r), part(id, "ring", r, c.size()),
+                                               feature_id, properties, true));
     } else if (type == "MultiPolygon") {
         for (std::size_t p = 0; p < list(c, cpath).size(); ++p) {
             const std::string ppath = index(cpath, p);
             const json& rings = list(c[p], ppath);
             for (std::size_t r = 0; r < rings.size(); ++r)
-                out.push_back(curve_from_positions(in, rings[r], index(ppath, r),
+                out.push_back(curve_from_positions(in, rings[r], index(ppath, r), item(item(cptr, p), r),
                                                    part(part(id, "polygon", p, c.size()), "ring", r, rings.size()),
-                                                   properties, true));
+                                                   feature_id, properties, true));
         }
     } else if (type == "Point" || type == "MultiPoint") {
         fail(in, path, "a " + type + " is not a curve (expected LineString, Polygon or their Multi* forms)");
@@ -121,12 +129,14 @@ std::string feature_id(const json& f, const std::string& path) {
     return path;
 }
 
-void feature_curves(const input_text& in, const json& f, const std::string& path, std::vector<document>& out) {
+void feature_curves(const input_text& in, const json& f, const std::string& path, const std::string& pointer,
+                    std::vector<document>& out) {
     if (!f.is_object() || f.value("type", json()) != "Feature")
         fail(in, path, "expected a GeoJSON Feature, got " + shown(f));
     const json& props = f.contains("properties") ? f["properties"] : json();
     if (!f.contains("geometry") || f["geometry"].is_null()) fail(in, path + ".geometry", "a Feature without a geometry is not a curve");
-    geometry_curves(in, f["geometry"], path + ".geometry", feature_id(f, path), props, out);
+    const json fid = f.contains("id") ? f["id"] : json();
+    geometry_curves(in, f["geometry"], path + ".geometry", pointer + "/geometry", feature_id(f, path), fid, props, out);
 }
 
 bool is_geojson(const json& root) {
@@ -158,6 +168,7 @@ std::optional<std::vector<document>> json_curves(const document& parsed, const i
                 if (!id.is_string() && !id.is_number())
                     fail(in, path + ".id", "expected a string or a number, got " + shown(id));
                 d.id = id.is_string() ? id.get<std::string>() : shown(id);
+                d.source_id = id;
                 d.root.erase("id");
             }
             if (d.root.contains("properties")) {
@@ -174,11 +185,12 @@ std::optional<std::vector<document>> json_curves(const document& parsed, const i
     if (type == "FeatureCollection") {
         const json& fs = root.contains("features") ? root["features"] : json();
         if (!fs.is_array()) fail(in, "features", "expected an array of Features, got " + shown(fs));
-        for (std::size_t i = 0; i < fs.size(); ++i) feature_curves(in, fs[i], index("features", i), out);
+        for (std::size_t i = 0; i < fs.size(); ++i)
+            feature_curves(in, fs[i], index("features", i), "/features/" + std::to_string(i), out);
     } else if (type == "Feature") {
-        feature_curves(in, root, "feature", out);
+        feature_curves(in, root, "feature", "", out);
     } else {
-        geometry_curves(in, root, "geometry", "geometry", json(), out);
+        geometry_curves(in, root, "geometry", "", "geometry", json(), json(), out);
     }
     if (out.empty()) throw input_error(in.name + ": the GeoJSON holds no curve");
     return out;

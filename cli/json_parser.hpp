@@ -69,6 +69,11 @@ struct document {
     std::string file;        ///< the input's name for messages ("" when not known)
     std::string id;          ///< the curve's name in messages when the input holds many ("" for one)
     nlohmann::json properties;  ///< what the input says about the curve (GeoJSON properties), carried to the output
+    nlohmann::json source_id;   ///< the input's own id value (a Feature's or a list item's "id"), null when none
+    /// A curve read from GeoJSON: the JSON pointer of its positions in the
+    /// input ("/features/1/geometry/coordinates/0"), so that an output can
+    /// put the result in the same place (a Polygon's ring stays its ring).
+    std::optional<std::string> geojson_pointer;
     bool has_fields = true;  ///< the input can hold JSON fields (false: CSV, GeoJSON, SVG: only flags)
     /// What reading the curve noticed and changed (a closed ring's repeated
     /// first point dropped), for one line each on stderr.

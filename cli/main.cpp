@@ -150,20 +150,88 @@ std::string csv_field(const std::string& s, char sep) {
     return q + "\"";
 }
 
+// --format geojson of a many-curve input (sample): the polyline of one curve
+// as GeoJSON positions. A closed curve's last sample is its first point to
+// rounding; GeoJSON rings repeat the first position exactly (RFC 7946,
+// 3.1.6), so the last is made a copy of the first.
+output_json geojson_positions(const output_json& out, const document& doc) {
+    output_json points = out.at("points");
+    const std::size_t dim = points.empty() ? 0 : points[0].size();
+    if (dim != 2 && dim != 3)
+        throw input_error("--format geojson: needs 2-D or 3-D points, got " + std::to_string(dim) +
+                          "-D (use json or csv)");
+    const bool closed = (doc.root.contains("end") && doc.root["end"] == "closed") ||
+                        (doc.root.contains("closed") && doc.root["closed"] == true) || (doc.flags && doc.flags->closed);
+    if (closed && points.size() >= 2) points.back() = points.front();
+    return points;
+}
+
+// Drops every "bbox" member: the boxes of the input do not bound the
+// sampled polylines.
+void drop_bboxes(output_json& v) {
+    if (v.is_object()) {
+        v.erase("bbox");
+        for (auto& [key, member] : v.items()) drop_bboxes(member);
+    } else if (v.is_array()) {
+        for (auto& member : v) drop_bboxes(member);
+    }
+}
+
+// The many curves' polylines as one FeatureCollection (docs/cli.md, MANY
+// CURVES). From GeoJSON: the input itself, each curve's positions replaced
+// by its polyline where they were, so ids, properties, foreign members and
+// the structure (a Polygon's rings, a Multi* geometry's parts, a
+// GeometryCollection) come back as they came in; a Feature or a bare
+// geometry is wrapped in a FeatureCollection. From other inputs (a JSON
+// list, SVG paths, CSV blocks): one Feature per curve, a LineString, with
+// the curve's id and properties.
+output_json feature_collection(const loaded_input& in, std::vector<output_json> lines) {
+    if (!in.geojson.is_null()) {
+        output_json root(in.geojson);
+        for (std::size_t i = 0; i < in.curves.size(); ++i)
+            root[output_json::json_pointer(*in.curves[i].geojson_pointer)] = std::move(lines[i]);
+        drop_bboxes(root);
+        const std::string type = root["type"].get<std::string>();
+        if (type == "FeatureCollection") return root;
+        output_json fc = {{"type", "FeatureCollection"}, {"features", output_json::array()}};
+        if (type == "Feature") {
+            fc["features"].push_back(std::move(root));
+        } else {
+            output_json f = {{"type", "Feature"}, {"properties", nullptr}};
+            f["geometry"] = std::move(root);
+            fc["features"].push_back(std::move(f));
+        }
+        return fc;
+    }
+    output_json fc = {{"type", "FeatureCollection"}, {"features", output_json::array()}};
+    for (std::size_t i = 0; i < in.curves.size(); ++i) {
+        const document& doc = in.curves[i];
+        output_json f = {{"type", "Feature"}};
+        f["id"] = doc.source_id.is_null() ? output_json(doc.id) : output_json(doc.source_id);
+        f["properties"] = output_json(doc.properties);
+        f["geometry"] = {{"type", "LineString"}, {"coordinates", std::move(lines[i])}};
+        fc["features"].push_back(std::move(f));
+    }
+    return fc;
+}
+
 // Runs the command on every curve of a many-curve input, in input order,
 // and joins the results (docs/cli.md, "MANY CURVES"): JSON, a list of
 // {"id", "properties", "result"}; CSV/TSV, one table with the curve's id in
-// a first column "curve"; svg-path, one line of path data per curve. Every
+// a first column "curve"; svg-path, one line of path data per curve;
+// geojson, one FeatureCollection (feature_collection); svg, the figure of
+// an input that holds one curve (a figure shows one curve). Every
 // error names the input and the curve; nothing is written unless all
 // curves succeed.
 std::string run_many(const command& cmd, const std::string& format, const loaded_input& in,
                      const number_format& numbers) {
-    if (format == "svg")
+    if (format == "svg" && in.curves.size() != 1)
         throw input_error("--format svg: one curve per figure, and " + in.name + " holds " +
                           std::to_string(in.curves.size()) + " curves (use json, csv or svg-path)");
     const char sep = format == "tsv" ? '\t' : ',';
     std::string text;
     output_json list = output_json::array();
+    std::vector<output_json> lines;  // geojson: each curve's polyline
     std::vector<std::string> notes;
     for (std::size_t i = 0; i < in.curves.size(); ++i) {
         const document& doc = in.curves[i];
@@ -179,8 +247,12 @@ std::string run_many(const command& cmd, const std::string& format, const loaded
                 list.push_back(std::move(item));
                 continue;
             }
+            if (format == "geojson") {
+                lines.push_back(geojson_positions(out, doc));
+                continue;
+            }
             const std::string one = convert_output(cmd.name, format, out, doc, numbers);
-            if (format == "svg-path") {
+            if (format == "svg-path" || format == "svg") {  // svg: the one curve's figure
                 text += one;
                 continue;
             }
@@ -205,6 +277,7 @@ std::string run_many(const command& cmd, const std::string& format, const loaded
         }
     }
     for (const std::string& note : notes) std::cerr << "crspline: note: " << note << '\n';
+    if (format == "geojson") return render(feature_collection(in, std::move(lines)), numbers) ;
     return format == "json" ? render(list) : text;
 }
 

@@ -92,6 +92,7 @@ loaded_input load_input(const cli_options& o) {
         if (auto many = json_curves(parsed, in)) {
             li.curves = std::move(*many);
             li.many = true;
+            if (li.curves.front().geojson_pointer) li.geojson = std::move(parsed.root);
         } else {
             li.curves.push_back(std::move(parsed));
         }

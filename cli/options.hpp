@@ -51,6 +51,9 @@ struct loaded_input {
     std::string name;               ///< the input's name in messages
     std::vector<document> curves;   ///< at least one
     bool many = false;              ///< a many-curve input: one result per curve, in order
+    /// A GeoJSON input as read (its curves point into it: document::geojson_pointer);
+    /// null for any other input.
+    nlohmann::json geojson;
 };
 
 /// Reads and parses the input named by the options: its curves, each
