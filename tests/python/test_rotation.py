@@ -240,3 +240,26 @@ def test_drop_in_errors_are_the_packages():
     # The package's quirk, kept: q^s is q itself when |w| >= 1, so slerp(q, -q, 0) is -q.
     q = sq.UnitQuaternion()
     assert sq.slerp(q, -q, 0).wxyz == (-1.0, -0.0, -0.0, -0.0)
+
+
+@needs_scipy
+def test_conversions_match_scipy(seed):
+    """Matrices, rotation vectors and Euler angles in all 24 of SciPy's
+    conventions (lower case extrinsic, upper case intrinsic) agree with
+    SciPy's on random rotations (angles to 1e-12: random draws are far from
+    gimbal lock, where both pick one of many angle triples)."""
+    rng = np.random.default_rng(seed)
+    q = rng.normal(size=(50, 4))
+    q /= np.linalg.norm(q, axis=1)[:, None]
+    r = Rotation.from_quat(q[:, [1, 2, 3, 0]])
+    assert np.abs(rotation.as_matrix(q) - r.as_matrix()).max() <= 1e-15
+    assert up_to_sign(rotation.from_rotvec(r.as_rotvec()), q).max() <= 1e-15
+    assert np.abs(rotation.as_rotvec(q) - r.as_rotvec()).max() <= 1e-14
+    checked = 0
+    for base in ("xyz", "xzy", "yxz", "yzx", "zxy", "zyx", "xyx", "xzx", "yxy", "yzy", "zxz", "zyz"):
+        for seq in (base, base.upper()):
+            e = r.as_euler(seq)
+            assert np.abs(rotation.as_euler(q, seq) - e).max() <= 1e-12, seq
+            assert up_to_sign(rotation.from_euler(seq, e), q).max() <= 1e-14, seq
+            checked += 1
+    assert checked == 24
