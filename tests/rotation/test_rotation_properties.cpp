@@ -624,3 +624,27 @@ TEST(RotationProperties, KeepSignsTakesTheLongWay) {
     }
     EXPECT_EQ(checked, 20);
 }
+
+// Given angular velocities at the ends of an open Catmull-Rom curve: the
+// curve's own omega there is the given one (world frame, or body frame
+// rotated by the end key), to rounding of the control quaternion exp(w h/6) k
+// and of the exact derivative (1e-13 of the scale).
+TEST(RotationProperties, GivenEndAngularVelocity) {
+    CRSPLINE_SEEDED(seed, 2824);
+    std::mt19937_64 rng(seed);
+    int checked = 0;
+    for (int round = 0; round < 20; ++round) {
+        const std::size_t n = 3 + rng() % 5;
+        const auto keys = random_keys(rng, n, 5, 120);
+        const v3 w0 = random_vec(rng, 1.5), w1 = random_vec(rng, 0.7);
+        auto o = make_options(spline_kind::catmull_rom, false, 0.5);
+        o.start = rotation_end<double>::velocity(w0);
+        o.end = rotation_end<double>::velocity(w1, frame::body);
+        const quaternion_spline<double> c(keys, o);
+        const auto g = c.grid();
+        EXPECT_LE(crspline::max_abs(c.angular_velocity(g.front()) - w0), 1e-13 * (1 + crspline::norm(w0)));
+        EXPECT_LE(crspline::max_abs(c.angular_velocity(g.back(), frame::body) - w1), 1e-13 * (1 + crspline::norm(w1)));
+        ++checked;
+    }
+    EXPECT_EQ(checked, 20);
+}
