@@ -261,15 +261,15 @@ void bind_rotation(py::module_& m) {
         .def_property_readonly("grid", [](const PC& c) { return grid_of(c.grid()); })
         .def("evaluate",
              [](const PC& c, const farray& t, const std::string& f) {
-                 const std::size_t m = std::size_t(t.size());
-                 std::vector<pose_sample<double>> out(m);
+                 const std::size_t count = std::size_t(t.size());
+                 std::vector<pose_sample<double>> out(count);
                  {
                      py::gil_scoped_release release;
-                     c.evaluate(std::span<const double>(t.data(), m), std::span<pose_sample<double>>(out), to_frame(f));
+                     c.evaluate(std::span<const double>(t.data(), count), std::span<pose_sample<double>>(out), to_frame(f));
                  }
-                 farray pos({py::ssize_t(m), py::ssize_t(3)}), q({py::ssize_t(m), py::ssize_t(4)}),
-                     vel({py::ssize_t(m), py::ssize_t(3)}), w({py::ssize_t(m), py::ssize_t(3)});
-                 for (std::size_t k = 0; k < m; ++k) {
+                 farray pos({py::ssize_t(count), py::ssize_t(3)}), q({py::ssize_t(count), py::ssize_t(4)}),
+                     vel({py::ssize_t(count), py::ssize_t(3)}), w({py::ssize_t(count), py::ssize_t(3)});
+                 for (std::size_t k = 0; k < count; ++k) {
                      const auto& s = out[k];
                      for (std::size_t d = 0; d < 3; ++d) {
                          pos.mutable_data()[3 * k + d] = s.position[d];
