@@ -258,6 +258,21 @@ class _Curve:
         q = self._core.evaluate_on(_np.array([seg], dtype=_np.int64), _np.array([float(t)]), 0, "world")[0]
         return _unit(q[0])
 
+    def _values(self, t):
+        """Rotations at an array of t in one call to the core (the package
+        loops in Python); the first t outside the grid raises as it would."""
+        a = _np.asarray(t, dtype=_np.float64)
+        flat = a.reshape(-1)
+        g = self.grid
+        bad = ~((flat >= g[0]) & (flat <= g[-1]))
+        if bad.any():
+            self._segment(flat[int(_np.argmax(bad))])  # raises 't too small/big: ...'
+        seg = _np.minimum(_np.searchsorted(g, flat, side="right") - 1, len(g) - 2).astype(_np.int64)
+        q = self._core.evaluate_on(seg, _np.ascontiguousarray(flat), 0, "world")[0]
+        out = _np.empty(len(flat), dtype=object)
+        out[:] = [_unit(r) for r in q]
+        return out.reshape(a.shape)
+
     def _many(self, t, one):
         a = _np.asarray(t)
         out = [one(x) for x in a.reshape(-1)]
@@ -291,7 +306,7 @@ class PiecewiseSlerp(_Curve):
         if n != 0:
             raise NotImplementedError("Derivatives are not implemented yet")
         if not _np.isscalar(t):
-            return self._many(t, self._value)
+            return self._values(t)
         return self._value(t)
 
 
@@ -319,7 +334,7 @@ class DeCasteljau(_Curve):
             raise ValueError(f"Unsupported n: {n!r}")
         one = self._value if n == 0 else self._formula_omega
         if not _np.isscalar(t):
-            return self._many(t, one)
+            return self._values(t) if n == 0 else self._many(t, one)
         return one(t)
 
     def _formula_omega(self, t):
@@ -384,7 +399,7 @@ class BarryGoldman(_Curve):
 
     def evaluate(self, t):
         if not _np.isscalar(t):
-            return self._many(t, self._value)
+            return self._values(t)
         return self._value(t)
 
 
@@ -399,5 +414,5 @@ class Squad(_Curve):
 
     def evaluate(self, t):
         if not _np.isscalar(t):
-            return self._many(t, self._value)
+            return self._values(t)
         return self._value(t)

@@ -237,6 +237,9 @@ def test_drop_in_errors_are_the_packages():
         sq.CatmullRom(k).evaluate(2.5)
     with pytest.raises(ValueError, match="t too small: -1"):
         sq.Squad(k).evaluate(-1)
+    with pytest.raises(ValueError, match="t too big: 3.0"):
+        sq.CatmullRom(k).evaluate([0.5, 3.0, 4.0])  # an array: the first t outside, as the package's loop
+    assert sq.PiecewiseSlerp(k).evaluate(np.zeros((2, 3))).shape == (2, 3)  # object arrays of t's shape
     # The package's quirk, kept: q^s is q itself when |w| >= 1, so slerp(q, -q, 0) is -q.
     q = sq.UnitQuaternion()
     assert sq.slerp(q, -q, 0).wxyz == (-1.0, -0.0, -0.0, -0.0)
