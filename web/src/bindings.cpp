@@ -24,6 +24,7 @@
 #include <crspline/version.hpp>
 #include <crspline/analysis.hpp>
 #include <crspline/certify.hpp>
+#include <crspline/decision.hpp>
 #include <crspline/intersections.hpp>
 #include <crspline/report.hpp>
 #include <crspline/resolution.hpp>
@@ -595,10 +596,11 @@ public:
                 if (!is_nullish(o["tolerance"])) opt.tolerance = o["tolerance"].as<double>();
             }
             const std::size_t dim = std::size_t(dimension());
-            return visit([&](const auto& c) {
+            val r = visit([&](const auto& c) {
                 js_builder b;
                 return cr::report(b, cr::make_report(c.curve, opt, dim));
             });
+            return with_verdict(r, o);
         });
     }
     val analyze0() const { return analyze(val::undefined()); }
@@ -665,6 +667,128 @@ public:
         });
     }
 
+    // --- the decision (decision.hpp, issue 27) ---------------------------------
+    // Plane curves only: the decision is about crossings, which are generic
+    // in 2-D (clearance answers in any dimension).
+    const cr::catmull_rom<2>& plane(const char* what) const {
+        const auto* c = std::get_if<curve_of<2>>(&c_);
+        if (!c || c->dim != 2)
+            throw cr::invalid_input(std::string(what) + " needs plane curves (dimension 2), got dimension " +
+                                    std::to_string(dimension()) + " (clearance works in any dimension)");
+        return c->curve;
+    }
+    static cr::decision_options decision_options_from(const val& o) {
+        cr::decision_options opt;
+        if (is_nullish(o)) return opt;
+        if (!is_nullish(o["fastPath"])) opt.fast_path = o["fastPath"].as<bool>();
+        if (!is_nullish(o["recordPairs"])) opt.record_pairs = o["recordPairs"].as<bool>();
+        for (const char* key : {"budget", "pairBudget"}) {
+            const val v = o[key];
+            if (is_nullish(v)) continue;
+            const double x = v.isNumber() ? v.as<double>() : std::nan("");
+            if (!(x >= 0 && x <= 9007199254740992.0 && x == std::floor(x)))
+                throw cr::invalid_input(std::string(key) + " must be a non-negative integer, got " + cr::detail::num(x));
+            (std::string(key) == "budget" ? opt.budget : opt.pair_budget) = std::size_t(x);
+        }
+        return opt;
+    }
+    // The decision as the report writes it (report_decision's keys:
+    // verdict, fast_path, floor, crossings, touches, pairs).
+    val decide(val o) const {
+        return guarded([&] {
+            js_builder b;
+            return cr::report_decision(b, cr::decide(plane("the decision"), decision_options_from(o)));
+        });
+    }
+    val decide0() const { return decide(val::undefined()); }
+    // The report with "verdict" first (as the command line's and Python's
+    // report) and the decision under "decision"; a curve that is not plane
+    // gets "verdict": null. o.decision === false skips it (null too).
+    // report.hpp does not write the decision yet: this is decision.hpp's
+    // shape for it; once report.hpp writes "verdict", its report is used as is.
+    val with_verdict(const val& report, const val& o) const {
+        if (report.hasOwnProperty("verdict")) return report;  // report.hpp writes it: its shape wins
+        val r = val::object();
+        const bool wanted = is_nullish(o) || is_nullish(o["decision"]) || o["decision"].as<bool>();
+        val d = val::null();
+        if (wanted && dimension() == 2) d = decide0();
+        r.set("verdict", d.isNull() ? val::null() : d["verdict"]);
+        val::global("Object").call<void>("assign", r, report);
+        r.set("decision", d);
+        return r;
+    }
+    // Two curves: do they cross each other? (curve 0 is a, 1 is b)
+    static val decidePair(const Spline& a, const Spline& b, val o) {
+        return guarded([&] {
+            js_builder bld;
+            return cr::report_decision(bld, cr::decide(a.plane("the decision"), b.plane("the decision"),
+                                                       decision_options_from(o)));
+        });
+    }
+    // A set: does any curve cross another? o.self: each curve's own
+    // crossings too.
+    static val decideSet(val splines, val o) {
+        return guarded([&] {
+            if (is_nullish(splines) || !splines["length"].isNumber())
+                throw cr::invalid_input("decideSet takes an array of curves");
+            const std::size_t n = splines["length"].as<std::size_t>();
+            std::vector<cr::catmull_rom<2>> curves;
+            curves.reserve(n);
+            for (std::size_t i = 0; i < n; ++i) {
+                const Spline* s = splines[i].as<Spline*>(emscripten::allow_raw_pointers());
+                if (!s) throw cr::invalid_input("curve " + std::to_string(i) + " of the set is missing");
+                curves.push_back(s->plane(("curve " + std::to_string(i) + " of the set: the decision").c_str()));
+            }
+            const bool self = !is_nullish(o) && !is_nullish(o["self"]) && o["self"].as<bool>();
+            js_builder b;
+            return cr::report_decision(b, cr::decide(std::span<const cr::catmull_rom<2>>(curves), self,
+                                                     decision_options_from(o)));
+        });
+    }
+    template <std::size_t D>
+    static val clearance_object(const cr::clearance_result<D>& r, std::size_t dim) {
+        val o = val::object();
+        o.set("distance", r.distance);
+        o.set("lowerBound", r.lower_bound);
+        o.set("curves", val::array(std::vector<double>{double(r.curve[0]), double(r.curve[1])}));
+        o.set("segments", val::array(std::vector<double>{double(r.segment[0]), double(r.segment[1])}));
+        o.set("u", val::array(std::vector<double>{r.u[0], r.u[1]}));
+        val pts = val::array();
+        pts.call<void>("push", point_array(r.points[0], dim));
+        pts.call<void>("push", point_array(r.points[1], dim));
+        o.set("points", pts);
+        o.set("exhausted", r.exhausted);
+        return o;
+    }
+    static double clearance_accuracy(double accuracy) {
+        if (!(accuracy >= 0) || !std::isfinite(accuracy))
+            throw cr::invalid_input("clearance accuracy must be a finite distance >= 0 (0: 1e-10 of the extent), got " +
+                                    cr::detail::num(accuracy));
+        return accuracy;
+    }
+    // The least distance between non-adjacent segments, any dimension:
+    // {distance, lowerBound, curves, segments, u, points, exhausted}.
+    val clearance(double accuracy) const {
+        return guarded([&] {
+            const double acc = clearance_accuracy(accuracy);
+            return visit([&](const auto& c) { return clearance_object(cr::clearance(c.curve, acc), c.dim); });
+        });
+    }
+    val clearance0() const { return clearance(0); }
+    // The least distance between two curves of one dimension.
+    static val clearancePair(const Spline& a, const Spline& b, double accuracy) {
+        return guarded([&] {
+            const double acc = clearance_accuracy(accuracy);
+            if (a.dimension() != b.dimension())
+                throw cr::invalid_input("clearance between curves of dimensions " + std::to_string(a.dimension()) +
+                                        " and " + std::to_string(b.dimension()) + ": they must be equal");
+            return a.visit([&](const auto& ca) {
+                using C = std::decay_t<decltype(ca)>;
+                const C& cb = std::get<C>(b.c_);
+                return clearance_object(cr::clearance(ca.curve, cb.curve, acc), ca.dim);
+            });
+        });
+    }
 };
 
 // One segment analysed from its four control points (the oracle's case):
@@ -740,7 +864,14 @@ EMSCRIPTEN_BINDINGS(crspline) {
         .function("intersections", &Spline::intersections0)
         .function("certify", &Spline::certify)
         .function("certify", &Spline::certify0)
-        .function("boundingVolumes", &Spline::boundingVolumes);
+        .function("boundingVolumes", &Spline::boundingVolumes)
+        .function("decide", &Spline::decide)
+        .function("decide", &Spline::decide0)
+        .function("clearance", &Spline::clearance)
+        .function("clearance", &Spline::clearance0)
+        .class_function("decidePair", &Spline::decidePair)
+        .class_function("decideSet", &Spline::decideSet)
+        .class_function("clearancePair", &Spline::clearancePair);
     function("analyzeSegment", &analyzeSegment);
     function("version", &version);
 }
