@@ -165,6 +165,10 @@ export class CatmullRom {
   intersections(tolerance?: number): Intersections;
   /** Cusps: (segment, u, t, point...) per cusp, flat. */
   cusps(): Float64Array;
+  /** Does the curve cross itself? A proved verdict (plane curves only; an Error otherwise). */
+  decide(options?: DecisionOptions): Decision;
+  /** The least distance between non-adjacent segments (any dimension). */
+  clearance(accuracy?: number): Clearance;
 
   /** Frees the WebAssembly memory now (otherwise when the curve is garbage collected). */
   dispose(): void;
@@ -173,6 +177,155 @@ export class CatmullRom {
 /** A curve through the points (arrays of 1..16 coordinates, {x, y, z?} objects, or flat numbers with options.dimension). */
 export function catmullRom(points: ArrayLike<PointLike> | ArrayLike<number>, options?: CurveOptions): CatmullRom;
 
+export type Verdict = 'simple' | 'crosses' | 'touches';
+export type DecisionArgument = 'paper_rule' | 'separation' | 'joint' | 'monotone' | 'crossing' | 'unresolved';
+
+export interface DecisionOptions {
+  /** Try the paper's certificate first (single curves; default true). */
+  fastPath?: boolean;
+  /** Visits in all before the remaining pairs are contacts (0: the core's default). */
+  budget?: number;
+  /** Visits for one pair of pieces. */
+  pairBudget?: number;
+  /** Fill `pairs` (default true). */
+  recordPairs?: boolean;
+}
+
+/** The decision, as the report writes it under "decision" (docs/analysis.md, docs/report.md). */
+export interface Decision {
+  verdict: Verdict;
+  fast_path: boolean;
+  /** delta, the contact floor: 2^-32 of the extent from the first point. */
+  floor: number;
+  /** Proved transversal crossings: u[k] is an interval of segments[k]'s local parameter on curves[k]. */
+  crossings: { curves: [number, number]; segments: [number, number]; u: [[number, number], [number, number]]; point: [number, number] }[];
+  touches: { curves: [number, number]; segments: [number, number]; u: [number, number]; distance: number; budget_exhausted: boolean }[];
+  pairs: { curves: [number, number]; segments: [number, number]; arguments: DecisionArgument[] }[];
+}
+
+/** The least distance and where: the true one lies in [lowerBound, distance]. */
+export interface Clearance {
+  distance: number;
+  lowerBound: number;
+  curves: [number, number];
+  segments: [number, number];
+  u: [number, number];
+  points: [Float64Array, Float64Array];
+  exhausted: boolean;
+}
+
+/** The decision of one curve (curve.decide()). */
+export function decide(curve: CatmullRom, options?: DecisionOptions): Decision;
+/** Do two plane curves cross each other? Crossings name curve 0 (a) and 1 (b). */
+export function decidePair(a: CatmullRom, b: CatmullRom, options?: DecisionOptions): Decision;
+/** Do any two curves of the set cross? self: each curve's own crossings too. */
+export function decideSet(curves: CatmullRom[], options?: DecisionOptions & { self?: boolean }): Decision;
+/** Between non-adjacent segments of one curve, or between two curves of one dimension. */
+export function clearance(curve: CatmullRom, accuracy?: number): Clearance;
+export function clearance(a: CatmullRom, b: CatmullRom, accuracy?: number): Clearance;
+
+// --- rotations (quaternions [w, x, y, z], crspline's order) ---------------
+
+/** A unit quaternion [w, x, y, z]. */
+export type QuaternionWXYZ = ArrayLike<number>;
+export type RotationFrame = 'world' | 'body';
+export type RotationKind = 'catmull_rom' | 'kochanek_bartels' | 'piecewise_slerp' | 'barry_goldman' | 'squad';
+/** An angular velocity at an end, rad per unit t. */
+export interface AngularVelocityEnd { omega: ArrayLike<number>; frame?: RotationFrame }
+
+export interface QuaternionSplineOptions {
+  kind?: RotationKind;
+  /** On the rotation angle, in [0, 1]; none and no grid: 0, 1, 2, ... */
+  alpha?: number;
+  grid?: ArrayLike<number>;
+  closed?: boolean;
+  start?: 'natural' | 'natural_splines' | AngularVelocityEnd;
+  end?: 'natural' | 'natural_splines' | AngularVelocityEnd;
+  kb?: { tension?: number | number[]; continuity?: number | number[]; bias?: number | number[] };
+  /** Keep the given signs (the long way where a key's dot with the previous is negative). */
+  keepSigns?: boolean;
+  /** Refuse repeated keys with alpha > 0. */
+  strict?: boolean;
+  unitTolerance?: number;
+}
+
+export interface RotationSplineOptions {
+  closed?: boolean;
+  start?: 'scipy' | 'natural' | AngularVelocityEnd;
+  end?: 'scipy' | 'natural' | AngularVelocityEnd;
+  keepSigns?: boolean;
+  unitTolerance?: number;
+}
+
+export interface RotationJet {
+  q: Float64Array;
+  omega: Float64Array | null;
+  alpha: Float64Array | null;
+}
+
+export class RotationCurve {
+  private constructor();
+  readonly kind: RotationKind | 'c2';
+  readonly closed: boolean;
+  readonly segmentCount: number;
+  readonly grid: Float64Array;
+  readonly tMin: number;
+  readonly tMax: number;
+  /** The keys after the sign rule, flat [w, x, y, z]. */
+  readonly keys: Float64Array;
+  /** The C2 spline's Newton residual and iterations; null for the Catmull-Rom family. */
+  readonly residual: number | null;
+  readonly iterations: number | null;
+  readonly disposed: boolean;
+  evaluate(t: number, order?: 0 | 1 | 2, frame?: RotationFrame): RotationJet;
+  /** The rotation at t, [w, x, y, z]. */
+  quaternion(t: number): Float64Array;
+  evaluateMany(t: ArrayLike<number>, order?: 0 | 1 | 2, frame?: RotationFrame): RotationJet;
+  /** The total angle turned through (radians). */
+  angleLength(accuracy?: number): number;
+  constantAngularSpeedTimes(n: number, accuracy?: number): Float64Array;
+  dispose(): void;
+}
+
+export interface PoseSample {
+  position: Float64Array;
+  /** [w, x, y, z] */
+  orientation: Float64Array;
+  velocity: Float64Array;
+  omega: Float64Array;
+}
+
+export interface PoseCurveOptions {
+  alpha?: number;
+  grid?: ArrayLike<number>;
+  closed?: boolean;
+  /** C2 rotation spline (default) or quaternion Catmull-Rom. */
+  c2Rotation?: boolean;
+}
+
+export class PoseCurve {
+  private constructor();
+  readonly grid: Float64Array;
+  readonly tMin: number;
+  readonly tMax: number;
+  readonly disposed: boolean;
+  evaluate(t: number, frame?: RotationFrame): PoseSample;
+  evaluateMany(t: ArrayLike<number>): { positions: Float64Array; orientations: Float64Array };
+  constantSpeedTimes(n: number, positionWeight?: number, angleWeight?: number, accuracy?: number): Float64Array;
+  dispose(): void;
+}
+
+/** The quaternion Catmull-Rom family through keys ([w, x, y, z] each, or flat). */
+export function quaternionSpline(keys: ArrayLike<QuaternionWXYZ> | ArrayLike<number>, options?: QuaternionSplineOptions): RotationCurve;
+/** The C2 rotation spline (SciPy's RotationSpline, converged). */
+export function rotationSpline(times: ArrayLike<number>, keys: ArrayLike<QuaternionWXYZ> | ArrayLike<number>, options?: RotationSplineOptions): RotationCurve;
+export function poseCurve(positions: ArrayLike<ArrayLike<number> | { x: number; y: number; z: number }> | ArrayLike<number>,
+  rotations: ArrayLike<QuaternionWXYZ> | ArrayLike<number>, options?: PoseCurveOptions): PoseCurve;
+/** [w, x, y, z] -> [x, y, z, w] (three.js, SciPy, glTF). */
+export function toXYZW(q: ArrayLike<number>, out?: Float64Array): Float64Array;
+/** [x, y, z, w] -> [w, x, y, z]. */
+export function fromXYZW(q: ArrayLike<number>, out?: Float64Array): Float64Array;
+
 export interface Crspline {
   init: typeof init;
   isReady: typeof isReady;
@@ -180,6 +333,17 @@ export interface Crspline {
   wasmMemoryBytes: typeof wasmMemoryBytes;
   catmullRom: typeof catmullRom;
   CatmullRom: typeof CatmullRom;
+  decide: typeof decide;
+  decidePair: typeof decidePair;
+  decideSet: typeof decideSet;
+  clearance: typeof clearance;
+  quaternionSpline: typeof quaternionSpline;
+  rotationSpline: typeof rotationSpline;
+  poseCurve: typeof poseCurve;
+  RotationCurve: typeof RotationCurve;
+  PoseCurve: typeof PoseCurve;
+  toXYZW: typeof toXYZW;
+  fromXYZW: typeof fromXYZW;
 }
 declare const crspline: Crspline;
 export default crspline;

@@ -129,6 +129,9 @@ function flatten(points, dimension) {
   return [flat, dim];
 }
 
+// The WASM Spline of a CatmullRom (set in the class's static block).
+let rawSpline;
+
 // The WASM object is freed when its curve is collected, unless dispose()
 // freed it first.
 const registry = typeof FinalizationRegistry === 'function'
@@ -251,8 +254,198 @@ export class CatmullRom {
   certify(options) { return options === undefined ? this.#spline().certify() : this.#spline().certify(options); }
   intersections(tolerance = 0) { return this.#spline().intersections(tolerance); }
   cusps() { return this.#spline().cusps(); }
+  /// Does the curve cross itself? A proved verdict (plane curves): the
+  /// report's decision object {verdict: 'simple' | 'crosses' | 'touches',
+  /// fast_path, floor, crossings, touches, pairs}. options: {fastPath,
+  /// budget, pairBudget, recordPairs}.
+  decide(options) { return options === undefined ? this.#spline().decide() : this.#spline().decide(options); }
+  /// The least distance between non-adjacent segments (any dimension):
+  /// {distance, lowerBound, curves, segments, u, points, exhausted}.
+  clearance(accuracy = 0) { return this.#spline().clearance(accuracy); }
+  static {
+    rawSpline = (c) => {
+      if (!(c instanceof CatmullRom)) throw inputError('expected a curve made by catmullRom()', 'curve');
+      return c.#spline();
+    };
+  }
 }
 if (typeof Symbol.dispose === 'symbol') CatmullRom.prototype[Symbol.dispose] = CatmullRom.prototype.dispose;
 
-const api = { init, isReady, version, wasmMemoryBytes, catmullRom, CatmullRom };
+// ---------------------------------------------------------------------------
+// The decision between curves (issue 27) and clearance.
+// ---------------------------------------------------------------------------
+
+/// The verdict of one curve: curve.decide(options).
+export function decide(curve, options) { return rawSpline(curve) && curve.decide(options); }
+
+/// Do two plane curves cross each other? (Each one's own crossings are
+/// decide()'s.) Crossings name curve 0 (a) and 1 (b).
+export function decidePair(a, b, options = {}) {
+  return module().Spline.decidePair(rawSpline(a), rawSpline(b), options);
+}
+
+/// Do any two curves of a set cross? options.self: each curve's own
+/// crossings too. Crossings name the curves by their index in the array.
+export function decideSet(curves, options = {}) {
+  if (!Array.isArray(curves)) throw inputError('decideSet takes an array of curves', 'curves');
+  return module().Spline.decideSet(curves.map((c, i) => {
+    try {
+      return rawSpline(c);
+    } catch (e) {
+      throw inputError(`curve ${i} of the set: ${e.message}`, 'curves', i);
+    }
+  }), options);
+}
+
+/// clearance(curve, accuracy?): between non-adjacent segments of one curve;
+/// clearance(a, b, accuracy?): between two curves of one dimension.
+export function clearance(a, b, accuracy) {
+  if (b instanceof CatmullRom) return module().Spline.clearancePair(rawSpline(a), rawSpline(b), accuracy ?? 0);
+  return rawSpline(a) && a.clearance(b ?? 0);
+}
+
+// ---------------------------------------------------------------------------
+// Rotations (issue 28): quaternions are [w, x, y, z] here, the core's order
+// (crspline/three converts to and from three.js' [x, y, z, w]).
+// ---------------------------------------------------------------------------
+
+// [[w, x, y, z], ...] or flat numbers, as a flat Float64Array.
+function flatQuaternions(q, what) {
+  if (q === null || q === undefined || typeof q.length !== 'number' || typeof q === 'string')
+    throw inputError(`${what} must be an array of quaternions [w, x, y, z]`, what);
+  if (q.length > 0 && typeof q[0] !== 'number') {
+    const flat = new Float64Array(q.length * 4);
+    for (let i = 0; i < q.length; ++i) {
+      const r = q[i];
+      if (!r || typeof r.length !== 'number' || r.length !== 4)
+        throw inputError(`${what}[${i}] must be [w, x, y, z], got ${JSON.stringify(r)}`, what, i);
+      flat.set(r, i * 4);
+    }
+    return flat;
+  }
+  return Float64Array.from(q);
+}
+
+function flatVectors(p, what) {
+  if (p === null || p === undefined || typeof p.length !== 'number')
+    throw inputError(`${what} must be an array of [x, y, z]`, what);
+  if (p.length > 0 && typeof p[0] !== 'number') {
+    const flat = new Float64Array(p.length * 3);
+    for (let i = 0; i < p.length; ++i) {
+      const r = p[i];
+      const v = r && typeof r.length === 'number' ? r : r && 'x' in r ? [r.x, r.y, r.z] : null;
+      if (!v || v.length !== 3) throw inputError(`${what}[${i}] must be [x, y, z] or {x, y, z}`, what, i);
+      flat.set(v, i * 3);
+    }
+    return flat;
+  }
+  return Float64Array.from(p);
+}
+
+const rotationRegistry = typeof FinalizationRegistry === 'function'
+  ? new FinalizationRegistry((o) => { if (!o.isDeleted()) o.delete(); })
+  : null;
+
+// Owns a WASM object: dispose() frees it now, else the collector does.
+class Owned {
+  #o;
+  constructor(o) {
+    this.#o = o;
+    rotationRegistry?.register(this, o, this);
+  }
+  _o() {
+    if (!this.#o) throw new Error('crspline: this curve was disposed');
+    return this.#o;
+  }
+  dispose() {
+    if (!this.#o) return;
+    rotationRegistry?.unregister(this);
+    this.#o.delete();
+    this.#o = null;
+  }
+  get disposed() { return this.#o === null; }
+}
+
+/// A rotation curve through unit quaternions: quaternionSpline() (the
+/// Catmull-Rom family) or rotationSpline() (C2).
+export class RotationCurve extends Owned {
+  get kind() { return this._o().kind(); }
+  get closed() { return this._o().closed(); }
+  get segmentCount() { return this._o().segmentCount(); }
+  get grid() { return this._o().grid(); }
+  get tMin() { return this._o().tMin(); }
+  get tMax() { return this._o().tMax(); }
+  /// The keys after the sign rule, flat [w, x, y, z] (closed: one more).
+  get keys() { return this._o().keys(); }
+  /// C2 only: the Newton residual and iteration count (null otherwise).
+  get residual() { return this._o().residual(); }
+  get iterations() { return this._o().iterations(); }
+  /// {q: [w, x, y, z], omega, alpha} at t: rates to `order` (0..2) in
+  /// `frame` ('world' or 'body'), rad per unit t (null beyond order).
+  evaluate(t, order = 0, frame = 'world') { return this._o().evaluate(t, order, frame); }
+  /// The rotation at t, [w, x, y, z].
+  quaternion(t) { return this._o().evaluate(t).q; }
+  /// Many t: {q: 4 numbers per t, omega, alpha: 3 per t or null}.
+  evaluateMany(t, order = 0, frame = 'world') { return this._o().evaluateMany(t, order, frame); }
+  /// The total angle turned through (radians), to relative accuracy.
+  angleLength(accuracy = 0) { return this._o().angleLength(accuracy); }
+  /// n values of t at constant angular speed.
+  constantAngularSpeedTimes(n, accuracy = 0) { return this._o().constantAngularSpeedTimes(n, accuracy); }
+}
+
+/// The quaternion Catmull-Rom family. keys: [[w, x, y, z], ...] or flat.
+/// options: kind ('catmull_rom' | 'kochanek_bartels' | 'piecewise_slerp' |
+/// 'barry_goldman' | 'squad'), alpha (on the rotation angle) or grid,
+/// closed, start / end ('natural' | 'natural_splines' | {omega, frame}),
+/// kb ({tension, continuity, bias}), keepSigns, strict, unitTolerance.
+export function quaternionSpline(keys, options = {}) {
+  const M = module();
+  return new RotationCurve(M.RotationCurve.quaternionSpline(flatQuaternions(keys, 'keys'), options));
+}
+
+/// The C2 rotation spline (SciPy's RotationSpline, converged) through keys
+/// at times. options: closed, start / end ('scipy' | 'natural' | {omega,
+/// frame}), keepSigns, unitTolerance.
+export function rotationSpline(times, keys, options = {}) {
+  const M = module();
+  return new RotationCurve(M.RotationCurve.c2Spline(Float64Array.from(times), flatQuaternions(keys, 'keys'), options));
+}
+
+/// A pose curve: a centripetal (or alpha / grid) position curve and a C2
+/// rotation curve (options.c2Rotation = false: quaternion Catmull-Rom) on
+/// one shared grid.
+export class PoseCurve extends Owned {
+  get grid() { return this._o().grid(); }
+  get tMin() { return this._o().tMin(); }
+  get tMax() { return this._o().tMax(); }
+  /// {position, orientation [w, x, y, z], velocity, omega} at t.
+  evaluate(t, frame = 'world') { return this._o().evaluate(t, frame); }
+  /// Many t: {positions: 3 per t, orientations: 4 per t}.
+  evaluateMany(t) { return this._o().evaluateMany(t); }
+  /// n values of t at constant speed of positionWeight |dx/dt| +
+  /// angleWeight |omega| (1, 0: along the path; 0, 1: of the angle).
+  constantSpeedTimes(n, positionWeight = 1, angleWeight = 0, accuracy = 0) {
+    return this._o().constantSpeedTimes(n, positionWeight, angleWeight, accuracy);
+  }
+}
+
+/// positions: [[x, y, z], ...] (or {x, y, z}); rotations: [[w, x, y, z], ...].
+/// options: alpha, grid, closed, c2Rotation.
+export function poseCurve(positions, rotations, options = {}) {
+  const M = module();
+  return new PoseCurve(new M.PoseCurve(flatVectors(positions, 'positions'), flatQuaternions(rotations, 'rotations'), options));
+}
+
+/// [w, x, y, z] <-> [x, y, z, w] (three.js, SciPy, glTF order).
+export function toXYZW(q, out = new Float64Array(4)) {
+  out[0] = q[1]; out[1] = q[2]; out[2] = q[3]; out[3] = q[0];
+  return out;
+}
+export function fromXYZW(q, out = new Float64Array(4)) {
+  out[0] = q[3]; out[1] = q[0]; out[2] = q[1]; out[3] = q[2];
+  return out;
+}
+
+const api = { init, isReady, version, wasmMemoryBytes, catmullRom, CatmullRom, decide, decidePair, decideSet, clearance,
+  quaternionSpline, rotationSpline, poseCurve, RotationCurve, PoseCurve, toXYZW, fromXYZW };
 export default api;

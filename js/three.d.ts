@@ -1,5 +1,6 @@
 // Type declarations for crspline/three (three.js).
-import { Curve, Vector3 } from 'three';
+import { Curve, Object3D, Quaternion, Vector3 } from 'three';
+import type { PoseCurve, PoseCurveOptions, QuaternionSplineOptions, RotationCurve, RotationFrame, RotationSplineOptions } from './index.js';
 
 export type CurveType = 'centripetal' | 'chordal' | 'catmullrom';
 
@@ -28,5 +29,38 @@ export class CRSplineCurve3 extends Curve<Vector3> {
   getUtoTmapping(u: number, distance?: number | null): number;
   copy(source: CRSplineCurve3): this;
   fromJSON(json: object): this;
+  dispose(): void;
+}
+
+/** A THREE.Quaternion or its toArray(): [x, y, z, w]. */
+export type QuaternionLike = Quaternion | [number, number, number, number];
+
+/**
+ * A rotation curve through THREE.Quaternion keys, u in [0, 1] (the curve's t
+ * mapped linearly). The [x, y, z, w] <-> [w, x, y, z] conversion is done here.
+ * With options.times: the C2 spline; otherwise the quaternion Catmull-Rom family.
+ */
+export class CRSplineQuaternionCurve {
+  constructor(quaternions: QuaternionLike[], options?: QuaternionSplineOptions | (RotationSplineOptions & { times: ArrayLike<number> }));
+  readonly isCRSplineQuaternionCurve: true;
+  readonly curve: RotationCurve;
+  tAt(u: number): number;
+  getQuaternion(u: number, optionalTarget?: Quaternion): Quaternion;
+  /** rad per unit u. */
+  getAngularVelocity(u: number, optionalTarget?: Vector3, frame?: RotationFrame): Vector3;
+  dispose(): void;
+}
+
+/** A camera path: a Curve of the positions, with orientations (a C2 rotation spline) on the same grid. */
+export class CRSplinePoseCurve extends Curve<Vector3> {
+  constructor(positions: (Vector3 | [number, number, number])[], quaternions: QuaternionLike[], options?: PoseCurveOptions);
+  readonly isCRSplinePoseCurve: true;
+  readonly pose: PoseCurve;
+  tAt(u: number): number;
+  getPoint(u: number, optionalTarget?: Vector3): Vector3;
+  getQuaternion(u: number, optionalTarget?: Quaternion): Quaternion;
+  /** Sets object.position and object.quaternion to the pose at u (a camera looks along its -z). */
+  applyTo<T extends Object3D>(object: T, u: number): T;
+  constantSpeedU(n: number, positionWeight?: number, angleWeight?: number): number[];
   dispose(): void;
 }

@@ -23,8 +23,8 @@
 // The curve is rebuilt when `points` is a new array or changes length; after
 // moving points in place, call updateArcLengths() (as three.js asks for
 // getPointAt). dispose() frees the WASM memory now.
-import { Curve, Vector3 } from 'three';
-import { catmullRom } from './index.js';
+import { Curve, Quaternion, Vector3 } from 'three';
+import { catmullRom, poseCurve, quaternionSpline, rotationSpline } from './index.js';
 
 const ALPHA = { centripetal: 0.5, chordal: 1, catmullrom: 0 };
 
@@ -198,4 +198,98 @@ export class CRSplineCurve3 extends Curve {
     this.needsUpdate = true;
     return this;
   }
+}
+
+// ---------------------------------------------------------------------------
+// Rotations (issue 28). three.js' Quaternion is (x, y, z, w); crspline's
+// core is [w, x, y, z]: the conversion happens here, in both directions, so
+// users hand in and get back THREE.Quaternion (or [x, y, z, w] arrays, as
+// Quaternion.toArray writes them). The parameter is three.js' u in [0, 1],
+// mapped linearly onto the curve's own t (rates are per unit u).
+// ---------------------------------------------------------------------------
+
+// THREE.Quaternion or [x, y, z, w] -> crspline's flat [w, x, y, z].
+function wxyzOf(quaternions, what) {
+  if (!Array.isArray(quaternions)) throw Object.assign(new Error(`${what} must be an array of THREE.Quaternion or [x, y, z, w]`), { field: what, index: null, component: null, value: '' });
+  const flat = new Float64Array(4 * quaternions.length);
+  quaternions.forEach((q, i) => {
+    const a = q && q.isQuaternion ? [q.x, q.y, q.z, q.w] : q;
+    if (!a || a.length !== 4)
+      throw Object.assign(new Error(`${what}[${i}] must be a THREE.Quaternion or [x, y, z, w]`), { field: what, index: i, component: null, value: JSON.stringify(q) });
+    flat[4 * i] = a[3]; flat[4 * i + 1] = a[0]; flat[4 * i + 2] = a[1]; flat[4 * i + 3] = a[2];
+  });
+  return flat;
+}
+
+const toThree = (q, target) => target.set(q[1], q[2], q[3], q[0]);
+
+/// A rotation curve through THREE.Quaternion keys: crspline's quaternion
+/// Catmull-Rom family (options as quaternionSpline: kind, alpha, closed,
+/// ...), or with options.times the C2 spline (rotationSpline's options).
+export class CRSplineQuaternionCurve {
+  constructor(quaternions = [], options = {}) {
+    this.isCRSplineQuaternionCurve = true;
+    this.type = 'CRSplineQuaternionCurve';
+    const { times, ...rest } = options;
+    const keys = wxyzOf(quaternions, 'quaternions');
+    this.curve = times ? rotationSpline(times, keys, rest) : quaternionSpline(keys, rest);
+    this._t0 = this.curve.tMin;
+    this._span = this.curve.tMax - this._t0;
+  }
+  /// u in [0, 1] -> the curve's t.
+  tAt(u) { return this._t0 + Math.min(Math.max(u, 0), 1) * this._span; }
+  /// The rotation at u.
+  getQuaternion(u, optionalTarget = new Quaternion()) {
+    return toThree(this.curve.quaternion(this.tAt(u)), optionalTarget);
+  }
+  /// The angular velocity at u, rad per unit u, in frame 'world' or 'body'.
+  getAngularVelocity(u, optionalTarget = new Vector3(), frame = 'world') {
+    const w = this.curve.evaluate(this.tAt(u), 1, frame).omega;
+    return optionalTarget.set(w[0], w[1], w[2]).multiplyScalar(this._span);
+  }
+  dispose() { this.curve.dispose(); }
+}
+
+/// A camera path: positions (THREE.Vector3) and orientations
+/// (THREE.Quaternion) on one shared grid (crspline's pose curve: centripetal
+/// positions, a C2 rotation spline). A three.js Curve of the positions, so
+/// TubeGeometry and getPointAt work; getQuaternion gives the orientation and
+/// applyTo(object, u) places an Object3D (a camera looks along its -z).
+export class CRSplinePoseCurve extends Curve {
+  constructor(positions = [], quaternions = [], options = {}) {
+    super();
+    this.isCRSplinePoseCurve = true;
+    this.type = 'CRSplinePoseCurve';
+    const flat = new Float64Array(3 * positions.length);
+    positions.forEach((p, i) => {
+      const a = p && p.isVector3 ? [p.x, p.y, p.z] : p;
+      if (!a || a.length !== 3)
+        throw Object.assign(new Error(`positions[${i}] must be a THREE.Vector3 or [x, y, z]`), { field: 'positions', index: i, component: null, value: JSON.stringify(p) });
+      flat.set(a, 3 * i);
+    });
+    this.pose = poseCurve(flat, wxyzOf(quaternions, 'quaternions'), options);
+    this._t0 = this.pose.tMin;
+    this._span = this.pose.tMax - this._t0;
+  }
+  tAt(u) { return this._t0 + Math.min(Math.max(u, 0), 1) * this._span; }
+  getPoint(u, optionalTarget = new Vector3()) {
+    const p = this.pose.evaluate(this.tAt(u)).position;
+    return optionalTarget.set(p[0], p[1], p[2]);
+  }
+  getQuaternion(u, optionalTarget = new Quaternion()) {
+    return toThree(this.pose.evaluate(this.tAt(u)).orientation, optionalTarget);
+  }
+  /// Sets object.position and object.quaternion to the pose at u.
+  applyTo(object, u) {
+    const s = this.pose.evaluate(this.tAt(u));
+    object.position.set(s.position[0], s.position[1], s.position[2]);
+    toThree(s.orientation, object.quaternion);
+    return object;
+  }
+  /// n values of u at constant speed of positionWeight |dx/dt| + angleWeight |omega|.
+  constantSpeedU(n, positionWeight = 1, angleWeight = 0) {
+    const t = this.pose.constantSpeedTimes(n, positionWeight, angleWeight);
+    return Array.from(t, (x) => (x - this._t0) / this._span);
+  }
+  dispose() { this.pose.dispose(); }
 }

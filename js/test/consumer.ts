@@ -2,11 +2,12 @@
 // against the way the docs use them (test/types.test.mjs runs it). Lines
 // marked @ts-expect-error must fail to type-check: the declarations are not
 // just `any`.
-import crspline, { init, catmullRom, CatmullRom, type CurveOptions, type CrsplineError, type Nearest } from 'crspline';
+import crspline, { init, catmullRom, CatmullRom, type CurveOptions, type CrsplineError, type Nearest, decide, decidePair, decideSet,
+  clearance, quaternionSpline, rotationSpline, poseCurve, type Decision, type Verdict, type RotationCurve } from 'crspline';
 import { crsplineCurve, crsplineCurveClosed, crsplineCurveOpen } from 'crspline/d3';
-import { CRSplineCurve3 } from 'crspline/three';
+import { CRSplineCurve3, CRSplineQuaternionCurve, CRSplinePoseCurve } from 'crspline/three';
 import { line, area, type CurveFactory } from 'd3-shape';
-import { TubeGeometry, Vector3, type Curve } from 'three';
+import { TubeGeometry, Vector3, Quaternion, PerspectiveCamera, type Curve } from 'three';
 
 async function main(): Promise<number> {
   const api = await init();
@@ -45,7 +46,22 @@ async function main(): Promise<number> {
   // @ts-expect-error: curveType is one of three.js' three
   new CRSplineCurve3([], false, 'bspline');
   c3.dispose();
-  return p[0] + many[0] + t + poly.points.length + n.distance + Number(ok) + (d?.length ?? 0) +
+  // Issue 27: the decision; issue 28: rotations, three.js order handled by the adapter.
+  const v: Verdict = decide(catmullRom([[0, 0], [1, 1], [2, 0]])).verdict;
+  const pair: Decision = decidePair(curve, curve, { fastPath: false });
+  const gap: number = clearance(curve, curve).distance + decideSet([curve], { self: true }).crossings.length;
+  const rs: RotationCurve = rotationSpline([0, 1], [[1, 0, 0, 0], [0, 1, 0, 0]], { start: 'natural' });
+  const qs = quaternionSpline([[1, 0, 0, 0], [0, 1, 0, 0]], { kind: 'squad', alpha: 0.5 });
+  const w: Float64Array | null = rs.evaluate(0.5, 1, 'body').omega;
+  // @ts-expect-error: frames are 'world' or 'body'
+  qs.evaluate(0.5, 1, 'space');
+  const pc = poseCurve([[0, 0, 0], [1, 0, 0]], [[1, 0, 0, 0], [0, 0, 0, 1]]);
+  const qc = new CRSplineQuaternionCurve([new Quaternion(), new Quaternion(0, 0, 1, 0)]);
+  const camPath = new CRSplinePoseCurve([new Vector3(), new Vector3(1, 0, 0)], [new Quaternion(), [0, 0, 0, 1]]);
+  const cam: PerspectiveCamera = camPath.applyTo(new PerspectiveCamera(), 0.5);
+  const qq: Quaternion = qc.getQuaternion(0.5);
+  return v.length + pair.crossings.length + gap + (w?.[0] ?? 0) + pc.evaluate(0).position[0] + qq.w + cam.position.x +
+    p[0] + many[0] + t + poly.points.length + n.distance + Number(ok) + (d?.length ?? 0) +
     tube.attributes.position.count + at.x + (asCurve.arcLengthDivisions) + crspline.version().length;
 }
 void main;
