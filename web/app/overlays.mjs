@@ -1,6 +1,6 @@
 // The whole-curve overlays, which cost more than a frame on long curves:
-// the Section-5 certificate (with the exact self-intersection search when
-// it fails), the paper's bounding volumes and arc-length ticks. The editor
+// the decision (simple, crosses or touches, proved), the Section-5
+// certificate (with the exact self-intersection search when it fails), the paper's bounding volumes and arc-length ticks. The editor
 // runs this in a worker (worker.mjs), or on the main thread without one.
 
 /// req: { version, points (flat Float64Array, `dimension` numbers per point;
@@ -29,6 +29,22 @@ export function computeGlobal(M, req) {
       intersects: cert.intersects,
       complete: cert.search ? cert.search.complete : true,
     };
+    // The decision (issue 27): a proved verdict for every alpha, grid,
+    // tension and end, where the certificate only speaks for centripetal
+    // curves. Plane curves only (crossings are not generic in 3-D).
+    if (d === 2) {
+      const dec = spline.decide({ recordPairs: false });
+      out.decision = {
+        verdict: dec.verdict,
+        fast_path: dec.fast_path,
+        crossings: dec.crossings.length,
+        touches: dec.touches.length,
+        closest: dec.touches.reduce((m, t) => Math.min(m, t.distance), Infinity),
+        floor: dec.floor,
+      };
+    } else {
+      out.decision = null;
+    }
     // Crossing points, flat x, y: none when certified (the certificate is
     // the proof), else what the exact search found.
     const found = cert.search ? cert.search.intersections : [];

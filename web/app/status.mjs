@@ -1,5 +1,5 @@
 // The status line under the canvas (points, segments, length, cusps, the
-// certificate, the frame time), the message over the canvas, and the
+// verdict, the certificate, the frame time), the message over the canvas, and the
 // numbers the tests read as data attributes of <body>.
 import { $ } from './dom.mjs';
 import { totalLength, cuspCount } from './curve.mjs';
@@ -38,6 +38,23 @@ export function updateStatus(ms) {
     text = `not certified (${c.failed_rule.replace(/_/g, ' ')}: ${c.detail})${found}`;
     cls = c.intersects ? 'bad' : '';
   }
+  // The verdict (every alpha): proved simple, proved crossings, or contacts
+  // closer than the floor that neither proof resolves.
+  let vtext = '', vcls = '';
+  if (spline && globalCurrent() && !global.error && global.decision) {
+    const v = global.decision;
+    vcls = v.verdict === 'simple' ? 'ok' : v.verdict === 'crosses' ? 'bad' : 'warn';
+    vtext = v.verdict === 'simple' ? `simple${v.fast_path ? ' (paper\'s rule)' : ' (proved)'}`
+      : v.verdict === 'crosses' ? `crosses (${v.crossings} proved crossing${v.crossings === 1 ? '' : 's'})`
+        : `touches (${v.touches} contact${v.touches === 1 ? '' : 's'} within ${sig(v.closest, 2)})`;
+  } else if (spline && globalCurrent() && !global.error) {
+    vtext = 'verdict: plane curves only';
+  } else if (spline && !globalCurrent()) {
+    vtext = analysis.deferred ? '' : 'deciding…';
+  }
+  const verdict = $('status-verdict');
+  if (verdict.textContent !== vtext) { verdict.textContent = vtext; verdict.title = vtext; }
+  if (verdict.className !== vcls) verdict.className = vcls;
   const cert = $('status-cert');
   if (cert.textContent !== text) { cert.textContent = text; cert.title = text; }
   if (cert.className !== cls) cert.className = cls;
@@ -52,6 +69,7 @@ export function updateStatus(ms) {
     points: n, segments: nseg, length: spline ? totalLength() : '', cusps: cc ?? '',
     certified: spline && globalCurrent() && !global.error ? String(global.cert.certified) : '',
     intersections: spline && globalCurrent() && !global.error ? String(global.intersections.length / 2) : '',
+    verdict: spline && globalCurrent() && !global.error && global.decision ? global.decision.verdict : '',
     version: session.version,
   };
   for (const [k, v] of Object.entries(data)) if (d[k] !== String(v)) d[k] = v;

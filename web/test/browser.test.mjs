@@ -169,6 +169,42 @@ test('dragging moves a point; undo and redo restore it', async () => {
   assert.deepEqual(await page.evaluate(() => window.editor.points), before);
 });
 
+test('the verdict is shown for every alpha: uniform crosses, chordal is simple where the certificate cannot say', async () => {
+  // Issue 27: a loop that the uniform curve makes between two close points
+  // of a straight run; chordal and centripetal do not cross. The
+  // certificate speaks only for centripetal ("not centripetal" otherwise):
+  // the verdict decides all three, and the page shows the module's.
+  await resetOptions();
+  const pts = [[100, 400], [400, 400], [420, 380], [440, 400], [740, 400]];
+  const want = { uniform: 'crosses', centripetal: 'simple', chordal: 'simple' };
+  let shown = 0;
+  for (const [preset, verdict] of Object.entries(want)) {
+    await setPoints(pts);
+    await page.click(`#${preset}`);
+    await idle();
+    const alpha = (await page.evaluate(() => window.editor.options)).alpha;
+    const module = await page.evaluate(({ pts, alpha }) => {
+      const s = new window.editor.module.Spline(pts, 2, { alpha });
+      const d = s.decide();
+      s.delete();
+      return d;
+    }, { pts, alpha });
+    assert.equal(module.verdict, verdict, `${preset}: the module's verdict`);
+    assert.equal((await data()).verdict, verdict, preset);
+    const text = await status('verdict');
+    assert.ok(text.startsWith(verdict), `${preset}: status '${text}'`);
+    if (verdict === 'crosses') {
+      assert.ok(module.crossings.length >= 1);
+      assert.equal(text, `crosses (${module.crossings.length} proved crossing${module.crossings.length === 1 ? '' : 's'})`);
+    }
+    if (preset !== 'centripetal') assert.match(await status('cert'), /not certified \(not centripetal/);
+    assert.equal(await page.locator('#status-verdict').getAttribute('class'), verdict === 'simple' ? 'ok' : 'bad');
+    shown++;
+  }
+  assert.equal(shown, 3);
+  await resetOptions();
+});
+
 test('sliders, presets, closed and end conditions change the curve the page reports', async () => {
   await resetOptions();
   const knots = async () => page.evaluate(() => window.editor.grid());
