@@ -5,8 +5,9 @@
 # (js/test/package-lock.json: three, d3-shape, typescript, playwright-core;
 # installed once into js/test/node_modules and copied), and node's test
 # runner runs js/test/*.test.mjs there: the API, the d3 and three.js
-# adapters, the .d.ts check (tsc --noEmit on a typed consumer) and a
-# Chromium page drawing a d3 chart and a three.js tube.
+# adapters, the .d.ts check (tsc --noEmit on a typed consumer), a
+# Chromium page drawing a d3 chart and a three.js tube, and the camera
+# example (examples/camera_path.html) flown in Chromium.
 # Usage: js/test.sh [node --test arguments]
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -22,6 +23,7 @@ mkdir -p "$scratch"
 cp "$here/test/package.json" "$here/test/package-lock.json" "$here"/test/tsconfig*.json "$here/test/consumer.ts" "$scratch/"
 cp "$here"/test/*.mjs "$scratch/"
 cp -r "$here/test/browser" "$scratch/"
+cp -r "$here/examples" "$scratch/"
 cp -a "$here/test/node_modules" "$scratch/"
 rm -rf "$scratch/node_modules/crspline"
 (cd "$scratch" && npm install --no-save --offline --no-audit --no-fund --loglevel=error "$tgz")
