@@ -372,8 +372,11 @@ void add_options(CLI::App* sub, std::string_view name, cli_options& o) {
 
 }  // namespace
 
+namespace crspline::cli { int smooth_main(int argc, char** argv); }  // smooth.cpp: crspline smooth (issue 29)
+
 int main(int argc, char** argv) {
     using namespace crspline::cli;
+    if (argc > 1 && std::string_view(argv[1]) == "smooth") return smooth_main(argc - 1, argv + 1);
 
     CLI::App app{std::string("crspline ") + crspline::version +
                  ": cubic Catmull-Rom curves through points in 1 to 16 dimensions. "
