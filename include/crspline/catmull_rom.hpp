@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "detail/batch_kernels.hpp"
+#include "detail/finite_geometry.hpp"
 #include "detail/format.hpp"
 #include "detail/knot_index.hpp"
 #include "detail/storage.hpp"
@@ -364,6 +365,13 @@ private:
 
 
     void build(std::span<const point> p, const options_type& opt);
+    // Refuses, naming the points, a chord, knot, tangent or Bezier point
+    // that overflowed (detail/finite_geometry.hpp).
+    void check_finite_geometry() const {
+        detail::check_finite_geometry<D, T>(
+            points_, h_, grid_, [&](std::size_t i) -> const point& { return out_tangent(i); },
+            [&](std::size_t i) -> const point& { return in_tangent(i); });
+    }
 
     struct hermite_tag {};
     explicit catmull_rom(hermite_tag) noexcept {}
@@ -423,6 +431,7 @@ void catmull_rom<D, T>::build_hermite(std::span<const point> p, std::span<const 
     } else {
         in_.clear();
     }
+    check_finite_geometry();
     index_.build(grid_.data(), nseg);
 }
 
@@ -575,8 +584,10 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
         const T d = grid_[i + 1] - grid_[i];
         if (d != h_[i]) inv_h_[i] = d > 0 ? T(1) / d : T(0);
     }
+    // 6. Nothing overflowed: chords, knots, tangents, Bezier points.
+    check_finite_geometry();
     index_.build(grid_.data(), nseg);
-    // 6. Remember how the curve was built (the grid is grid_, not copied).
+    // 7. Remember how the curve was built (the grid is grid_, not copied).
     options_.alpha = opt.grid ? std::nullopt : std::optional<double>(opt.alpha.value_or(centripetal));
     options_.grid.reset();
     options_.start = opt.start;

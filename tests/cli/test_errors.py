@@ -84,9 +84,9 @@ CASES = [
      "<stdin>: kb continuity[0] is not finite (nan) (null is allowed only at the two end vertices of an open curve)"),
     ("kb unknown field", "bezier", doc(kb={"tensions": [0, 0, 0, 0]}),
      "kb: unknown field 'tensions' (expected \"tension\", \"continuity\", \"bias\")"),
+    # Issue 31 point 3: a difference that overflows is refused at construction.
     ("overflow", "eval", '{"points": [[1e308], [-1e308]], "alpha": 0, "t": [0.5]}',
-     'values["0"][0][0]: the result is not finite (the input\'s coordinates or knot intervals are too extreme '
-     "for double arithmetic)"),
+     "<stdin>: points[0]: points 0 and 1: the chord between them overflows (|P1 - P0| is not finite)"),
     # The same words as an empty file (test_input_errors.py: test_empty_inputs_agree).
     ("empty input", "eval", "", "<stdin>: the input is empty (a curve needs at least 2 points, got 0)"),
     ("NaN literal", "eval", '{"points": [[0], [NaN]]}',

@@ -117,10 +117,13 @@ def test_streamed_bezier_on_many_points_matches_small_pieces(tmp_path, seed):
 
 
 def overflowing_eval(n_good):
-    # Alpha 0: t = 0 is in the first segment, finite; t = 3.5 in the last,
-    # between 1e308 and -1e308, overflows: the error comes after n_good
-    # values were written.
-    return json.dumps({"points": [[0], [1], [2], [1e308], [-1e308]], "alpha": 0, "t": [0] * n_good + [3.5]})
+    # t = 0 is in the first segment, finite; t = 2 + 5e-11 in the third,
+    # whose second derivative (1e297 over an interval of 1e-10, twice)
+    # overflows: the error comes after n_good values were written. (Points
+    # whose difference overflows, as here before, are now refused before any
+    # output: issue 31 point 3.)
+    return json.dumps({"points": [[0], [1], [0], [1e297], [0]], "grid": [0, 1, 2, 2.0000000001, 2.0000000002],
+                       "t": [0] * n_good + [2.00000000005], "derivatives": [2]})
 
 
 def test_failure_midway_leaves_no_file_and_no_temporary(tmp_path):
@@ -129,7 +132,7 @@ def test_failure_midway_leaves_no_file_and_no_temporary(tmp_path):
     temporary file beside it is gone."""
     src = tmp_path / "in.json"
     src.write_text(overflowing_eval(200_000))
-    line = ('values["0"][200000][0]: the result is not finite (the input\'s coordinates or knot intervals are '
+    line = ('values["2"][200000][0]: the result is not finite (the input\'s coordinates or knot intervals are '
             "too extreme for double arithmetic)")
     p = fail(["eval", str(src), "-o", str(tmp_path / "out.json")])
     assert p.stderr == f"crspline: {line}\n"

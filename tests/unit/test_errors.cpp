@@ -123,3 +123,125 @@ TEST(Errors, OutOfDomainNamesValueAndIndex) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 31 point 3: finite coordinates whose chord, knots, tangents or Bezier
+// points overflow are refused at construction, naming the points (field
+// "points", the first point's index), in every alpha, open and closed.
+TEST(Errors, OverflowIsRefusedNamingThePoints) {
+    const auto refusal = [](auto&& make) -> std::pair<std::string, std::optional<std::size_t>> {
+        try {
+            make();
+        } catch (const spec_error& e) {
+            EXPECT_EQ(e.field(), "points") << e.what();
+            return {e.what(), e.index()};
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << "wrong exception type: " << e.what();
+            return {};
+        }
+        ADD_FAILURE() << "no exception";
+        return {};
+    };
+    // The issue's case: |P1 - P0| = 3e308.
+    const std::vector<P2> wide{P2{{-1.5e308, 0}}, P2{{1.5e308, 0}}};
+    for (const double alpha : {0.0, 0.25, 0.5, 0.75, 1.0})
+        for (const bool closed : {false, true}) {
+            const auto [msg, index] = refusal([&] { catmull_rom<2> c(wide, {.alpha = alpha, .closed = closed}); });
+            EXPECT_EQ(msg, "points 0 and 1: the chord between them overflows (|P1 - P0| is not finite)")
+                << "alpha " << alpha << (closed ? " closed" : " open");
+            EXPECT_EQ(index, std::optional<std::size_t>(0));
+        }
+    // Components finite, length not (|(-1.6e308, 1.6e308)| = 2.3e308), on the
+    // second chord; and on the closing chord of a closed curve.
+    const std::vector<P2> diagonal{P2{{0, 0}}, P2{{1.6e308, 0}}, P2{{0, 1.6e308}}};
+    EXPECT_EQ(refusal([&] { catmull_rom<2> c(diagonal, {.alpha = 1.0}); }).first,
+              "points 1 and 2: the chord between them overflows (|P2 - P1| is not finite)");
+    const std::vector<P2> ring{P2{{0, 1.6e308}}, P2{{0, 0}}, P2{{1.6e308, 0}}};
+    EXPECT_EQ(refusal([&] { catmull_rom<2> c(ring, {.closed = true}); }).first,
+              "points 2 and 0: the chord between them overflows (|P0 - P2| is not finite)");
+    // A sum of finite chordal intervals (1e307 each) passes the largest double
+    // at the 18th knot.
+    std::vector<P2> zigzag;
+    for (int i = 0; i < 30; ++i) zigzag.push_back(P2{{i % 2 ? 1e307 : 0.0, 0}});
+    EXPECT_EQ(refusal([&] { catmull_rom<2> c(zigzag, {.alpha = 1.0}); }).first,
+              "points 17 and 18: the knot t(18) overflows (the sum of the intervals up to it is inf)");
+    // A given grid whose difference overflows.
+    const std::vector<P2> two{P2{{0, 0}}, P2{{1, 0}}};
+    EXPECT_EQ(refusal([&] { catmull_rom<2> c(two, {.grid = std::vector<double>{-1e308, 1e308}}); }).first,
+              "points 0 and 1: the knot interval between them overflows (t(1) - t(0) = inf)");
+    // Tangents: 1e-300 then 1e10 of grid makes the chord velocity 1e300 and
+    // its weight 1e10 (dx/dt overflows at vertex 1, the natural end's at 0).
+    const std::vector<P2> three{P2{{0, 0}}, P2{{1, 0}}, P2{{2, 0}}};
+    EXPECT_EQ(refusal([&] { catmull_rom<2> c(three, {.grid = std::vector<double>{0, 1e-300, 1e10}}); }).first,
+              "point 0: the tangent there overflows (dx/dt is not finite)");
+    // Bezier points: given tangents of 1e308 on an interval of 10.
+    const std::vector<P2> tangents{P2{{1e308, 0}}, P2{{1e308, 0}}};
+    const std::vector<double> grid{0, 10};
+    const auto [hmsg, hindex] = refusal([&] {
+        (void)catmull_rom<2>::hermite(std::span<const P2>(two), std::span<const P2>(tangents),
+                                      std::span<const double>(grid));
+    });
+    EXPECT_EQ(hmsg, "points 0 and 1: the segment between them overflows (its Bezier points or coefficients are "
+                    "not finite)");
+    EXPECT_EQ(hindex, std::optional<std::size_t>(0));
+}
+
+// Near the top of the range, either the curve is refused (a spec_error on
+// "points") or everything it gives is finite: positions and first
+// derivatives, Bezier points, knots, arc length. Seeded random polygons
+// scaled from 1e290 to 1e308 (double) and 1e30 to 1e38 (float); both
+// outcomes must occur, or the test checked only one side.
+template <class T>
+void refused_or_finite(std::uint64_t seed, int lo_exp, int hi_exp, int& accepted, int& refused, int& overflowed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_int_distribution<int> e(lo_exp, hi_exp);
+    std::uniform_real_distribution<double> a(0, 1);
+    for (int trial = 0; trial < 200; ++trial) {
+        const T scale = T(std::pow(10.0, e(rng)));
+        auto p = test::random_polygon<2, T>(rng, 3 + std::size_t(trial % 6), 1.0);
+        for (auto& x : p) x = x * scale;
+        const bool closed = trial % 4 == 3;
+        const double alpha = trial % 5 == 0 ? 0.0 : a(rng);
+        bool ok = true;
+        std::optional<catmull_rom<2, T>> c;
+        try {
+            c.emplace(std::span<const vec<2, T>>(p), options<2, T>{.alpha = alpha, .closed = closed});
+        } catch (const spec_error& err) {
+            EXPECT_EQ(err.field(), "points") << err.what();
+            // (The others: a coordinate scaled past the largest double.)
+            if (std::string(err.what()).find("overflows") != std::string::npos) ++overflowed;
+            ok = false;
+        }
+        if (!ok) {
+            ++refused;
+            continue;
+        }
+        ++accepted;
+        const auto all_finite = [](const vec<2, T>& x) { return std::isfinite(x[0]) && std::isfinite(x[1]); };
+        for (std::size_t i = 0; i < c->segment_count(); ++i) {
+            for (const auto& b : c->bezier(i)) EXPECT_TRUE(all_finite(b)) << "segment " << i << " trial " << trial;
+            for (int k = 0; k <= 8; ++k) {
+                const T t = std::min(c->grid()[i] + (c->grid()[i + 1] - c->grid()[i]) * T(k) / T(8), c->grid().back());
+                EXPECT_TRUE(all_finite(c->evaluate(t))) << "t " << t << " trial " << trial;
+                EXPECT_TRUE(all_finite(c->segment(i).du(T(k) / T(8), 1))) << "t " << t << " trial " << trial;
+            }
+        }
+        EXPECT_TRUE(std::isfinite(c->grid().back())) << "trial " << trial;
+    }
+}
+
+TEST(Errors, NearTheTopOfTheRangeACurveIsRefusedOrFinite) {
+    CRSPLINE_SEEDED(seed, 3103);
+    int accepted = 0, refused = 0, overflowed = 0;
+    refused_or_finite<double>(seed, 290, 308, accepted, refused, overflowed);
+    refused_or_finite<float>(seed, 30, 38, accepted, refused, overflowed);
+    EXPECT_EQ(accepted + refused, 400);
+    std::printf("near the top of the range: %d accepted, %d refused (%d for an overflow)\n", accepted, refused,
+                overflowed);
+    EXPECT_GT(accepted, 20);
+    EXPECT_GT(refused, 20);
+    EXPECT_GT(overflowed, 5);
+}
+
+}  // namespace
