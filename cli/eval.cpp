@@ -52,9 +52,9 @@ void stream_eval(const document& input, const output_settings& settings, output_
             std::vector<double> s = param;
             if (spec.arc_fraction)
                 for (double& x : s) x = x == 1 ? table.total() : x * table.total();
-            else
+            else  // the core's rule: within end_slack() of an end is that end
                 for (std::size_t i = 0; i < s.size(); ++i)
-                    if (!(s[i] >= 0 && s[i] <= table.total())) outside(i, 0, table.total());
+                    if (!table.in_range(s[i])) outside(i, 0, table.total());
             t_of = table.t_at(std::span<const double>(s));
         } else if (spec.u) {
             // three.js getPoint(u): every segment an equal share of [0, 1].

@@ -15,4 +15,4 @@ set -euo pipefail
 cd "$(dirname "$0")"
 [[ -d node_modules/playwright-core ]] || npm ci --no-audit --no-fund
 node -e "import('./test/support.mjs').then((m) => m.ensureBuilt())"
-exec node --test "$@" test/module.test.mjs test/report.test.mjs test/bad_specs.test.mjs test/floors.test.mjs test/decision.test.mjs test/rotation.test.mjs test/browser.test.mjs test/editor.test.mjs test/designer.test.mjs test/curvefile.test.mjs test/perf.test.mjs
+exec node --test "$@" test/module.test.mjs test/report.test.mjs test/bad_specs.test.mjs test/floors.test.mjs test/decision.test.mjs test/rotation.test.mjs test/core_refusals.test.mjs test/browser.test.mjs test/editor.test.mjs test/designer.test.mjs test/curvefile.test.mjs test/perf.test.mjs
