@@ -327,3 +327,41 @@ TEST(GeoSmooth, CrossingInputsAreReported) {
 }
 
 }  // namespace
+
+namespace {
+
+// The domain box holds every curve: a ring whose smoothed curve would bulge
+// past the box's edge (a square with vertices on it) gets tension there.
+TEST(GeoSmooth, DomainKeepsCurvesInside) {
+    geo::layer l;
+    // A pentagon-ish ring touching y = 0 along two vertices: the free curve dips below.
+    l.add_part(0, part_kind::ring, std::vector<double>{0, 0, 4, 0, 5, 3, 2, 5, -1, 3});
+    const auto free = geo::smooth(l, {.tolerance = 1e-3});
+    double free_min = INFINITY;
+    for (std::size_t v = 0; v < free.output.vertex_count(); ++v) free_min = std::min(free_min, free.output.xy[2 * v + 1]);
+    ASSERT_LT(free_min, -1e-3);  // not vacuous: the free curve leaves y >= 0
+    geo::smooth_options o{.tolerance = 1e-3};
+    o.domain = box<2>{P{{-10, 0}}, P{{10, 10}}};
+    const auto r = geo::smooth(l, o);
+    std::size_t inside = 0;
+    for (std::size_t v = 0; v < r.output.vertex_count(); ++v) {
+        EXPECT_GE(r.output.xy[2 * v + 1], 0.0);
+        ++inside;
+    }
+    EXPECT_GT(inside, 20u);
+    EXPECT_GT(r.stats.tensioned_vertices, 0u);
+}
+
+// topology "none": each part alone, nothing shared, no proof rounds.
+TEST(GeoSmooth, PartByPartSharesNothing) {
+    CRSPLINE_SEEDED(seed, 11);
+    std::mt19937_64 rng(seed);
+    const geo::layer in = wiggly_grid(rng, 2, 2, 3);
+    const auto r = geo::smooth(in, {.tolerance = 0.01, .preserve_topology = false});
+    EXPECT_EQ(r.stats.arcs, 4u);
+    EXPECT_EQ(r.stats.shared_arcs, 0u);
+    EXPECT_EQ(r.stats.rounds, 1u);
+    for (const auto& f : r.features) EXPECT_EQ(f.verdict, geo::verdict::simple);
+}
+
+}  // namespace
