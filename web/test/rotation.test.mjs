@@ -145,3 +145,32 @@ test('errors name what is wrong', () => {
   });
   assert.throws(() => new M.PoseCurve([0, 0, 0, 1, 0, 0], [1, 0, 0, 0], {}), /2 positions but 1 rotations/);
 });
+
+test('Catmull-Rom family: the 40-digit q_exact and omega_exact of quaternion_splines.json (as Python\'s native API)', () => {
+  // The cases' own tolerances (tol.q_exact, tol.omega_exact: float64 error
+  // of the construction, from the file). The package's natural end
+  // ('natural_splines') is the one those exact values are of.
+  const cases = reference('quaternion_splines.json').cases.filter((c) => c.class === 'CatmullRom');
+  assert.equal(cases.length, 17);
+  let compared = 0;
+  for (const c of cases) {
+    const o = { closed: c.closed };
+    if (c.alpha !== null) o.alpha = c.alpha;
+    if (c.grid !== null) o.grid = c.grid;
+    if (!c.closed) o.start = o.end = 'natural_splines';
+    use(M.RotationCurve.quaternionSpline(c.keys.flat(), o), (s) => {
+      const smp = c.samples;
+      smp.t_exact.forEach((t, k) => {
+        // t_exact is the decimal knot; the double grid may end an ulp short
+        // of it (an ulp of t moves q by |omega| ulp, far under tol).
+        const j = s.evaluate(Math.min(Math.max(t, s.tMin()), s.tMax()), 1, 'world');
+        const dq = Math.max(...Array.from(j.q, (x, d) => Math.abs(x - smp.q_exact[k][d])));
+        const dw = Math.max(...Array.from(j.omega, (x, d) => Math.abs(x - smp.omega_exact[k][d])));
+        assert.ok(dq <= c.tol.q_exact, `${c.id} t=${t}: q off by ${dq}`);
+        assert.ok(dw <= c.tol.omega_exact, `${c.id} t=${t}: omega off by ${dw}`);
+        compared++;
+      });
+    });
+  }
+  assert.equal(compared, cases.reduce((n, c) => n + c.samples.t_exact.length, 0));
+});
