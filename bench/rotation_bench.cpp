@@ -1,0 +1,148 @@
+// Rotation splines (issue 28), Google Benchmark:
+//   rotation/eval/<kind>: batch evaluation of 10^6 samples of a rotation
+//       curve (100 random keys), per sample; the goal is at most 4x the
+//       time of euclid4/eval below.
+//   rotation/euclid4/eval: crspline's own 4-D Euclidean Catmull-Rom through
+//       the same keys as points, batch-evaluated at the same t: the floor.
+//   rotation/c2/construct/<keys>: the C2 spline's Newton solve at 10^3 to
+//       10^5 keys; linear in the keys (block tridiagonal steps), so time per
+//       key (the counter) should stay flat.
+//   rotation/pose/eval: a pose curve, 10^6 samples.
+// Figures go to BENCHMARKS.md with the run that produced them.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstddef>
+#include <random>
+#include <span>
+#include <vector>
+
+#include <crspline/catmull_rom.hpp>
+#include <crspline/rotation/c2.hpp>
+#include <crspline/rotation/catmull_rom.hpp>
+#include <crspline/rotation/pose.hpp>
+
+namespace {
+
+using quat = crspline::rotation::quaternion<double>;
+namespace rot = crspline::rotation;
+
+constexpr std::size_t samples = 1'000'000;
+
+// n keys, consecutive ones 0.2 to 1.2 rad apart about random axes (seeded).
+std::vector<quat> random_keys(std::size_t n, unsigned seed = 28) {
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> g;
+    std::uniform_real_distribution<double> a(0.2, 1.2);
+    std::vector<quat> k{quat::identity()};
+    while (k.size() < n) {
+        const rot::vec3<double> axis{{g(rng), g(rng), g(rng)}};
+        k.push_back(rot::from_axis_angle(axis, a(rng)) * k.back());
+    }
+    return k;
+}
+
+// Random t over [lo, hi] (the batch takes any order).
+std::vector<double> random_t(double lo, double hi, std::size_t n) {
+    std::mt19937_64 rng(1);
+    std::uniform_real_distribution<double> u(lo, hi);
+    std::vector<double> t(n);
+    for (double& x : t) x = u(rng);
+    return t;
+}
+
+void eval_quaternion(benchmark::State& state, rot::spline_kind kind) {
+    const auto keys = random_keys(100);
+    rot::rotation_options<double> o;
+    o.kind = kind;
+    const rot::quaternion_spline<double> c(keys, o);
+    const auto t = random_t(c.grid().front(), c.grid().back(), samples);
+    std::vector<quat> out(samples);
+    for (auto _ : state) {
+        c.evaluate(std::span<const double>(t), std::span<quat>(out));
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(samples));
+}
+
+void eval_c2(benchmark::State& state) {
+    const auto keys = random_keys(100);
+    std::vector<double> times(keys.size());
+    for (std::size_t k = 0; k < times.size(); ++k) times[k] = double(k);
+    const rot::c2_rotation_spline<double> c{std::span<const double>(times), std::span<const quat>(keys)};
+    const auto t = random_t(times.front(), times.back(), samples);
+    std::vector<quat> out(samples);
+    for (auto _ : state) {
+        c.evaluate(std::span<const double>(t), std::span<quat>(out));
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(samples));
+}
+
+// The floor: the same keys as 4-D points on the uniform grid.
+void eval_euclid4(benchmark::State& state) {
+    const auto keys = random_keys(100);
+    std::vector<crspline::vec<4, double>> pts;
+    for (const quat& q : keys) pts.push_back(crspline::vec<4, double>{{q.w, q.x, q.y, q.z}});
+    crspline::options<4, double> o;
+    o.alpha = 0.0;
+    const crspline::catmull_rom<4, double> c(pts, o);
+    const auto t = random_t(c.t_min(), c.t_max(), samples);
+    std::vector<crspline::vec<4, double>> out(samples);
+    for (auto _ : state) {
+        c.evaluate(std::span<const double>(t), std::span<crspline::vec<4, double>>(out), 0);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(samples));
+}
+
+void construct_c2(benchmark::State& state) {
+    const std::size_t n = std::size_t(state.range(0));
+    const auto keys = random_keys(n);
+    std::vector<double> times(n);
+    for (std::size_t k = 0; k < n; ++k) times[k] = double(k);
+    for (auto _ : state) {
+        const rot::c2_rotation_spline<double> c{std::span<const double>(times), std::span<const quat>(keys)};
+        benchmark::DoNotOptimize(c.residual());
+    }
+    state.counters["ns_per_key"] = benchmark::Counter(double(state.iterations()) * double(n) * 1e-9,
+                                                      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void eval_pose(benchmark::State& state) {
+    const auto keys = random_keys(100);
+    std::vector<crspline::vec<3, double>> pts;
+    std::mt19937_64 rng(3);
+    std::normal_distribution<double> g;
+    crspline::vec<3, double> p{};
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        p = p + crspline::vec<3, double>{{1 + std::abs(g(rng)), g(rng), g(rng)}};
+        pts.push_back(p);
+    }
+    const rot::pose_curve<double> c{std::span<const crspline::vec<3, double>>(pts), std::span<const quat>(keys)};
+    const auto t = random_t(c.grid().front(), c.grid().back(), samples);
+    std::vector<rot::pose_sample<double>> out(samples);
+    for (auto _ : state) {
+        c.evaluate(std::span<const double>(t), std::span<rot::pose_sample<double>>(out));
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(samples));
+}
+
+}  // namespace
+
+BENCHMARK(eval_euclid4)->Name("rotation/euclid4/eval")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(eval_quaternion, catmull_rom, rot::spline_kind::catmull_rom)
+    ->Name("rotation/eval/catmull_rom")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(eval_quaternion, slerp, rot::spline_kind::piecewise_slerp)
+    ->Name("rotation/eval/slerp")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(eval_quaternion, squad, rot::spline_kind::squad)->Name("rotation/eval/squad")->Unit(benchmark::kMillisecond);
+BENCHMARK(eval_c2)->Name("rotation/eval/c2")->Unit(benchmark::kMillisecond);
+BENCHMARK(construct_c2)->Name("rotation/c2/construct")->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(eval_pose)->Name("rotation/pose/eval")->Unit(benchmark::kMillisecond);
+
+BENCHMARK_MAIN();
