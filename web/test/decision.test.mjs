@@ -82,3 +82,21 @@ test('pair and set: crossings name both curves; clearance between two curves', (
     a.delete(); b.delete(); c.delete();
   }
 });
+
+test('the editor\'s whole-curve pass (overlays.mjs, run in the worker) carries the verdict for every alpha', async () => {
+  const { computeGlobal } = await import('../app/overlays.mjs');
+  // A straight run with a small bump: the uniform curve loops there, the
+  // centripetal and chordal ones do not (the certificate speaks only for
+  // centripetal: "not centripetal" for the other two).
+  const pts = Float64Array.from([100, 400, 400, 400, 420, 380, 440, 400, 740, 400]);
+  const got = {};
+  for (const alpha of [0, 0.5, 1]) {
+    const out = computeGlobal(M, { version: 1, points: pts.slice(), dimension: 2, options: { alpha } });
+    assert.equal(out.error, null);
+    got[alpha] = out.decision.verdict;
+    if (alpha !== 0.5) assert.equal(out.cert.failed_rule, 'not_centripetal');
+  }
+  assert.deepEqual(got, { 0: 'crosses', 0.5: 'simple', 1: 'simple' });
+  const out3 = computeGlobal(M, { version: 1, points: Float64Array.from([0, 0, 0, 1, 1, 0, 2, 0, 1]), dimension: 3, options: {} });
+  assert.equal(out3.decision, null);
+});
