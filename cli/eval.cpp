@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "dispatch.hpp"
 #include "json_input.hpp"
+#include "rotation_commands.hpp"
 #include "progress.hpp"
 
 namespace crspline::cli {
@@ -26,6 +27,7 @@ std::string axis_name(std::size_t k) { return k < 4 ? axis_names[k] : "x" + std:
 }  // namespace
 
 void stream_eval(const document& input, const output_settings& settings, output_stream& out) {
+    if (is_rotation_document(input)) return stream_rotation(input, settings, out, "eval");  // issue 28
     const eval_spec spec = parse_eval(input);
     with_dimension(spec.curve.dimension, [&](auto dim) {
         constexpr std::size_t D = decltype(dim)::value;

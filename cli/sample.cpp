@@ -12,10 +12,12 @@
 #include "commands.hpp"
 #include "dispatch.hpp"
 #include "json_input.hpp"
+#include "rotation_commands.hpp"
 
 namespace crspline::cli {
 
 void stream_sample(const document& input, const output_settings& settings, output_stream& out) {
+    if (is_rotation_document(input)) return stream_rotation(input, settings, out, "sample");  // issue 28
     const sample_spec spec = parse_sample(input);
     with_dimension(spec.curve.dimension, [&](auto dim) {
         constexpr std::size_t D = decltype(dim)::value;
