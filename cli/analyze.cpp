@@ -4,7 +4,11 @@
 // core's, written there once: docs/report.md.
 #include <crspline/report.hpp>
 
+#include <array>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <utility>
@@ -33,9 +37,8 @@ struct json_builder {
     value null() { return nullptr; }
 };
 
-// The report as JSON text, written as it is built (crspline::report_builder):
-// a value is its text, a container's without its closing bracket until it is
-// attached. At 10^6 segments the document tree took 9 GB for 1.3 GB of text.
+// The report's values as JSON text (crspline::report_builder): a value is
+// its text, a container's without its closing bracket until it is attached.
 struct text_builder {
     struct value {
         std::string text;
@@ -50,17 +53,9 @@ struct text_builder {
     static void attach(value& parent, value&& v, const std::string& where, std::string_view prefix) {
         if (v.close) v.text += v.close;
         if (!parent.bad && v.bad) parent.bad = where + *v.bad;
-        std::string head(parent.count++ ? "," : "");
-        head += prefix;
-        if (v.text.size() > parent.text.size()) {
-            // A long member (the segments): the parent's few bytes go in
-            // front of it rather than a copy of it after them.
-            v.text.insert(0, parent.text + head);
-            parent.text = std::move(v.text);
-        } else {
-            parent.text += head;
-            parent.text += v.text;
-        }
+        if (parent.count++) parent.text += ',';
+        parent.text += prefix;
+        parent.text += v.text;
     }
     void set(value& o, std::string_view key, value v) {
         std::string prefix = "\"" + std::string(key) + "\":";
@@ -85,19 +80,96 @@ struct text_builder {
     value string(std::string_view s) { return {output_json(std::string(s)).dump()}; }
     value null() { return {"null"}; }
 
-    /// The finished text; throws for a non-finite number, by its path as
+    /// The finished text of the report's member or item at `where`
+    /// (segments[3]); throws for a non-finite number, by its path as
     /// render() names it (segments[3]["max_chord_distance"]).
-    std::string finish(value&& v) {
-        if (v.bad) {
-            std::string path = *v.bad;
-            if (path.rfind("[\"", 0) == 0) {  // the first key without brackets
-                const auto end = path.find("\"]");
-                path = path.substr(2, end - 2) + path.substr(end + 2);
-            }
-            output_stream::not_finite(path);
-        }
+    static std::string finish(value&& v, const std::string& where) {
+        if (v.bad) output_stream::not_finite(where + *v.bad);
         if (v.close) v.text += v.close;
         return std::move(v.text);
+    }
+};
+
+// The report as JSON text, member by member (crspline::report_sink): each
+// segment's record is written as it is analysed and each meeting of the
+// search as it is found, kept in a temporary file past 64 KiB until
+// its list is written (after has_self_intersection, which needs the whole
+// search). At 10^6 segments and 2*10^6 crossings the text is 1.5 GB; the
+// whole analysis held until written took 2.7 GB.
+struct text_sink {
+    output_stream& out;
+    std::size_t members = 0, items = 0;
+    std::string key;  // the open list's
+    struct held_items {
+        std::string text;
+        std::FILE* file = nullptr;
+        std::size_t count = 0;
+    } held[2];
+    explicit text_sink(output_stream& o) : out(o) {}
+    text_sink(const text_sink&) = delete;
+    text_sink& operator=(const text_sink&) = delete;
+    ~text_sink() {
+        for (held_items& h : held)
+            if (h.file) std::fclose(h.file);
+    }
+
+    void head(std::string_view k) {
+        std::string& buf = out.buffer();
+        buf += members++ ? ",\"" : "{\"";
+        buf += k;
+        buf += "\":";
+    }
+    void member(std::string_view k, text_builder::value v) {
+        head(k);
+        out.buffer() += text_builder::finish(std::move(v), std::string(k));
+        out.written();
+    }
+    void open(std::string_view k) {
+        head(k);
+        out.buffer() += '[';
+        key = std::string(k);
+        items = 0;
+    }
+    void item(text_builder::value v) {
+        std::string& buf = out.buffer();
+        if (items) buf += ',';
+        buf += text_builder::finish(std::move(v), key + "[" + std::to_string(items++) + "]");
+        out.written();
+    }
+    void close() { out.buffer() += ']'; }
+    void hold(int which, text_builder::value v) {
+        held_items& h = held[which];
+        if (h.count) h.text += ',';
+        h.text += text_builder::finish(std::move(v), std::string(which ? "overlaps" : "intersections") + "[" +
+                                                         std::to_string(h.count++) + "]");
+        if (h.text.size() < (std::size_t(1) << 16)) return;
+        if (!h.file && !(h.file = std::tmpfile()))
+            throw input_error(std::string("cannot create a temporary file for the search's findings: ") +
+                              std::strerror(errno));
+        if (std::fwrite(h.text.data(), 1, h.text.size(), h.file) != h.text.size())
+            throw input_error(std::string("cannot write the search's findings to a temporary file: ") +
+                              std::strerror(errno));
+        h.text.clear();
+    }
+    void release(int which) {
+        held_items& h = held[which];
+        if (h.file) {
+            std::rewind(h.file);
+            std::string& buf = out.buffer();
+            std::array<char, 1 << 16> chunk;
+            for (std::size_t got; (got = std::fread(chunk.data(), 1, chunk.size(), h.file)) > 0;) {
+                buf.append(chunk.data(), got);
+                out.written();
+            }
+            if (std::ferror(h.file))
+                throw input_error(std::string("cannot read the search's findings back from a temporary file: ") +
+                                  std::strerror(errno));
+            std::fclose(h.file);
+            h.file = nullptr;
+        }
+        out.put(h.text);
+        h.text = std::string();
+        items = h.count;
     }
 };
 
@@ -113,33 +185,6 @@ bool flag(const document& input, const char* key, bool fallback) {
     return v.get<bool>();
 }
 
-// --summary: the report's counts instead of its lists (the size of the
-// answer does not grow with the curve). The per-segment counts come from the
-// analysis itself; the rest from the report of the curve without its
-// segments' records.
-template <std::size_t D>
-output_json summary_of(analysis_report<D, double>&& r) {
-    const output_json none = nullptr;
-    std::size_t cusps = 0, loops = 0;
-    for (const auto& s : r.segments) cusps += s.cusp_u.size(), loops += s.self_intersection.size();
-    output_json o;
-    o["dimension"] = r.dimension;
-    o["segment_count"] = r.segments.size();
-    o["cusps"] = cusps;
-    o["loops"] = loops;
-    r.segments.clear();
-    r.segments.shrink_to_fit();
-    json_builder b;
-    const output_json rest = report(b, r);
-    const auto count = [&](const char* key) { return rest[key].is_null() ? none : output_json(rest[key].size()); };
-    o["intersections"] = count("intersections");
-    o["overlaps"] = count("overlaps");
-    o["folds"] = count("folds");
-    o["complete"] = rest["complete"];
-    o["certificate"] = rest["certificate"];
-    return o;
-}
-
 }  // namespace
 
 void stream_analyze(const document& input, const output_settings& settings, output_stream& out) {
@@ -149,25 +194,21 @@ void stream_analyze(const document& input, const output_settings& settings, outp
     const bool summary = flag(input, "summary", false);
     with_dimension(spec.dimension, [&](auto dim) {
         constexpr std::size_t D = decltype(dim)::value;
-        analysis_report<D, double> r;
-        {
-            const catmull_rom<D, double> curve = make_curve<D>(spec);
-            // Phases on a terminal for long runs (the core reports no fraction).
-            progress shown("crspline analyze");
-            if (curve.segment_count() >= 20000) shown.phase(opt.search ? "analysis and intersection search" : "analysis");
-            r = make_report(curve, opt, spec.dimension);
-        }
+        const catmull_rom<D, double> curve = make_curve<D>(spec);
+        // Phases on a terminal for long runs (the core reports no fraction).
+        progress shown("crspline analyze");
+        if (curve.segment_count() >= 20000) shown.phase(opt.search ? "analysis and intersection search" : "analysis");
         if (summary) {
-            out.put(render(summary_of(std::move(r)), settings.numbers));
+            // --summary: the counts instead of the lists; nothing but the
+            // counts is kept (crspline::report_summary).
+            json_builder b;
+            out.put(render(report_summary(b, curve, opt, spec.dimension), settings.numbers));
             return;
         }
         text_builder b{settings.numbers};
-        std::string text = b.finish(report(b, r));
-        r = {};
-        text += '\n';
-        if (std::string& buf = out.buffer(); buf.empty()) buf.swap(text);  // no second copy of the text
-        else buf += text;
-        out.written();
+        text_sink sink(out);
+        write_report(b, sink, curve, opt, spec.dimension);
+        out.put("}\n");
     });
 }
 

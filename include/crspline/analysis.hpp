@@ -590,6 +590,21 @@ std::optional<std::pair<std::array<vec<D, T>, 4>, std::array<T, 3>>> plain_neigh
 
 }  // namespace detail
 
+/// Segment i's analysis, as analyze(c)[i], without the others (a report
+/// written segment by segment: crspline::write_report).
+template <std::size_t D, class T>
+segment_analysis<D, T> analyze(const catmull_rom<D, T>& c, std::size_t i) {
+    const auto& seg = c.segment(i);
+    const auto pts = c.points();
+    const auto [v0, v1] = c.tangents(i);
+    const vec<D, T> chord = pts[(i + 1) % pts.size()] - pts[i];
+    segment_analysis<D, T> a = detail::analyze_core(seg, {(seg.h / T(3)) * v0, chord - (seg.h / T(3)) * v1, chord});
+    a.index = i;
+    a.bezier = c.bezier(i);
+    if (const auto nb = detail::plain_neighbourhood(c, i)) a.bounds = segment_paper_bounds(nb->first, nb->second);
+    return a;
+}
+
 /// Analysis of every segment of a curve. Interior segments of a curve built
 /// as plain Catmull-Rom (tension 0, no Kochanek-Bartels: catmull_rom::options())
 /// also get the paper
@@ -601,17 +616,7 @@ template <std::size_t D, class T>
 std::vector<segment_analysis<D, T>> analyze(const catmull_rom<D, T>& c) {
     std::vector<segment_analysis<D, T>> out;
     out.reserve(c.segment_count());
-    for (std::size_t i = 0; i < c.segment_count(); ++i) {
-        const auto& seg = c.segment(i);
-        const auto pts = c.points();
-        const auto [v0, v1] = c.tangents(i);
-        const vec<D, T> chord = pts[(i + 1) % pts.size()] - pts[i];
-        segment_analysis<D, T> a = detail::analyze_core(seg, {(seg.h / T(3)) * v0, chord - (seg.h / T(3)) * v1, chord});
-        a.index = i;
-        a.bezier = c.bezier(i);
-        if (const auto nb = detail::plain_neighbourhood(c, i)) a.bounds = segment_paper_bounds(nb->first, nb->second);
-        out.push_back(std::move(a));
-    }
+    for (std::size_t i = 0; i < c.segment_count(); ++i) out.push_back(analyze(c, i));
     return out;
 }
 

@@ -482,9 +482,12 @@ certificate<D, T> certify_among(const catmull_rom<D, T>& c, const certify_option
     if (*built.alpha != centripetal)
         return fail(certify_rule::not_centripetal,
                     "the knots are from alpha = " + detail::num(*built.alpha) + ", not 0.5 (centripetal)");
-    const auto an = analyze(c);
-    for (std::size_t i = 0; i < n; ++i)
-        if (an[i].has_cusp() || an[i].has_self_intersection()) {
+    // One segment's analysis at a time (the whole analysis of 10^6
+    // segments held here took 0.5 GB); rule 3 analyses them again for
+    // their boxes, only when rules 1 and 2 pass.
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto an = analyze(c, i);
+        if (an.has_cusp() || an.has_self_intersection()) {
             cert.segment = i;
             std::string why = end_segment(i) ? " (shaped by its end condition)"
                               : !plain       ? " (shaped by tension or Kochanek-Bartels values)"
@@ -492,6 +495,7 @@ certificate<D, T> certify_among(const catmull_rom<D, T>& c, const certify_option
             return fail(certify_rule::not_centripetal,
                         "segment " + std::to_string(i) + " has a cusp, loop or fold" + why);
         }
+    }
 
     // Rule 2: adjacent pairs. The angle rule for two interior plain
     // segments; the exact check for every other pair.
@@ -545,13 +549,14 @@ certificate<D, T> certify_among(const catmull_rom<D, T>& c, const certify_option
     std::vector<edge_box<D, T>> boxes(n);
     T scale = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        if (an[i].bounds) {
+        const auto an = analyze(c, i);
+        if (an.bounds) {
             boxes[i].segment = i;
-            boxes[i].a = an[i].bezier[0];
-            boxes[i].b = an[i].bezier[3];
-            boxes[i].half_width = an[i].bounds->eq6;
+            boxes[i].a = an.bezier[0];
+            boxes[i].b = an.bezier[3];
+            boxes[i].half_width = an.bounds->eq6;
         } else {
-            boxes[i] = detail::bezier_box(i, an[i]);
+            boxes[i] = detail::bezier_box(i, an);
         }
         boxes[i].a -= ref;
         boxes[i].b -= ref;

@@ -295,7 +295,20 @@ std::vector<std::array<T, 4>> take_overlaps(const cubic_segment<D, T>& A, const 
 template <std::size_t D, class T, class Pairs>
 intersection_result<D, T> find_intersections_among(const catmull_rom<D, T>& c, T tolerance, const Pairs& candidate_pairs);
 
+template <std::size_t D, class T, class Pairs, class Visitor>
+bool visit_intersections_among(const catmull_rom<D, T>& c, T tolerance, const Pairs& candidate_pairs, Visitor& visit);
+
 }  // namespace detail
+
+/// The search of find_intersections, each finding handed over as it is
+/// found instead of kept, for a curve with millions of meetings (crspline
+/// analyze at 10^6 points): visit(const curve_intersection<D, T>&),
+/// visit(const curve_overlap<D, T>&) and visit.fold(std::size_t) are called
+/// in the order find_intersections lists them. Returns `complete`.
+template <std::size_t D, class T, class Visitor>
+bool visit_intersections(const catmull_rom<D, T>& c, T tolerance, Visitor&& visit) {
+    return detail::visit_intersections_among(c, tolerance, detail::tree_pairs{}, visit);
+}
 
 /// All meetings of the curve with itself closer than `tolerance` (a
 /// distance; 0 means default_intersection_tolerance times the curve's
@@ -316,28 +329,26 @@ namespace detail {
 // pad; each is then checked in the order i, then j.
 template <std::size_t D, class T, class Pairs>
 intersection_result<D, T> find_intersections_among(const catmull_rom<D, T>& c, T tolerance, const Pairs& candidate_pairs) {
-    using point = vec<D, T>;
     intersection_result<D, T> out;
+    struct keep {
+        intersection_result<D, T>& out;
+        void operator()(const curve_intersection<D, T>& x) { out.intersections.push_back(x); }
+        void operator()(const curve_overlap<D, T>& x) { out.overlaps.push_back(x); }
+        void fold(std::size_t i) { out.folds.push_back(i); }
+    } visit{out};
+    out.complete = visit_intersections_among(c, tolerance, candidate_pairs, visit);
+    return out;
+}
+
+// The search itself, each finding handed to `visit` (visit_intersections).
+template <std::size_t D, class T, class Pairs, class Visitor>
+bool visit_intersections_among(const catmull_rom<D, T>& c, T tolerance, const Pairs& candidate_pairs, Visitor& visit) {
+    using point = vec<D, T>;
+    bool complete = true;
     const std::size_t n = c.segment_count();
-    const auto bez = c.bezier();
-    // Scale and tolerance.
-    point lo = bez[0][0], hi = bez[0][0];
-    for (const auto& b : bez) {
-        const auto bx = detail::box_of(b);
-        for (std::size_t k = 0; k < D; ++k) { lo[k] = std::min(lo[k], bx[0][k]); hi[k] = std::max(hi[k], bx[1][k]); }
-    }
-    const T scale = norm(hi - lo);
-    const T tol = tolerance > 0 ? tolerance : T(default_intersection_tolerance) * scale;
-    if (!(scale > 0)) return out;
-
-    // Within segments: exact.
-    for (std::size_t i = 0; i < n; ++i) {
-        const auto a = analyze_segment(c.segment(i));
-        if (a.fold) out.folds.push_back(i);
-        for (const auto& [u, v] : a.self_intersection)
-            out.intersections.push_back({{i, i}, {u, v}, c.segment(i).at(u), norm(c.segment(i).at(u) - c.segment(i).at(v))});
-    }
-
+    // Each segment's box of its Bézier points (not the points themselves:
+    // at 10^6 segments they would be 64 MB more held through the search);
+    // scale and tolerance from their union.
     std::vector<detail::box<D, T>> boxes(n);
     // Zero-length segments (a knot interval of 0: coincident points with
     // alpha > 0, or a segment whose Bezier points are one point) join the
@@ -347,7 +358,7 @@ intersection_result<D, T> find_intersections_among(const catmull_rom<D, T>& c, T
     // counts them among segments [0, k); empty when there are none.
     std::vector<std::size_t> zero_before;
     for (std::size_t i = 0; i < n; ++i) {
-        const auto bx = detail::box_of(bez[i]);
+        const auto bx = detail::box_of(c.bezier(i));
         boxes[i] = {bx[0], bx[1]};
         if (c.segment(i).h == 0 || bx[0] == bx[1]) {
             if (zero_before.empty()) zero_before.assign(n + 1, 0);
@@ -359,6 +370,21 @@ intersection_result<D, T> find_intersections_among(const catmull_rom<D, T>& c, T
     const auto all_zero = [&](std::size_t a, std::size_t b) {
         return a >= b || (!zero_before.empty() && zero_before[b] - zero_before[a] == b - a);
     };
+    point lo = boxes[0].lo, hi = boxes[0].hi;
+    for (const auto& bx : boxes)
+        for (std::size_t k = 0; k < D; ++k) { lo[k] = std::min(lo[k], bx.lo[k]); hi[k] = std::max(hi[k], bx.hi[k]); }
+    const T scale = norm(hi - lo);
+    const T tol = tolerance > 0 ? tolerance : T(default_intersection_tolerance) * scale;
+    if (!(scale > 0)) return complete;
+
+    // Within segments: exact.
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto a = analyze_segment(c.segment(i));
+        if (a.fold) visit.fold(i);
+        for (const auto& [u, v] : a.self_intersection)
+            visit(curve_intersection<D, T>{{i, i}, {u, v}, c.segment(i).at(u), norm(c.segment(i).at(u) - c.segment(i).at(v))});
+    }
+
     // Candidate pairs by their boxes in absolute coordinates: pad by the
     // rounding of those coordinates too, so no pair is dropped for it (the
     // per-pair search below is relative and exact to the tolerance).
@@ -378,12 +404,12 @@ intersection_result<D, T> find_intersections_among(const catmull_rom<D, T>& c, T
             const auto joint = next ? detail::pair_joint::next : wrap ? detail::pair_joint::wrap : detail::pair_joint::none;
             const auto& A = c.segment(i);
             const auto& B = c.segment(j);
-            auto found = detail::segment_pair_meetings(A, B, joint, tol, out.complete);
+            auto found = detail::segment_pair_meetings(A, B, joint, tol, complete);
             for (const auto& r : detail::take_overlaps(A, B, tol, found))
-                out.overlaps.push_back({{i, j}, {r[0], r[1]}, {r[2], r[3]}});
-            for (const auto& f : found) out.intersections.push_back({{i, j}, {f[0], f[1]}, A.at(f[0]), f[2]});
+                visit(curve_overlap<D, T>{{i, j}, {r[0], r[1]}, {r[2], r[3]}});
+            for (const auto& f : found) visit(curve_intersection<D, T>{{i, j}, {f[0], f[1]}, A.at(f[0]), f[2]});
         }
-    return out;
+    return complete;
 }
 
 }  // namespace detail

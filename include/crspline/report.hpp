@@ -79,9 +79,24 @@ struct analysis_report {
     std::optional<crspline::certificate<D, T>> certificate;  ///< nullopt when not asked for
 };
 
-/// The report of a curve. The certificate runs without its own search (the
-/// report's search is the curve's); when it fails and the search ran, its
-/// `intersects` says whether that search found a meeting.
+/// The report's certificate (nullopt when not asked for): it runs without a
+/// search of its own (the report's search is the curve's); when it fails
+/// and the search ran, its `intersects` is `searched_any`, whether that
+/// search found a meeting.
+template <std::size_t D, class T>
+std::optional<certificate<D, T>> certify_for_report(const catmull_rom<D, T>& c, const report_options& opt,
+                                                    std::optional<bool> searched_any) {
+    if (!opt.certify) return std::nullopt;
+    certify_options co;
+    co.safe_angle = opt.safe_angle;
+    co.search_on_failure = false;
+    certificate<D, T> cert = certify_intersection_free(c, co);
+    if (!cert.certified && searched_any) cert.intersects = *searched_any;
+    return cert;
+}
+
+/// The report of a curve, held whole (write_report writes it as it is
+/// computed instead).
 template <std::size_t D, class T>
 analysis_report<D, T> make_report(const catmull_rom<D, T>& c, const report_options& opt = {},
                                   std::size_t dimension = D) {
@@ -90,13 +105,7 @@ analysis_report<D, T> make_report(const catmull_rom<D, T>& c, const report_optio
     r.grid.assign(c.grid().begin(), c.grid().end());
     r.segments = analyze(c);
     if (opt.search) r.search = find_intersections(c, T(opt.tolerance));
-    if (opt.certify) {
-        certify_options co;
-        co.safe_angle = opt.safe_angle;
-        co.search_on_failure = false;
-        r.certificate = certify_intersection_free(c, co);
-        if (!r.certificate->certified && r.search) r.certificate->intersects = r.search->any();
-    }
+    r.certificate = certify_for_report(c, opt, r.search ? std::optional<bool>(r.search->any()) : std::nullopt);
     return r;
 }
 
@@ -205,35 +214,41 @@ struct report_writer {
         return s;
     }
 
+    template <std::size_t D, class T>
+    value intersection(const curve_intersection<D, T>& x, std::span<const T> grid) {
+        value m = b.object();
+        b.set(m, "segments", index_pair(x.segments));
+        b.set(m, "u", nums(x.u));
+        std::array<T, 2> t{};
+        for (std::size_t j = 0; j < 2; ++j) t[j] = global(x.u[j], grid[x.segments[j]], grid[x.segments[j] + 1]);
+        b.set(m, "t", nums(t));
+        b.set(m, "point", point(x.point));
+        // 0 to rounding for a crossing; up to the search's tolerance for
+        // a near miss (in 3-D, closest approaches are what is reported).
+        b.set(m, "distance", num(x.distance));
+        return m;
+    }
+
+    // A collinear overlap: one interval per pair of segments, [u0, u1] on
+    // the first and the matching [v0, v1] on the second (local).
+    template <std::size_t D, class T>
+    value overlap(const curve_overlap<D, T>& x) {
+        value m = b.object();
+        b.set(m, "segments", index_pair(x.segments));
+        b.set(m, "u", nums(x.u));
+        b.set(m, "v", nums(x.v));
+        return m;
+    }
+
     // The search's fields, into an object o (the report's top level, or a
     // search object of its own).
     template <std::size_t D, class T>
     void search_fields(value& o, const intersection_result<D, T>& r, std::span<const T> grid) {
         value list = b.array();
-        for (const auto& x : r.intersections) {
-            value m = b.object();
-            b.set(m, "segments", index_pair(x.segments));
-            b.set(m, "u", nums(x.u));
-            std::array<T, 2> t{};
-            for (std::size_t j = 0; j < 2; ++j) t[j] = global(x.u[j], grid[x.segments[j]], grid[x.segments[j] + 1]);
-            b.set(m, "t", nums(t));
-            b.set(m, "point", point(x.point));
-            // 0 to rounding for a crossing; up to the search's tolerance for
-            // a near miss (in 3-D, closest approaches are what is reported).
-            b.set(m, "distance", num(x.distance));
-            b.push(list, std::move(m));
-        }
+        for (const auto& x : r.intersections) b.push(list, intersection(x, grid));
         b.set(o, "intersections", std::move(list));
-        // A collinear overlap: one interval per pair of segments, [u0, u1]
-        // on the first and the matching [v0, v1] on the second (local).
         value overlaps = b.array();
-        for (const auto& x : r.overlaps) {
-            value m = b.object();
-            b.set(m, "segments", index_pair(x.segments));
-            b.set(m, "u", nums(x.u));
-            b.set(m, "v", nums(x.v));
-            b.push(overlaps, std::move(m));
-        }
+        for (const auto& x : r.overlaps) b.push(overlaps, overlap(x));
         b.set(o, "overlaps", std::move(overlaps));
         b.set(o, "folds", indices(std::span<const std::size_t>(r.folds)));
         // false: some pair of segments ran out of the search's work budget
@@ -289,35 +304,196 @@ typename B::value report_certificate(B& b, const certificate<D, T>& c, std::span
     return detail::report_writer<B>{b, dimension}.certificate(c, grid, true);
 }
 
+/// Where a report goes as it is written (write_report, and report() through
+/// a sink that builds the tree): the members of the top-level object, in
+/// the schema's order, each whole or, for a list that grows with the curve,
+/// item by item:
+///
+///     sink.member(key, value);   // a member, whole
+///     sink.open(key);            // a list member: its items follow
+///     sink.item(value);          // the next item of the open list
+///     sink.close();              // the end of the open list
+///     sink.hold(which, value);   // an item of a list written later
+///                                // (which: 0 intersections, 1 overlaps)
+///     sink.release(which);       // the items held, into the open list
+///
+/// The search finds its meetings before `has_self_intersection`, which
+/// comes first in the schema, is known: they are held until then (a sink
+/// that writes text keeps them on disk, not in memory).
+template <class S, class B>
+concept report_sink = report_builder<B> && requires(S& s, std::string_view key, typename B::value v, int which) {
+    s.member(key, std::move(v));
+    s.open(key);
+    s.item(std::move(v));
+    s.close();
+    s.hold(which, std::move(v));
+    s.release(which);
+};
+
+namespace detail {
+
+// A sink that builds the report's tree with the builder (report()).
+template <report_builder B>
+struct tree_sink {
+    using value = typename B::value;
+    B& b;
+    value o = b.object();
+    std::string_view key{};
+    value list = b.array();
+    std::vector<value> held[2];
+    void member(std::string_view k, value v) { b.set(o, k, std::move(v)); }
+    void open(std::string_view k) { key = k, list = b.array(); }
+    void item(value v) { b.push(list, std::move(v)); }
+    void close() { b.set(o, key, std::move(list)); }
+    void hold(int which, value v) { held[which].push_back(std::move(v)); }
+    void release(int which) {
+        for (value& v : held[which]) b.push(list, std::move(v));
+        held[which].clear();
+    }
+};
+
+// The report's members, in the schema's order, into the sink. Where the
+// parts come from is the caller's: each_segment(f) calls f with every
+// segment's analysis in order; search(visitor) runs the search through
+// the visitor (as visit_intersections does) and returns its `complete`,
+// or nullopt when the search is not run; certify(any) returns the
+// certificate (nullopt: none), `any` saying whether the search found a
+// meeting (nullopt when it did not run).
+template <report_builder B, class Sink, std::size_t D, class T, class Segments, class Search, class Certify>
+void write_members(B& b, Sink& sink, std::size_t dimension, std::span<const T> grid, Segments&& each_segment,
+                   Search&& search, Certify&& certify) {
+    report_writer<B> w{b, dimension};
+    sink.member("dimension", b.integer(dimension));
+    std::vector<T> cusp_t;
+    bool loop = false;
+    sink.open("segments");
+    each_segment([&](const segment_analysis<D, T>& a) {
+        const T t0 = grid[a.index], t1 = grid[a.index + 1];
+        sink.item(w.segment(a, t0, t1));
+        for (const T u : a.cusp_u) cusp_t.push_back(w.global(u, t0, t1));
+        loop = loop || a.has_self_intersection();
+    });
+    sink.close();
+    sink.member("cusp_t", w.nums(std::span<const T>(cusp_t)));
+    sink.member("has_cusp", b.boolean(!cusp_t.empty()));
+    // The search, its meetings held until has_self_intersection is written.
+    struct holder {
+        report_writer<B>& w;
+        Sink& sink;
+        std::span<const T> grid;
+        std::vector<std::size_t> folds{};
+        bool any = false;
+        void operator()(const curve_intersection<D, T>& x) { sink.hold(0, w.intersection(x, grid)), any = true; }
+        void operator()(const curve_overlap<D, T>& x) { sink.hold(1, w.overlap(x)), any = true; }
+        void fold(std::size_t i) { folds.push_back(i), any = true; }
+    } found{w, sink, grid};
+    const std::optional<bool> complete = search(found);
+    // A loop or fold inside a segment is known without the search; anything
+    // else needs it: unknown (null) when it did not run, like the search's
+    // own fields below.
+    sink.member("has_self_intersection",
+                loop ? b.boolean(true) : complete ? b.boolean(found.any) : b.null());
+    if (complete) {
+        sink.open("intersections");
+        sink.release(0);
+        sink.close();
+        sink.open("overlaps");
+        sink.release(1);
+        sink.close();
+        sink.member("folds", w.indices(std::span<const std::size_t>(found.folds)));
+        // false: some pair of segments ran out of the search's work budget
+        // (the list may then miss meetings).
+        sink.member("complete", b.boolean(*complete));
+    } else {
+        for (const char* key : {"intersections", "overlaps", "folds", "complete"}) sink.member(key, b.null());
+    }
+    const auto cert = certify(complete ? std::optional<bool>(found.any) : std::nullopt);
+    sink.member("certificate", cert ? w.certificate(*cert, grid, false) : b.null());
+}
+
+}  // namespace detail
+
 /// The whole report: {dimension, segments, cusp_t, has_cusp,
-/// has_self_intersection, intersections, folds, complete, certificate}.
+/// has_self_intersection, intersections, overlaps, folds, complete,
+/// certificate}.
 template <report_builder B, std::size_t D, class T>
 typename B::value report(B& b, const analysis_report<D, T>& r) {
-    detail::report_writer<B> w{b, r.dimension};
-    const std::span<const T> grid(r.grid);
+    detail::tree_sink<B> sink{b};
+    detail::write_members<B, detail::tree_sink<B>, D, T>(
+        b, sink, r.dimension, std::span<const T>(r.grid),
+        [&](auto&& f) {
+            for (const auto& a : r.segments) f(a);
+        },
+        [&](auto& visit) -> std::optional<bool> {
+            if (!r.search) return std::nullopt;
+            for (const auto& x : r.search->intersections) visit(x);
+            for (const auto& x : r.search->overlaps) visit(x);
+            for (const std::size_t i : r.search->folds) visit.fold(i);
+            return r.search->complete;
+        },
+        [&](std::optional<bool>) { return r.certificate; });
+    return std::move(sink.o);
+}
+
+/// The report of a curve written as it is computed, for a curve too large
+/// to hold its whole analysis (crspline analyze at 10^6 points): each
+/// segment's record goes to the sink as it is analysed and each meeting as
+/// the search finds it; what is held is what the whole-curve parts need
+/// (the search's boxes and candidate pairs, the certificate's state, the
+/// cusps' t). The same members and values as report(b, make_report(c, opt,
+/// dimension)).
+template <report_builder B, class Sink, std::size_t D, class T>
+    requires report_sink<Sink, B>
+void write_report(B& b, Sink& sink, const catmull_rom<D, T>& c, const report_options& opt = {},
+                  std::size_t dimension = D) {
+    const std::vector<T> grid(c.grid().begin(), c.grid().end());
+    detail::write_members<B, Sink, D, T>(
+        b, sink, std::min(dimension, D), std::span<const T>(grid),
+        [&](auto&& f) {
+            for (std::size_t i = 0; i < c.segment_count(); ++i) f(analyze(c, i));
+        },
+        [&](auto& visit) -> std::optional<bool> {
+            if (!opt.search) return std::nullopt;
+            return visit_intersections(c, T(opt.tolerance), visit);
+        },
+        [&](std::optional<bool> any) { return certify_for_report(c, opt, any); });
+}
+
+/// The report's counts instead of its lists, for a curve of any size:
+/// {dimension, segment_count, cusps, loops, intersections, overlaps, folds,
+/// complete, certificate}, the search's counts null when it is not run.
+/// Nothing but counts is kept.
+template <report_builder B, std::size_t D, class T>
+typename B::value report_summary(B& b, const catmull_rom<D, T>& c, const report_options& opt = {},
+                                 std::size_t dimension = D) {
+    std::size_t cusps = 0, loops = 0;
+    for (std::size_t i = 0; i < c.segment_count(); ++i) {
+        const auto a = analyze(c, i);
+        cusps += a.cusp_u.size(), loops += a.self_intersection.size();
+    }
+    struct counter {
+        std::size_t intersections = 0, overlaps = 0, folds = 0;
+        void operator()(const curve_intersection<D, T>&) { ++intersections; }
+        void operator()(const curve_overlap<D, T>&) { ++overlaps; }
+        void fold(std::size_t) { ++folds; }
+    } count;
+    const bool searched = opt.search;
+    const bool complete = searched && visit_intersections(c, T(opt.tolerance), count);
+    const auto counted = [&](std::size_t k) { return searched ? b.integer(k) : b.null(); };
+    const std::vector<T> grid(c.grid().begin(), c.grid().end());
+    const auto cert = certify_for_report(
+        c, opt, searched ? std::optional<bool>(count.intersections + count.overlaps + count.folds > 0) : std::nullopt);
+    detail::report_writer<B> w{b, std::min(dimension, D)};
     typename B::value o = b.object();
-    b.set(o, "dimension", b.integer(r.dimension));
-    typename B::value segs = b.array(), cusps = b.array();
-    bool cusp = false, loop = false;
-    for (const auto& a : r.segments) {
-        b.push(segs, w.segment(a, grid[a.index], grid[a.index + 1]));
-        for (const T u : a.cusp_u) b.push(cusps, w.num(w.global(u, grid[a.index], grid[a.index + 1])));
-        cusp = cusp || a.has_cusp();
-        loop = loop || a.has_self_intersection();
-    }
-    b.set(o, "segments", std::move(segs));
-    b.set(o, "cusp_t", std::move(cusps));
-    b.set(o, "has_cusp", b.boolean(cusp));
-    b.set(o, "has_self_intersection", b.boolean(loop || (r.search && r.search->any())));
-    if (r.search) {
-        w.search_fields(o, *r.search, grid);
-    } else {
-        b.set(o, "intersections", b.null());
-        b.set(o, "overlaps", b.null());
-        b.set(o, "folds", b.null());
-        b.set(o, "complete", b.null());
-    }
-    b.set(o, "certificate", r.certificate ? w.certificate(*r.certificate, grid, false) : b.null());
+    b.set(o, "dimension", b.integer(std::min(dimension, D)));
+    b.set(o, "segment_count", b.integer(c.segment_count()));
+    b.set(o, "cusps", b.integer(cusps));
+    b.set(o, "loops", b.integer(loops));
+    b.set(o, "intersections", counted(count.intersections));
+    b.set(o, "overlaps", counted(count.overlaps));
+    b.set(o, "folds", counted(count.folds));
+    b.set(o, "complete", searched ? b.boolean(complete) : b.null());
+    b.set(o, "certificate", cert ? w.certificate(*cert, std::span<const T>(grid), false) : b.null());
     return o;
 }
 

@@ -127,3 +127,88 @@ def test_given_start_tangent_that_crosses_is_not_certified():
     p = run(["analyze", "--start=10,10", "-"], json.dumps({"points": doc["points"]}))
     assert p.returncode == 0, p.stderr
     assert '"failed_rule":"adjacent_pair"' in p.stdout
+
+
+# --- issue 31, point 5: what was not searched for is unknown ---------------------------------
+
+FIGURE_EIGHT = [[0, 0], [1, 1], [2, 0], [1, -1], [0, 0.2], [-1, 1], [-2, 0], [-1, -1]]
+
+
+def test_has_self_intersection_is_null_when_the_search_did_not_run():
+    # A closed figure eight crosses itself between segments (the search
+    # finds it); without the search that is unknown, not false. A loop
+    # inside a segment is known without the search: true either way.
+    searched = run_json("analyze", {"points": FIGURE_EIGHT, "end": "closed"})
+    assert searched["has_self_intersection"] is True
+    assert any(x["segments"][0] != x["segments"][1] for x in searched["intersections"])
+    assert all(not s["has_self_intersection"] for s in searched["segments"])
+    quick = run_json("analyze", {"points": FIGURE_EIGHT, "end": "closed", "search": False})
+    assert quick["has_self_intersection"] is None and quick["intersections"] is None
+    p = run(["analyze", "--no-intersections", "-"], json.dumps({"points": FIGURE_EIGHT, "closed": True}))
+    assert p.returncode == 0 and json.loads(p.stdout)["has_self_intersection"] is None
+    # A uniform segment that loops (test_uniform_loop_and_centripetal_certificate's).
+    looped = run_json("analyze", {"points": LOOP, "alpha": 0, "search": False})
+    assert any(s["self_intersection_u"] for s in looped["segments"])
+    assert looped["has_self_intersection"] is True
+    # Searched and clean: false.
+    clean = run_json("analyze", {"points": [[0, 0], [1, 1], [2, 0], [3, 1]]})
+    assert clean["has_self_intersection"] is False and clean["intersections"] == []
+
+
+# --- issue 26, point 4: analyze holds no more than the curve needs --------------------------
+
+def random_walk(rng, n):
+    """A 2-D random walk of unit steps: about as many crossings as points."""
+    x = y = 0.0
+    pts = []
+    for _ in range(n):
+        a = rng.uniform(0, 2 * math.pi)
+        x, y = x + math.cos(a), y + math.sin(a)
+        pts.append([round(x, 9), round(y, 9)])
+    return pts
+
+
+PEAK = (
+    "import resource, subprocess, sys\n"
+    "with open(sys.argv[1], 'wb') as out:\n"
+    "    subprocess.run(sys.argv[2:], stdout=out, check=True)\n"
+    "print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)\n"
+)
+
+
+def peak_kib(args, out):
+    """Peak resident memory (KiB) of one crspline run writing to the file
+    `out`, measured in a fresh Python process whose only child is that run."""
+    import subprocess
+    import sys
+    from cli_support import binary
+    p = subprocess.run([sys.executable, "-c", PEAK, str(out), binary(), *args], capture_output=True, text=True,
+                       timeout=600)
+    assert p.returncode == 0, p.stderr
+    return int(p.stdout)
+
+
+def test_analyze_memory_stays_near_length_whatever_the_output(tmp_path, seed):
+    """Each segment's record is written as it is analysed and each crossing
+    as it is found; --summary keeps counts only. So the peak memory of
+    analyze (about 150 MB of text here) and of --summary stays within twice
+    that of `length` on the same file, which holds the input and the curve
+    (about 18 MB at 10^5 points; the fixed costs of analyze, the held-back
+    first MiB of output and of the crossings, are a few MB). Holding the
+    whole analysis until written, as before, took about 5 times length's
+    here (10 times at 10^6 points). Memory, not time: a peak does not
+    depend on the machine's load."""
+    import random
+    rng = random.Random(seed)
+    n = 100_000
+    path = tmp_path / "walk.json"
+    path.write_text(json.dumps({"points": random_walk(rng, n)}))
+    length = peak_kib(["length", str(path)], tmp_path / "length.json")
+    full = peak_kib(["analyze", str(path)], tmp_path / "analyze.json")
+    summary = peak_kib(["analyze", "--summary", str(path)], tmp_path / "summary.json")
+    counts = json.loads((tmp_path / "summary.json").read_text())
+    # The walk crosses itself often: the output is large, not just the curve.
+    assert counts["segment_count"] == n - 1 and counts["intersections"] > n, counts
+    assert (tmp_path / "analyze.json").stat().st_size > 100 * n
+    assert full <= 2 * length, (full, length)
+    assert summary <= 2 * length, (summary, length)

@@ -213,9 +213,24 @@ private:
 struct tree_pairs {
     template <std::size_t D, class T>
     pair_rows operator()(const std::vector<box<D, T>>& boxes, T pad) const {
-        std::vector<std::array<std::uint32_t, 2>> pairs;
-        box_tree<D, T>(boxes).for_each_meeting_pair(pad, [&](std::uint32_t i, std::uint32_t j) { pairs.push_back({i, j}); });
-        return rows_of(boxes.size(), pairs);
+        // Two walks of the tree: the first counts each row's pairs, the
+        // second puts them in place (rows_of's counting sort without its
+        // list of all pairs, 8 bytes a pair and twice that while it grew:
+        // the largest thing a search of a long random walk held).
+        const box_tree<D, T> tree(boxes);
+        const std::size_t n = boxes.size();
+        pair_rows r;
+        r.offsets.assign(n + 1, 0);
+        tree.for_each_meeting_pair(pad, [&](std::uint32_t i, std::uint32_t) { ++r.offsets[i + 1]; });
+        for (std::size_t i = 0; i < n; ++i) r.offsets[i + 1] += r.offsets[i];
+        r.partners.resize(r.offsets[n]);
+        // offsets[i + 1] as row i's cursor: it starts at row i's first
+        // place and ends at row i + 1's, where it belongs.
+        for (std::size_t i = n; i > 0; --i) r.offsets[i] = r.offsets[i - 1];
+        tree.for_each_meeting_pair(pad, [&](std::uint32_t i, std::uint32_t j) { r.partners[r.offsets[i + 1]++] = j; });
+        for (std::size_t i = 0; i < n; ++i)
+            std::sort(r.partners.begin() + std::ptrdiff_t(r.offsets[i]), r.partners.begin() + std::ptrdiff_t(r.offsets[i + 1]));
+        return r;
     }
 };
 
