@@ -12,6 +12,7 @@ namespace py = pybind11;
 using namespace crspline::python;
 namespace crspline::python { void bind_rotation(py::module_& m); }  // bind_rotation.cpp: crspline.rotation's core
 namespace crspline::python { void bind_geo(py::module_& m); }  // bind_geo.cpp: crspline.geo's core
+namespace crspline::python { void bind_decision(py::module_& m); }  // bind_decision.cpp: the decision (issue 27)
 
 PYBIND11_MODULE(_crspline, m) {
     m.doc() = "Compiled core of the crspline package (private: use crspline.CatmullRom).";
@@ -65,6 +66,7 @@ PYBIND11_MODULE(_crspline, m) {
     bind_batch(m);
     bind_rotation(m);
     bind_geo(m);
+    bind_decision(m);
 #ifdef CRSPLINE_PY_GEOMETRY
     bind_geometry(m, cls);
 #endif
