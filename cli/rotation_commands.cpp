@@ -62,6 +62,11 @@ rotation_curve build_rotation(const rotation_file& f) {
         o.alpha = f.alpha, o.closed = f.closed, o.keep_signs = f.keep_signs, o.strict = f.strict;
         const rotation::quaternion_spline<double> s(keys, o);
         times.assign(s.grid().begin(), s.grid().end());
+        for (std::size_t k = 1; k < times.size(); ++k)
+            if (!(times[k] > times[k - 1]))
+                throw input_error("alpha: keys " + std::to_string(k - 1) + " and " + std::to_string(k % f.keys.size()) +
+                                  " are the same rotation, so alpha's grid has a zero interval there, which the c2 "
+                                  "spline cannot take (give a grid, or alpha 0)");
     } else {
         for (std::size_t k = 0; k < f.keys.size() + (f.closed ? 1 : 0); ++k) times.push_back(double(k));
     }
@@ -81,6 +86,8 @@ rotation::pose_curve<double> build_pose(const rotation_file& f) {
 
 void stream_rotation(const document& input, const output_settings& settings, output_stream& out,
                      const std::string& command) {
+    if (settings.format != "json" && settings.format != "csv" && settings.format != "tsv")
+        throw input_error("--format " + settings.format + ": a rotation curve file gives json, csv or tsv");
     const rotation_file f = parse_rotation_file(input, command);
     const std::string prefix = input.file.empty() || input.file == "<stdin>" ? "" : input.file + ": ";
 

@@ -300,6 +300,10 @@ ERRORS = [
     ({"rotations": {"quaternions": Q}, "t": [0], "alpha": 2}, "alpha must be in [0, 1], got 2"),
     ({"rotations": {"quaternions": Q}, "t": [0], "grid": [0, 2, 1]}, "grid is not increasing at index 2"),
     ({"rotations": {"quaternions": Q}, "t": [0], "tension": 0.5}, "tension: unknown field in a rotation curve file"),
+    ({"rotations": {"quaternions": [Q[0], Q[0], Q[1]]}, "kind": "c2", "alpha": 0.5, "t": [0]},
+     "alpha: keys 0 and 1 are the same rotation, so alpha's grid has a zero interval there"),
+    ({"rotations": {"quaternions": [Q[0], Q[0], Q[1]]}, "alpha": 0.5, "strict": True, "t": [0]},
+     "keys 0 and 1 are the same rotation"),
     ({"points": [[0, 0, 0], [1, 0, 0]], "rotations": {"quaternions": Q}, "t": [0]},
      "points: a pose curve needs one rotation per point: 2 points, 3 rotations in rotations.quaternions"),
     ({"points": [[0, 0], [1, 0], [2, 0]], "rotations": {"quaternions": Q}, "t": [0]}, "points: a pose curve needs 3-D points"),
@@ -330,6 +334,9 @@ def test_sample_errors_and_file_name(tmp_path):
     assert p.returncode == 2 and p.stderr.startswith(f"crspline: {path}: rotations.quaternions[1]: not a unit"), p.stderr
     p = run(["eval", "-", "--alpha", "0.5"], json.dumps(dict(base, t=[0])))
     assert p.returncode == 2 and "--alpha: not used with a rotation curve file" in p.stderr, p.stderr
+    for command, fmt in (("sample", "geojson"), ("sample", "svg-path")):
+        p = run([command, "-", "--format", fmt], json.dumps(dict(base, count=3)))
+        assert p.returncode == 2 and f"--format {fmt}: a rotation curve file gives json, csv or tsv" in p.stderr, p.stderr
     p = run(["eval", "-", "--t", "0,1.5", "--derivatives", "1"], json.dumps(base))
     assert p.returncode == 0, p.stderr
     assert json.loads(p.stdout)["t"] == [0, 1.5]
