@@ -9,8 +9,8 @@
 // metres: the core works in the conservative equirectangular frame that
 // crspline.geo uses (x = R cos(phi0) lambda, y = R phi, R = a^2 / b; frame
 // distances are never below true ones), input vertices come back bit for
-// bit, and lengths are geodesic on the WGS 84 ellipsoid (Vincenty's inverse
-// formula per segment, about 0.1 mm). Each feature gets the properties
+// bit, and lengths are geodesic on the WGS 84 ellipsoid (GeographicLib's
+// inverse problem per segment, accurate to rounding). Each feature gets the properties
 // crspline_length_m, crspline_max_deviation_m, crspline_verdict and
 // crspline_status; the collection gets "crspline": {units, stats}. Bad input
 // exits with status 2 and one line naming the feature and field.
@@ -30,6 +30,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include <GeographicLib/Geodesic.hpp>
 #include <nlohmann/json.hpp>
 
 #include <crspline/geo/smooth.hpp>
@@ -48,42 +49,12 @@ constexpr double wgs84_a = 6378137.0, wgs84_f = 1 / 298.257223563;
 constexpr double wgs84_b = wgs84_a * (1 - wgs84_f);
 constexpr double r_max = wgs84_a * wgs84_a / wgs84_b;
 
-// Geodesic distance on WGS 84 (Vincenty 1975, inverse). Segments of a
-// smoothed polyline are short; a nearly antipodal pair that does not
-// converge is an error, not a guess.
+// Geodesic distance on WGS 84 (GeographicLib: Karney's algorithm, accurate
+// to rounding for every pair of points, antipodal ones included).
 double geodesic(double lon1, double lat1, double lon2, double lat2) {
-    if (lon1 == lon2 && lat1 == lat2) return 0;
-    const double deg = std::numbers::pi / 180;
-    const double f = wgs84_f, a = wgs84_a, b = wgs84_b;
-    const double L = (lon2 - lon1) * deg;
-    const double U1 = std::atan((1 - f) * std::tan(lat1 * deg)), U2 = std::atan((1 - f) * std::tan(lat2 * deg));
-    const double sU1 = std::sin(U1), cU1 = std::cos(U1), sU2 = std::sin(U2), cU2 = std::cos(U2);
-    double lambda = L, sigma = 0, s_sigma = 0, c_sigma = 0, c2_alpha = 0, c_2sm = 0;
-    for (int it = 0; it < 200; ++it) {
-        const double sl = std::sin(lambda), cl = std::cos(lambda);
-        s_sigma = std::hypot(cU2 * sl, cU1 * sU2 - sU1 * cU2 * cl);
-        if (s_sigma == 0) return 0;
-        c_sigma = sU1 * sU2 + cU1 * cU2 * cl;
-        sigma = std::atan2(s_sigma, c_sigma);
-        const double s_alpha = cU1 * cU2 * sl / s_sigma;
-        c2_alpha = 1 - s_alpha * s_alpha;
-        c_2sm = c2_alpha != 0 ? c_sigma - 2 * sU1 * sU2 / c2_alpha : 0;
-        const double C = f / 16 * c2_alpha * (4 + f * (4 - 3 * c2_alpha));
-        const double prev = lambda;
-        lambda = L + (1 - C) * f * s_alpha * (sigma + C * s_sigma * (c_2sm + C * c_sigma * (-1 + 2 * c_2sm * c_2sm)));
-        if (std::abs(lambda - prev) < 1e-13) {
-            const double u2 = c2_alpha * (a * a - b * b) / (b * b);
-            const double A = 1 + u2 / 16384 * (4096 + u2 * (-768 + u2 * (320 - 175 * u2)));
-            const double B = u2 / 1024 * (256 + u2 * (-128 + u2 * (74 - 47 * u2)));
-            const double ds = B * s_sigma *
-                              (c_2sm + B / 4 * (c_sigma * (-1 + 2 * c_2sm * c_2sm) -
-                                                B / 6 * c_2sm * (-3 + 4 * s_sigma * s_sigma) *
-                                                    (-3 + 4 * c_2sm * c_2sm)));
-            return b * A * (sigma - ds);
-        }
-    }
-    throw smooth_error("geodesic length: no convergence between (" + std::to_string(lon1) + ", " +
-                       std::to_string(lat1) + ") and (" + std::to_string(lon2) + ", " + std::to_string(lat2) + ")");
+    double s12 = 0;
+    GeographicLib::Geodesic::WGS84().Inverse(lat1, lon1, lat2, lon2, s12);
+    return s12;
 }
 
 struct recipe {

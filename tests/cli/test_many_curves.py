@@ -29,7 +29,8 @@ def check(p, line):
 
 def polygon(rng, n):
     """A star-shaped closed polygon: n vertices at increasing angles."""
-    cx, cy, r = rng.uniform(-100, 100), rng.uniform(-100, 100), rng.uniform(1, 20)
+    # Latitudes (y) within +-80: GeoJSON is WGS 84, and `length` refuses |lat| > 90 (issue 29).
+    cx, cy, r = rng.uniform(-100, 100), rng.uniform(-60, 60), rng.uniform(1, 20)
     angles = sorted(rng.uniform(0, 2 * math.pi) for _ in range(n))
     return [[cx + r * rng.uniform(0.5, 1.0) * math.cos(a), cy + r * rng.uniform(0.5, 1.0) * math.sin(a)] for a in angles]
 
@@ -50,6 +51,9 @@ def test_geojson_polygon_corpus_matches_one_curve_runs(tmp_path):
         for i, (item, ring) in enumerate(zip(got, rings)):
             assert item["id"] == f"p{i}" and item["properties"] == {"name": f"polygon {i}", "n": len(ring)}
             want = run_json(command, {"points": ring, "end": "closed"})
+            if command == "length":  # issue 29: GeoJSON lengths are metres; the ring alone as GeoJSON
+                want = run_json(command, {"type": "Polygon", "coordinates": [ring + [ring[0]]]})[0]["result"]
+                assert want["unit"] == "m"
             assert item["result"] == want, f"seed {SEED}, polygon {i}"
 
 
@@ -69,7 +73,12 @@ def test_geojson_multi_forms_and_holes(tmp_path):
     closed = [{"points": a, "end": "closed"}, {"points": hole, "end": "closed"}, {"points": a, "end": "closed"}]
     opened = [{"points": line}, {"points": line[::-1]}, {"points": line}]
     for item, doc in zip(got, closed + opened):
-        assert item["result"] == run_json("length", doc)
+        # Issue 29: GeoJSON lengths are geodesic metres: the same curve alone as GeoJSON.
+        pts = doc["points"]
+        alone = ({"type": "Polygon", "coordinates": [pts + [pts[0]]]} if doc.get("end") == "closed"
+                 else {"type": "LineString", "coordinates": pts})
+        assert item["result"]["unit"] == "m"
+        assert item["result"] == run_json("length", alone)[0]["result"]
     assert got[0]["properties"] == {"k": 1} and "properties" not in got[3]
 
 
