@@ -295,3 +295,66 @@ def tessellate_many(
     workers: Union[int, None] = None,
 ) -> list[Polyline]:
     """Tessellation of every curve, in one call on many threads (GIL released)."""
+
+# The decision (issue 27, crspline/_decision.py): the report's "decision"
+# object (docs/report.md), and clearance.
+Verdict = Literal["simple", "crosses", "touches"]
+
+class ProvedCrossing(TypedDict):
+    curves: list[int]
+    segments: list[int]
+    u: list[_Pair]  # [[lo, hi] in segments[0], [lo, hi] in segments[1]]
+    point: list[float]
+
+class Contact(TypedDict):
+    curves: list[int]
+    segments: list[int]
+    u: _Pair
+    distance: float
+    budget_exhausted: bool
+
+class DecidedPair(TypedDict):
+    curves: list[int]
+    segments: list[int]
+    arguments: list[str]  # 'paper_rule', 'separation', 'joint', 'monotone', 'crossing', 'unresolved'
+
+class Decision(TypedDict):
+    verdict: Verdict
+    fast_path: bool
+    floor: float
+    crossings: list[ProvedCrossing]
+    touches: list[Contact]
+    pairs: list[DecidedPair]
+
+class Clearance(TypedDict):
+    distance: float
+    lower_bound: float
+    curves: tuple[int, int]
+    segments: tuple[int, int]
+    u: tuple[float, float]
+    points: _Array
+    exhausted: bool
+
+def decide(
+    curve: CatmullRom, *, fast_path: bool = True, budget: Union[int, None] = None,
+    pair_budget: Union[int, None] = None, record_pairs: bool = True,
+) -> Decision:
+    """Does the plane curve cross itself? (proved: docs/analysis.md)"""
+
+def decide_pair(
+    a: CatmullRom, b: CatmullRom, *, budget: Union[int, None] = None, pair_budget: Union[int, None] = None,
+    record_pairs: bool = True,
+) -> Decision:
+    """Do two plane curves cross each other? (curve 0 is a, 1 is b)"""
+
+def decide_set(
+    curves: Sequence[CatmullRom], *, self: bool = False, budget: Union[int, None] = None,
+    pair_budget: Union[int, None] = None, record_pairs: bool = True,
+) -> Decision:
+    """Do any two curves of the set cross? (self: each curve's own crossings too; GIL released)"""
+
+def clearance(
+    curve_or_a: CatmullRom, b: Union[CatmullRom, None] = None, *, accuracy: float = 0.0,
+    budget: Union[int, None] = None,
+) -> Clearance:
+    """The least distance between non-adjacent segments of a curve, or between two curves (any dimension)."""

@@ -4,8 +4,8 @@ set cross? And the clearance: the least distance between non-adjacent parts
 of a curve, or between two curves, in any dimension.
 
 The names are the npm package's in snake_case (decide, decidePair,
-decideSet, clearance). The decision is a dict in the report's shape
-(docs/report.md, the ``"decision"`` object)::
+decideSet, clearance). The decision is a dict in the shape the core's
+``report_decision`` writes (crspline/decision.hpp)::
 
     {'verdict': 'simple' | 'crosses' | 'touches', 'fast_path': bool,
      'floor': float,
