@@ -29,6 +29,7 @@
 #include "json_input.hpp"
 #include "options.hpp"
 #include "plot.hpp"
+#include "rotation_input.hpp"
 
 namespace {
 
@@ -444,6 +445,8 @@ int main(int argc, char** argv) {
             const auto notes = [&] {
                 for (const std::string& note : doc.notes) std::cerr << "crspline: note: " << note << '\n';
             };
+            if (format == "svg" && is_rotation_document(doc))  // issue 28: no figure of a rotation file
+                throw input_error("--format svg: a rotation curve file gives json, csv or tsv");
             if (chosen->stream && format != "svg") {
                 // Written as computed: -o FILE through a temporary file renamed
                 // when complete; stdout after its first MiB (output_stream.hpp).

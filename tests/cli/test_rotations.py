@@ -334,7 +334,7 @@ def test_sample_errors_and_file_name(tmp_path):
     assert p.returncode == 2 and p.stderr.startswith(f"crspline: {path}: rotations.quaternions[1]: not a unit"), p.stderr
     p = run(["eval", "-", "--alpha", "0.5"], json.dumps(dict(base, t=[0])))
     assert p.returncode == 2 and "--alpha: not used with a rotation curve file" in p.stderr, p.stderr
-    for command, fmt in (("sample", "geojson"), ("sample", "svg-path")):
+    for command, fmt in (("sample", "geojson"), ("sample", "svg-path"), ("eval", "svg"), ("sample", "svg")):
         p = run([command, "-", "--format", fmt], json.dumps(dict(base, count=3)))
         assert p.returncode == 2 and f"--format {fmt}: a rotation curve file gives json, csv or tsv" in p.stderr, p.stderr
     p = run(["eval", "-", "--t", "0,1.5", "--derivatives", "1"], json.dumps(base))
