@@ -13,6 +13,7 @@
 #include <crspline/analysis.hpp>
 #include <crspline/arc_length.hpp>
 #include <crspline/certify.hpp>
+#include <crspline/decision.hpp>
 #include <crspline/intersections.hpp>
 
 #include "dispatch.hpp"
@@ -49,6 +50,7 @@ int run_demo(const cli_options& o) {
         double alpha, length, max_distance;
         std::size_t cusps, meets;
         std::string certified;
+        std::string verdict;  // the proved decision (decision.hpp), for every alpha
     };
     std::vector<row> rows;
     const std::pair<const char*, double> kinds[] = {{"uniform", 0.0}, {"centripetal", 0.5}, {"chordal", 1.0}};
@@ -60,7 +62,7 @@ int run_demo(const cli_options& o) {
         f.curves.push_back(std::move(c));
 
         const catmull_rom<2, double> curve = make_curve<2>(s);
-        row r{kinds[i].first, kinds[i].second, arc_length_table<2, double>(curve).total(), 0, 0, 0, ""};
+        row r{kinds[i].first, kinds[i].second, arc_length_table<2, double>(curve).total(), 0, 0, 0, "", ""};
         for (const auto& a : analyze(curve)) {
             r.cusps += a.cusp_u.size();
             r.max_distance = std::max(r.max_distance, a.max_chord_distance);
@@ -70,6 +72,7 @@ int run_demo(const cli_options& o) {
         opt.search_on_failure = false;
         const auto cert = certify_intersection_free(curve, opt);
         r.certified = cert.certified ? "certified" : std::string("no (") + to_string(cert.failed_rule) + ")";
+        r.verdict = to_string(decide(curve).result);
         rows.push_back(r);
     }
 
@@ -86,16 +89,18 @@ int run_demo(const cli_options& o) {
     std::string table = "Catmull-Rom curves through the 8-point demo polygon (figure: " + svg_path + ", " + png_path +
                         ")\n\n";
     char line[256];
-    std::snprintf(line, sizeof line, "%-12s %5s %11s %6s %19s %24s  %s\n", "curve", "alpha", "arc length", "cusps",
-                  "self-intersections", "max distance to polygon", "intersection-free");
+    std::snprintf(line, sizeof line, "%-12s %5s %11s %6s %19s %24s  %-20s  %s\n", "curve", "alpha", "arc length",
+                  "cusps", "self-intersections", "max distance to polygon", "intersection-free", "verdict");
     table += line;
     for (const auto& r : rows) {
-        std::snprintf(line, sizeof line, "%-12s %5.1f %11.4f %6zu %19zu %24.4f  %s\n", r.name.c_str(), r.alpha, r.length,
-                      r.cusps, r.meets, r.max_distance, r.certified.c_str());
+        std::snprintf(line, sizeof line, "%-12s %5.1f %11.4f %6zu %19zu %24.4f  %-20s  %s\n", r.name.c_str(), r.alpha,
+                      r.length, r.cusps, r.meets, r.max_distance, r.certified.c_str(), r.verdict.c_str());
         table += line;
     }
     table += "\nmax distance to polygon: the largest distance of a segment to its own polygon edge.\n"
-             "intersection-free: the paper's Section 5 certificate (centripetal curves only).\n";
+             "intersection-free: the paper's Section 5 certificate (centripetal curves only).\n"
+             "verdict: the proved decision on crossings for every alpha: simple, crosses or touches\n"
+             "(docs/analysis.md).\n";
     write_output("-", table);
     return 0;
 }
