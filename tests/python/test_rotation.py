@@ -149,9 +149,9 @@ def test_counts_of_scipy_file():
 def test_against_scipy_itself(seed):
     """SciPy's own RotationSpline (10 fixed-point rounds) and crspline's
     (Newton to rounding) agree where SciPy's iteration converges (5 degree
-    steps: within 1e-9 of the rate scale); with 150-170 degree steps SciPy's
-    acceleration jumps at the keys are larger than crspline's, which stay at
-    rounding (<= 1e-9 of the scale). Slerp agrees with SciPy's to 1e-13."""
+    steps: within 1e-9 of the rate scale); with 150-170 degree steps crspline's
+    exact acceleration jumps at the keys stay at rounding (<= 1e-9 of the
+    scale) and both curves pass through the keys. Slerp agrees with SciPy's to 1e-13."""
     rng = np.random.default_rng(seed)
     n = 15
     times = np.cumsum(rng.uniform(0.3, 2.0, n))
@@ -167,11 +167,6 @@ def test_against_scipy_itself(seed):
         t = np.sort(rng.uniform(times[0], times[-1], 200))
         scale = max(1, np.abs(ours(t, 1)).max())
         accel_scale = max(1, np.abs(ours(t, 2)).max())
-        eps = 1e-7 * (times[-1] - times[0])
-
-        def fd_jumps(spline):  # the jump seen by central points eps apart (includes 2 eps |jerk|)
-            k = times[1:-1]
-            return np.abs(spline(k + eps, 2) - spline(k - eps, 2)).max()
 
         seg = np.arange(1, n - 1)
         exact = np.abs(ours._c.evaluate_on(seg - 1, times[1:-1], 2, "body")[2] -
@@ -181,7 +176,16 @@ def test_against_scipy_itself(seed):
             assert np.abs(ours(t, 1) - theirs(t, 1)).max() <= 1e-9 * scale
             assert up_to_sign(ours(t).as_quat(), theirs(t).as_quat()).max() <= 1e-10
         else:
-            assert fd_jumps(theirs) > fd_jumps(ours)  # SciPy's 10 rounds leave a jump above the same floor
+            # Whether SciPy's 10 rounds leave an acceleration jump that a
+            # central difference sees above its own floor (2 eps |jerk|)
+            # depends on the draw (seed 2212460490: it does not), so it is not
+            # asserted here (docs/rotation.md's figure shows
+            # SciPy's jumps on a fixed case). Both curves still pass through
+            # the keys: 1e-12 is a few roundings of the key's quaternion
+            # through the rotation vector and back.
+            keys = rots.as_quat()
+            assert up_to_sign(ours(times).as_quat(), keys).max() <= 1e-12
+            assert up_to_sign(theirs(times).as_quat(), keys).max() <= 1e-12
         sl, their_sl = rotation.Slerp(times, rots), scipy_transform.Slerp(times, rots)
         assert up_to_sign(sl(t).as_quat(), their_sl(t).as_quat()).max() <= 1e-13
 
