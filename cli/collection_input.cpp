@@ -10,13 +10,14 @@
 #include <string_view>
 #include <utility>
 
+#include "json_input.hpp"
+
 namespace crspline::cli {
 
 using nlohmann::json;
 
 namespace {
 
-std::string index(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
 
 [[noreturn]] void fail(const input_text& in, const std::string& path, const std::string& what) {
     throw input_error(in.name + ": " + path + ": " + what);
@@ -37,17 +38,17 @@ document curve_from_positions(const input_text& in, const json& positions, const
     p.path = path;
     for (std::size_t i = 0; i < positions.size(); ++i) {
         const json& q = positions[i];
-        const std::string at = index(path, i);
+        const std::string at = json_index(path, i);
         if (!q.is_array() || q.empty() || q.size() > max_runtime_dimension)
             fail(in, at, "expected a position of 1 to " + std::to_string(max_runtime_dimension) + " numbers, got " +
                              shown(q));
         if (i == 0) p.dimension = q.size();
         if (q.size() != p.dimension)
-            fail(in, at, "expected " + std::to_string(p.dimension) + " coordinates like " + index(path, 0) + ", got " +
+            fail(in, at, "expected " + std::to_string(p.dimension) + " coordinates like " + json_index(path, 0) + ", got " +
                              std::to_string(q.size()));
         for (std::size_t k = 0; k < q.size(); ++k) {
             if (!q[k].is_number() || !std::isfinite(q[k].get<double>()))
-                fail(in, index(at, k), "expected a finite number, got " + shown(q[k]));
+                fail(in, json_index(at, k), "expected a finite number, got " + shown(q[k]));
             p.coords.push_back(q[k].get<double>());
         }
     }
@@ -79,7 +80,7 @@ void geometry_curves(const input_text& in, const json& g, const std::string& pat
         const json& gs = g.contains("geometries") ? g["geometries"] : json();
         if (!gs.is_array()) fail(in, path + ".geometries", "expected an array of geometries, got " + shown(gs));
         for (std::size_t i = 0; i < gs.size(); ++i)
-            geometry_curves(in, gs[i], index(path + ".geometries", i), pointer + "/geometries/" + std::to_string(i),
+            geometry_curves(in, gs[i], json_index(path + ".geometries", i), pointer + "/geometries/" + std::to_string(i),
                             id + " geometry " + std::to_string(i), feature_id, properties, out);
         return;
     }
@@ -97,18 +98,18 @@ void geometry_curves(const input_text& in, const json& g, const std::string& pat
         out.push_back(curve_from_positions(in, c, cpath, cptr, id, feature_id, properties, false));
     } else if (type == "MultiLineString") {
         for (std::size_t i = 0; i < list(c, cpath).size(); ++i)
-            out.push_back(curve_from_positions(in, c[i], index(cpath, i), item(cptr, i), part(id, "part", i, c.size()),
+            out.push_back(curve_from_positions(in, c[i], json_index(cpath, i), item(cptr, i), part(id, "part", i, c.size()),
                                                feature_id, properties, false));
     } else if (type == "Polygon") {
         for (std::size_t r = 0; r < list(c, cpath).size(); ++r)
-            out.push_back(curve_from_positions(in, c[r], index(cpath, r), item(cptr, r), part(id, "ring", r, c.size()),
+            out.push_back(curve_from_positions(in, c[r], json_index(cpath, r), item(cptr, r), part(id, "ring", r, c.size()),
                                                feature_id, properties, true));
     } else if (type == "MultiPolygon") {
         for (std::size_t p = 0; p < list(c, cpath).size(); ++p) {
-            const std::string ppath = index(cpath, p);
+            const std::string ppath = json_index(cpath, p);
             const json& rings = list(c[p], ppath);
             for (std::size_t r = 0; r < rings.size(); ++r)
-                out.push_back(curve_from_positions(in, rings[r], index(ppath, r), item(item(cptr, p), r),
+                out.push_back(curve_from_positions(in, rings[r], json_index(ppath, r), item(item(cptr, p), r),
                                                    part(part(id, "polygon", p, c.size()), "ring", r, rings.size()),
                                                    feature_id, properties, true));
         }
@@ -157,7 +158,7 @@ std::optional<std::vector<document>> json_curves(const document& parsed, const i
         // A list of curve objects: each is the one-curve contract, plus an
         // optional "id" and "properties" carried to the output.
         for (std::size_t i = 0; i < root.size(); ++i) {
-            const std::string path = index("", i);
+            const std::string path = json_index("", i);
             if (!root[i].is_object())
                 fail(in, path, "expected a curve object {\"points\": ...}, got " + shown(root[i]));
             document d;
@@ -186,7 +187,7 @@ std::optional<std::vector<document>> json_curves(const document& parsed, const i
         const json& fs = root.contains("features") ? root["features"] : json();
         if (!fs.is_array()) fail(in, "features", "expected an array of Features, got " + shown(fs));
         for (std::size_t i = 0; i < fs.size(); ++i)
-            feature_curves(in, fs[i], index("features", i), "/features/" + std::to_string(i), out);
+            feature_curves(in, fs[i], json_index("features", i), "/features/" + std::to_string(i), out);
     } else if (type == "Feature") {
         feature_curves(in, root, "feature", "", out);
     } else {

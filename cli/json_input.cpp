@@ -18,17 +18,17 @@
 namespace crspline::cli {
 
 using nlohmann::json;
-namespace {
 
-// The offending value as it appears in JSON, shortened when long.
-std::string describe(const json& v) {
+std::string describe_json(const json& v) {
     if (v.is_number()) return format_number(v.get<double>());
     std::string s = v.dump(-1, ' ', false, json::error_handler_t::replace);
     if (s.size() > 40) s = s.substr(0, 37) + "...";
     return s;
 }
 
-std::string index(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+std::string json_index(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+namespace {
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) { throw input_error(path + ": " + what); }
 
@@ -36,19 +36,19 @@ std::string index(const std::string& path, std::size_t i) { return path + "[" + 
 // JSON parser already refuses literals beyond the double range; what the
 // value may be is the core's validate()).
 double number(const json& v, const std::string& path) {
-    if (!v.is_number()) fail(path, "expected a finite number, got " + describe(v));
+    if (!v.is_number()) fail(path, "expected a finite number, got " + describe_json(v));
     return v.get<double>();
 }
 
 // A value the subcommand reads itself (t, s, accuracy...): a finite number.
 double finite_number(const json& v, const std::string& path) {
     const double x = number(v, path);
-    if (!std::isfinite(x)) fail(path, "expected a finite number, got " + describe(v));
+    if (!std::isfinite(x)) fail(path, "expected a finite number, got " + describe_json(v));
     return x;
 }
 
 const json& array(const json& v, const std::string& path, const char* of_what) {
-    if (!v.is_array()) fail(path, std::string("expected an array of ") + of_what + ", got " + describe(v));
+    if (!v.is_array()) fail(path, std::string("expected an array of ") + of_what + ", got " + describe_json(v));
     return v;
 }
 
@@ -57,7 +57,7 @@ std::vector<double> list_of(const json& v, const std::string& path, double (*one
     array(v, path, "numbers");
     std::vector<double> out;
     out.reserve(v.size());
-    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(one(v[i], index(path, i)));
+    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(one(v[i], json_index(path, i)));
     return out;
 }
 std::vector<double> finite_numbers(const json& v, const std::string& path) { return list_of(v, path, finite_number); }
@@ -91,7 +91,7 @@ void check_fields(const json& root, std::string_view command, std::initializer_l
 // The name and the tangent's length and values are the core's to judge.
 crspline::end_spec parse_end(const json& v, const std::string& path, const char* which) {
     if (v.is_string()) return end_from_name(which, v.get_ref<const std::string&>());
-    if (!v.is_array()) fail(path, "expected \"natural\", \"reflect\" or a tangent [dx/dt, ...], got " + describe(v));
+    if (!v.is_array()) fail(path, "expected \"natural\", \"reflect\" or a tangent [dx/dt, ...], got " + describe_json(v));
     return {crspline::end_spec::kind::tangent, numbers(v, path)};
 }
 
@@ -105,7 +105,7 @@ void read_ends(const json& root, crspline::curve_spec& c) {
     const json* closed = root.contains("closed") ? &root["closed"] : nullptr;
     const json* start = root.contains("start") ? &root["start"] : nullptr;
     const json* end = root.contains("end") ? &root["end"] : nullptr;
-    if (closed && !closed->is_boolean()) fail("closed", "expected true or false, got " + describe(*closed));
+    if (closed && !closed->is_boolean()) fail("closed", "expected true or false, got " + describe_json(*closed));
     const bool is_closed = closed && closed->get<bool>();
     if (end && end->is_string() && *end == "closed") {  // the compact closed curve
         if (closed && !is_closed) fail("end", "\"end\": \"closed\" contradicts \"closed\": false");
@@ -131,7 +131,7 @@ void read_ends(const json& root, crspline::curve_spec& c) {
     }
     if (end && !end->is_string() && !end->is_array())
         fail("end", "expected \"natural\", \"reflect\", a tangent [dx/dt, ...], \"closed\" or {\"start\": ..., "
-                    "\"end\": ...}, got " + describe(*end));
+                    "\"end\": ...}, got " + describe_json(*end));
     if (start) c.start = parse_end(*start, "start", "start");
     if (end && end->is_string() && !start && !closed) {
         set_ends(c, end->get_ref<const std::string&>());  // the compact name for both ends
@@ -149,7 +149,7 @@ std::vector<double> parse_kb_values(const json& v, const std::string& path, std:
     std::vector<double> out(v.size(), 0.0);
     for (std::size_t i = 0; i < v.size(); ++i) {
         if (v[i].is_null()) out[i] = !closed && (i == 0 || i + 1 == n) ? 0.0 : std::nan("");
-        else out[i] = number(v[i], index(path, i));
+        else out[i] = number(v[i], json_index(path, i));
     }
     return out;
 }
@@ -168,11 +168,11 @@ std::vector<double> tangent_rows(const json& v, const std::string& path, std::si
     std::vector<double> flat;
     flat.reserve(n * dim);
     for (std::size_t i = 0; i < n; ++i) {
-        const std::string at = index(path, i);
+        const std::string at = json_index(path, i);
         const json& r = array(rows[i], at, "coordinates");
         if (r.size() != dim)
             fail(at, "expected " + std::to_string(dim) + " coordinates like points[0], got " + std::to_string(r.size()));
-        for (std::size_t k = 0; k < dim; ++k) flat.push_back(finite_number(r[k], index(at, k)));
+        for (std::size_t k = 0; k < dim; ++k) flat.push_back(finite_number(r[k], json_index(at, k)));
     }
     return flat;
 }
@@ -197,7 +197,7 @@ void parse_tangents(const json& root, const cli_options* f, curve_spec& c) {
     const json& t = root["tangents"];
     if (t.is_object()) {
         if (!t.contains("in") || !t.contains("out") || t.size() != 2)
-            fail("tangents", "expected {\"in\": [...], \"out\": [...]} or a list of tangents, got " + describe(t));
+            fail("tangents", "expected {\"in\": [...], \"out\": [...]} or a list of tangents, got " + describe_json(t));
         c.tangents_in = tangent_rows(t["in"], "tangents.in", n, c.dimension);
         c.tangents_out = tangent_rows(t["out"], "tangents.out", n, c.dimension);
     } else {
@@ -277,7 +277,7 @@ bool drop_closing_repeat(curve_spec& c) {
 
 std::string point_location(const curve_spec& c, std::size_t i) {
     if (i < c.lines.size()) return "line " + std::to_string(c.lines[i]) + " (point " + std::to_string(i + 1) + ")";
-    return index(c.points_path, i);
+    return json_index(c.points_path, i);
 }
 
 std::string describe_spec_error(const crspline::spec_error& e, const curve_spec& c) {
@@ -308,7 +308,7 @@ namespace {
 curve_spec read_curve(const document& doc, std::string_view command, std::initializer_list<std::string_view> extra) {
     const json& root = doc.root;
     const cli_options* f = doc.flags;
-    if (!root.is_object()) throw input_error("expected a JSON object {\"points\": ...}, got " + describe(root));
+    if (!root.is_object()) throw input_error("expected a JSON object {\"points\": ...}, got " + describe_json(root));
     // Unknown fields first: a typo is the likeliest cause of any later error.
     check_fields(root, command, extra);
     curve_spec c;
@@ -328,13 +328,13 @@ curve_spec read_curve(const document& doc, std::string_view command, std::initia
     static const json no_points = json::array();  // flat points were read already
     const json& pts = doc.points ? no_points : array(root["points"], "points", "points");
     for (std::size_t i = 0; i < pts.size(); ++i) {
-        const std::string at = index("points", i);
+        const std::string at = json_index("points", i);
         const json& p = array(pts[i], at, "coordinates");
         if (i > 0 && p.size() != c.dimension)
             fail(at, "expected " + std::to_string(c.dimension) + " coordinates like points[0], got " +
                          std::to_string(p.size()));
         c.dimension = p.size();
-        for (std::size_t k = 0; k < p.size(); ++k) c.points.push_back(number(p[k], index(at, k)));
+        for (std::size_t k = 0; k < p.size(); ++k) c.points.push_back(number(p[k], json_index(at, k)));
     }
     // No points at all: no dimension either; any will do for the core to
     // say that two points are needed.
@@ -405,7 +405,7 @@ curve_spec read_curve(const document& doc, std::string_view command, std::initia
         if (root.contains("kb")) {
             const json& kb = root["kb"];
             if (!kb.is_object())
-                fail("kb", "expected {\"tension\": [...], \"continuity\": [...], \"bias\": [...]}, got " + describe(kb));
+                fail("kb", "expected {\"tension\": [...], \"continuity\": [...], \"bias\": [...]}, got " + describe_json(kb));
             for (const auto& [key, value] : kb.items()) {
                 const std::string path = "kb." + key;
                 if (key == "tension") c.kb.tension = parse_kb_values(value, path, n, c.closed);
@@ -430,7 +430,7 @@ curve_spec read_curve(const document& doc, std::string_view command, std::initia
             c.strict = true;
         } else if (root.contains("strict")) {
             const json& s = root["strict"];
-            if (!s.is_boolean()) fail("strict", "expected true or false, got " + describe(s));
+            if (!s.is_boolean()) fail("strict", "expected true or false, got " + describe_json(s));
             c.strict = s.get<bool>();
         }
 
@@ -452,7 +452,7 @@ double parse_accuracy(const document& doc) {
     const auto a = field(doc.root, "accuracy", doc.flags, &cli_options::accuracy, "--accuracy");
     if (!a) return 1e-12;
     const double x = finite_number(a->value, a->name);
-    if (!(x > 0 && x < 1)) fail(a->name, "expected a relative accuracy in (0, 1), got " + describe(a->value));
+    if (!(x > 0 && x < 1)) fail(a->name, "expected a relative accuracy in (0, 1), got " + describe_json(a->value));
     if (const std::string why = accuracy_floor_problem(x); !why.empty()) fail(a->name, why);
     return x;
 }
@@ -516,7 +516,7 @@ eval_spec read_eval(const document& doc) {
     }
     if (f && f->knots) e.knots = true;
     else if (root.contains("knots")) {
-        if (!root["knots"].is_boolean()) fail("knots", "expected true or false, got " + describe(root["knots"]));
+        if (!root["knots"].is_boolean()) fail("knots", "expected true or false, got " + describe_json(root["knots"]));
         e.knots = root["knots"].get<bool>();
     }
     const auto d_field = field(root, "derivatives", f, &cli_options::derivatives, "--derivatives", true);
@@ -528,14 +528,14 @@ eval_spec read_eval(const document& doc) {
     const json& d = array(d_field->value, name, "derivative orders");
     if (d.empty()) fail(name, "expected at least one order (0, 1, 2 or 3), got []");
     for (std::size_t i = 0; i < d.size(); ++i) {
-        const std::string at = index(name, i);
+        const std::string at = json_index(name, i);
         const double x = d[i].is_number() ? d[i].get<double>() : -1.0;
-        if (!(x == 0 || x == 1 || x == 2 || x == 3)) fail(at, "expected 0, 1, 2 or 3, got " + describe(d[i]));
+        if (!(x == 0 || x == 1 || x == 2 || x == 3)) fail(at, "expected 0, 1, 2 or 3, got " + describe_json(d[i]));
         const int order = int(x);
         const auto seen = std::find(e.derivatives.begin(), e.derivatives.end(), order);
         if (seen != e.derivatives.end())
             fail(at, "order " + std::to_string(order) + " is already requested by " +
-                         index(name, std::size_t(seen - e.derivatives.begin())));
+                         json_index(name, std::size_t(seen - e.derivatives.begin())));
         e.derivatives.push_back(order);
     }
     return e;
@@ -576,19 +576,19 @@ sample_spec read_sample(const document& doc) {
     if (count) {
         const json& c = count->value;
         const double n = c.is_number() ? c.get<double>() : -1.0;
-        if (!(n >= 2 && n <= 1e9 && n == std::floor(n))) fail(count->name, "expected an integer >= 2, got " + describe(c));
+        if (!(n >= 2 && n <= 1e9 && n == std::floor(n))) fail(count->name, "expected an integer >= 2, got " + describe_json(c));
         s.count = std::size_t(n);
         s.by = sample_spec::kind::count_t;
         if (spacing) {
             const json& sp = spacing->value;
             if (sp == "t") s.by = sample_spec::kind::count_t;
             else if (sp == "arc_length") s.by = sample_spec::kind::count_arc_length;
-            else fail(spacing->name, "expected \"t\" or \"arc_length\", got " + describe(sp));
+            else fail(spacing->name, "expected \"t\" or \"arc_length\", got " + describe_json(sp));
         }
     } else {
         if (spacing) fail(spacing->name, std::string("only used with ") + (spacing->flag ? "--count" : "'count'"));
         s.tolerance = finite_number(tolerance->value, tolerance->name);
-        if (!(s.tolerance > 0)) fail(tolerance->name, "expected a distance > 0, got " + describe(tolerance->value));
+        if (!(s.tolerance > 0)) fail(tolerance->name, "expected a distance > 0, got " + describe_json(tolerance->value));
         // Below what the coordinates resolve, tessellation would subdivide
         // without end (resolution.hpp): say the smallest meaningful value.
         double largest = 0;

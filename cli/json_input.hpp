@@ -61,6 +61,13 @@ std::string point_location(const curve_spec& c, std::size_t i);
 /// The core's spec_error about the description rendered for the command
 /// line: the core's words after the file, a point's location as the user
 /// finds it (line, or JSON path), or the flag that set the field.
+/// A JSON value as an error message shows it: a number as format_number
+/// writes it, anything else as JSON text cut at 40 characters.
+std::string describe_json(const nlohmann::json& v);
+
+/// The path of element i of the array at `path`: "points[3]".
+std::string json_index(const std::string& path, std::size_t i);
+
 std::string describe_spec_error(const crspline::spec_error& e, const curve_spec& c);
 
 /// `crspline eval`: the curve, the parameters (t, or arc lengths s) and the

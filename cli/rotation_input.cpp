@@ -7,6 +7,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "json_input.hpp"
 #include "options.hpp"
 
 namespace crspline::cli {
@@ -15,24 +16,15 @@ using nlohmann::json;
 
 namespace {
 
-std::string describe(const json& v) {
-    if (v.is_number()) return format_number(v.get<double>());
-    std::string s = v.dump(-1, ' ', false, json::error_handler_t::replace);
-    if (s.size() > 40) s = s.substr(0, 37) + "...";
-    return s;
-}
-
-std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
-
 [[noreturn]] void fail(const std::string& path, const std::string& what) { throw input_error(path + ": " + what); }
 
 double finite(const json& v, const std::string& path) {
-    if (!v.is_number() || !std::isfinite(v.get<double>())) fail(path, "expected a finite number, got " + describe(v));
+    if (!v.is_number() || !std::isfinite(v.get<double>())) fail(path, "expected a finite number, got " + describe_json(v));
     return v.get<double>();
 }
 
 const json& list(const json& v, const std::string& path, const char* of_what) {
-    if (!v.is_array()) fail(path, std::string("expected an array of ") + of_what + ", got " + describe(v));
+    if (!v.is_array()) fail(path, std::string("expected an array of ") + of_what + ", got " + describe_json(v));
     return v;
 }
 
@@ -40,28 +32,28 @@ const json& list(const json& v, const std::string& path, const char* of_what) {
 template <std::size_t N>
 std::array<double, N> row(const json& v, const std::string& path) {
     if (!v.is_array() || v.size() != N)
-        fail(path, "expected an array of " + std::to_string(N) + " numbers, got " + describe(v));
+        fail(path, "expected an array of " + std::to_string(N) + " numbers, got " + describe_json(v));
     std::array<double, N> r{};
-    for (std::size_t k = 0; k < N; ++k) r[k] = finite(v[k], at(path, k));
+    for (std::size_t k = 0; k < N; ++k) r[k] = finite(v[k], json_index(path, k));
     return r;
 }
 
 bool boolean(const json& root, const char* key) {
     if (!root.contains(key)) return false;
-    if (!root[key].is_boolean()) fail(key, "expected true or false, got " + describe(root[key]));
+    if (!root[key].is_boolean()) fail(key, "expected true or false, got " + describe_json(root[key]));
     return root[key].get<bool>();
 }
 
 rotation::frame parse_frame(const json& v, const std::string& path) {
     if (v == "world") return rotation::frame::world;
     if (v == "body") return rotation::frame::body;
-    fail(path, "expected \"world\" or \"body\", got " + describe(v));
+    fail(path, "expected \"world\" or \"body\", got " + describe_json(v));
 }
 
 // degrees: false (radians) by default.
 double angle_unit(const json& obj, const std::string& path) {
     if (!obj.contains("degrees")) return 1.0;
-    if (!obj["degrees"].is_boolean()) fail(path + ".degrees", "expected true or false, got " + describe(obj["degrees"]));
+    if (!obj["degrees"].is_boolean()) fail(path + ".degrees", "expected true or false, got " + describe_json(obj["degrees"]));
     return obj["degrees"].get<bool>() ? std::numbers::pi / 180 : 1.0;
 }
 
@@ -70,7 +62,7 @@ void read_keys(const json& r, rotation_file& f) {
     using Q = rotation::quaternion<double>;
     if (!r.is_object())
         fail("rotations", "expected an object with one of \"quaternions\", \"rotation_vectors\", \"axis_angle\", "
-                          "\"euler\", \"matrices\", got " + describe(r));
+                          "\"euler\", \"matrices\", got " + describe_json(r));
     static const char* const forms[] = {"quaternions", "rotation_vectors", "axis_angle", "euler", "matrices"};
     std::vector<std::string> found;
     for (const auto& item : r.items()) {
@@ -93,13 +85,13 @@ void read_keys(const json& r, rotation_file& f) {
     if (form == "euler") {
         const json& e = r[form];
         if (!e.is_object()) fail(path, "expected {\"convention\": \"xyz\", \"angles\": [[a, b, c], ...], \"degrees\": "
-                                       "false}, got " + describe(e));
+                                       "false}, got " + describe_json(e));
         for (const auto& item : e.items())
             if (item.key() != "convention" && item.key() != "angles" && item.key() != "degrees")
                 fail(path, "unknown field '" + item.key() + "' (expected convention, angles, degrees)");
         if (!e.contains("convention")) fail(path, "missing field 'convention' (e.g. \"xyz\" extrinsic, \"ZYX\" intrinsic)");
         if (!e.contains("angles")) fail(path, "missing field 'angles' (an array of [a, b, c])");
-        if (!e["convention"].is_string()) fail(path + ".convention", "expected a string like \"xyz\", got " + describe(e["convention"]));
+        if (!e["convention"].is_string()) fail(path + ".convention", "expected a string like \"xyz\", got " + describe_json(e["convention"]));
         rotation::euler_convention c;
         try {
             c = rotation::euler_convention::parse(e["convention"].get<std::string>());
@@ -110,7 +102,7 @@ void read_keys(const json& r, rotation_file& f) {
         const json& a = list(e["angles"], path + ".angles", "[a, b, c] angles");
         f.keys_path = path + ".angles";
         for (std::size_t i = 0; i < a.size(); ++i) {
-            std::array<double, 3> x = row<3>(a[i], at(path + ".angles", i));
+            std::array<double, 3> x = row<3>(a[i], json_index(path + ".angles", i));
             for (double& v : x) v *= unit;
             f.keys.push_back(rotation::from_euler(c, x));
         }
@@ -122,7 +114,7 @@ void read_keys(const json& r, rotation_file& f) {
                                                                : "3x3 matrices");
     const double unit = angle_unit(r, "rotations");
     for (std::size_t i = 0; i < a.size(); ++i) {
-        const std::string p = at(path, i);
+        const std::string p = json_index(path, i);
         if (form == "quaternions") {
             const auto q = row<4>(a[i], p);
             const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
@@ -138,9 +130,9 @@ void read_keys(const json& r, rotation_file& f) {
             if (!(v[0] != 0 || v[1] != 0 || v[2] != 0)) fail(p, "the axis is zero");
             f.keys.push_back(rotation::from_axis_angle(vec<3, double>{{v[0], v[1], v[2]}}, v[3] * unit));
         } else {
-            if (!a[i].is_array() || a[i].size() != 3) fail(p, "expected a 3x3 matrix (3 rows of 3 numbers), got " + describe(a[i]));
+            if (!a[i].is_array() || a[i].size() != 3) fail(p, "expected a 3x3 matrix (3 rows of 3 numbers), got " + describe_json(a[i]));
             rotation::matrix3<double> m{};
-            for (std::size_t k = 0; k < 3; ++k) m[k] = row<3>(a[i][k], at(p, k));
+            for (std::size_t k = 0; k < 3; ++k) m[k] = row<3>(a[i][k], json_index(p, k));
             try {
                 f.keys.push_back(rotation::from_matrix(m));
             } catch (const crspline::invalid_input& x) {
@@ -181,7 +173,7 @@ void read_end(const json& root, const char* key, rotation_file& f) {
         return;
     }
     fail(key, std::string("expected ") + (c2 ? "\"scipy\", \"natural\"" : "\"natural\", \"natural_splines\"") +
-                  " or {\"angular_velocity\": [x, y, z], \"frame\": \"world\"}, got " + describe(v));
+                  " or {\"angular_velocity\": [x, y, z], \"frame\": \"world\"}, got " + describe_json(v));
 }
 
 // Comma-separated numbers of a flag ("--t 0,0.5,1").
@@ -251,7 +243,7 @@ rotation_file read_rotation_file(const document& doc, const std::string& command
         } else {
             const json& p = list(root["points"], "points", "[x, y, z] points");
             for (std::size_t i = 0; i < p.size(); ++i) {
-                const auto x = row<3>(p[i], at("points", i));
+                const auto x = row<3>(p[i], json_index("points", i));
                 f.positions.push_back(vec<3, double>{{x[0], x[1], x[2]}});
             }
         }
@@ -269,16 +261,16 @@ rotation_file read_rotation_file(const document& doc, const std::string& command
                                              return k.get<std::string>() == s;
                                          }) != std::end(kinds);
         if (!ok)
-            fail("kind", "expected one of catmull_rom, kochanek_bartels, slerp, barry_goldman, squad, c2, got " + describe(k));
+            fail("kind", "expected one of catmull_rom, kochanek_bartels, slerp, barry_goldman, squad, c2, got " + describe_json(k));
         f.kind = k.get<std::string>();
         if (f.pose() && f.kind != "c2" && f.kind != "catmull_rom")
-            fail("kind", "a pose curve takes c2 or catmull_rom, got " + describe(k));
+            fail("kind", "a pose curve takes c2 or catmull_rom, got " + describe_json(k));
     }
     if (root.contains("alpha")) f.alpha = finite(root["alpha"], "alpha");
     if (root.contains("grid")) {
         const json& g = list(root["grid"], "grid", "numbers");
         std::vector<double> grid;
-        for (std::size_t i = 0; i < g.size(); ++i) grid.push_back(finite(g[i], at("grid", i)));
+        for (std::size_t i = 0; i < g.size(); ++i) grid.push_back(finite(g[i], json_index("grid", i)));
         f.grid = std::move(grid);
     }
     if (f.alpha && f.grid) fail("grid", "give 'alpha' or 'grid', not both");
@@ -300,7 +292,7 @@ rotation_file read_rotation_file(const document& doc, const std::string& command
             f.tcb.push_back({x[0], x[1], x[2]});
         } else {
             for (std::size_t i = 0; i < v.size(); ++i) {
-                const auto x = row<3>(v[i], at("tcb", i));
+                const auto x = row<3>(v[i], json_index("tcb", i));
                 f.tcb.push_back({x[0], x[1], x[2]});
             }
         }
@@ -323,11 +315,11 @@ rotation_file read_rotation_file(const document& doc, const std::string& command
         for (std::size_t i = 0; i < v.size(); ++i) {
             const double x = v[i].is_number() ? v[i].get<double>() : -1.0;
             if (!(x == 0 || x == 1 || (x == 2 && top == 2)))
-                fail(at(d->second, i), std::string(top == 2 ? "expected 0, 1 or 2" : "expected 0 or 1 (a pose curve gives position and "
+                fail(json_index(d->second, i), std::string(top == 2 ? "expected 0, 1 or 2" : "expected 0 or 1 (a pose curve gives position and "
                                                                                        "orientation, velocity and angular velocity)") +
-                                           ", got " + describe(v[i]));
+                                           ", got " + describe_json(v[i]));
             if (std::find(f.derivatives.begin(), f.derivatives.end(), int(x)) != f.derivatives.end())
-                fail(at(d->second, i), "order " + std::to_string(int(x)) + " is asked twice");
+                fail(json_index(d->second, i), "order " + std::to_string(int(x)) + " is asked twice");
             f.derivatives.push_back(int(x));
         }
     }
@@ -338,7 +330,7 @@ rotation_file read_rotation_file(const document& doc, const std::string& command
         } else {
             if (!root.contains("t")) fail("t", "missing (the parameter values to evaluate at)");
             const json& v = list(root["t"], "t", "numbers");
-            for (std::size_t i = 0; i < v.size(); ++i) f.t.push_back(finite(v[i], at("t", i)));
+            for (std::size_t i = 0; i < v.size(); ++i) f.t.push_back(finite(v[i], json_index("t", i)));
         }
     } else {
         json c;
@@ -353,7 +345,7 @@ rotation_file read_rotation_file(const document& doc, const std::string& command
             fail("count", "missing (the number of samples)");
         }
         const double n = c.is_number() ? c.get<double>() : -1.0;
-        if (!(n >= 2 && n <= 1e9 && n == std::floor(n))) fail(cname, "expected an integer >= 2, got " + describe(c));
+        if (!(n >= 2 && n <= 1e9 && n == std::floor(n))) fail(cname, "expected an integer >= 2, got " + describe_json(c));
         f.count = std::size_t(n);
         std::string sname = "spacing";
         json s;
@@ -365,7 +357,7 @@ rotation_file read_rotation_file(const document& doc, const std::string& command
         }
         if (!s.is_null()) {
             const bool ok = s == "t" || s == "angle" || (f.pose() && s == "arc_length");
-            if (!ok) fail(sname, std::string("expected \"t\", \"angle\"") + (f.pose() ? " or \"arc_length\"" : "") + ", got " + describe(s));
+            if (!ok) fail(sname, std::string("expected \"t\", \"angle\"") + (f.pose() ? " or \"arc_length\"" : "") + ", got " + describe_json(s));
             f.spacing = s.get<std::string>();
         }
     }

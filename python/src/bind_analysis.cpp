@@ -14,20 +14,6 @@ namespace crspline::python {
 
 namespace {
 
-// The report's values as Python objects (crspline::report_builder).
-struct py_builder {
-    using value = py::object;
-    value object() { return py::dict(); }
-    value array() { return py::list(); }
-    void set(value& o, std::string_view key, value v) { o[py::str(std::string(key))] = std::move(v); }
-    void push(value& a, value v) { a.cast<py::list>().append(std::move(v)); }
-    value number(double x) { return py::float_(x); }
-    value integer(std::size_t i) { return py::int_(i); }
-    value boolean(bool f) { return py::bool_(f); }
-    value string(std::string_view s) { return py::str(std::string(s)); }
-    value null() { return py::none(); }
-};
-
 // The coordinates to report: the caller's (a wide curve's input dimension),
 // or the curve's own.
 template <std::size_t D>

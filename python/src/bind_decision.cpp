@@ -16,20 +16,6 @@ namespace crspline::python {
 
 namespace {
 
-// report_decision's values as Python objects (as bind_analysis.cpp's).
-struct py_builder {
-    using value = py::object;
-    value object() { return py::dict(); }
-    value array() { return py::list(); }
-    void set(value& o, std::string_view key, value v) { o[py::str(std::string(key))] = std::move(v); }
-    void push(value& a, value v) { a.cast<py::list>().append(std::move(v)); }
-    value number(double x) { return py::float_(x); }
-    value integer(std::size_t i) { return py::int_(i); }
-    value boolean(bool f) { return py::bool_(f); }
-    value string(std::string_view s) { return py::str(std::string(s)); }
-    value null() { return py::none(); }
-};
-
 // A plane curve's segments as double Bézier points. A float curve's points
 // convert exactly, so the decision is about that curve as built.
 using bezier_segments = std::vector<std::array<vec<2>, 4>>;

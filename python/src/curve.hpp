@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <optional>
 #include <utility>
@@ -190,6 +191,22 @@ inline void apply_ends(curve_spec& s, const ends_arg& ends) {
     s.start = one(start, "start");
     s.end = one(end, "end");
 }
+
+// The report's values as Python objects (a crspline::report_builder, for
+// report() and report_decision()): dicts, lists, floats, ints, bools,
+// strings and None.
+struct py_builder {
+    using value = py::object;
+    value object() { return py::dict(); }
+    value array() { return py::list(); }
+    void set(value& o, std::string_view key, value v) { o[py::str(std::string(key))] = std::move(v); }
+    void push(value& a, value v) { a.cast<py::list>().append(std::move(v)); }
+    value number(double x) { return py::float_(x); }
+    value integer(std::size_t i) { return py::int_(i); }
+    value boolean(bool f) { return py::bool_(f); }
+    value string(std::string_view s) { return py::str(std::string(s)); }
+    value null() { return py::none(); }
+};
 
 // Each binding file adds its part of the module.
 void bind_curve(py::module_& m, py::class_<curve>& cls);

@@ -157,9 +157,7 @@ public:
 
     /// Batch: rotations at every t (sorted or not), into out.
     void evaluate(std::span<const T> t, std::span<quat> out) const {
-        if (out.size() != t.size())
-            throw invalid_input("output has " + std::to_string(out.size()) + " rotations for " +
-                                std::to_string(t.size()) + " parameter values");
+        check_batch_size(out.size(), t.size(), "rotations");
         for (std::size_t k = 0; k < t.size(); ++k) {
             check_t(t[k], k);
             out[k] = world_jet(locate(t[k]), t[k], 0).q;

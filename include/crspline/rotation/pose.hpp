@@ -70,9 +70,7 @@ public:
     /// Batch evaluation (any order of t; 10^6 samples are a plain loop: each
     /// sample costs one knot search, one cubic and one rotation jet).
     void evaluate(std::span<const T> t, std::span<pose_sample<T>> out, frame f = frame::world) const {
-        if (out.size() != t.size())
-            throw invalid_input("output has " + std::to_string(out.size()) + " poses for " + std::to_string(t.size()) +
-                                " parameter values");
+        check_batch_size(out.size(), t.size(), "poses");
         for (std::size_t k = 0; k < t.size(); ++k) {
             if (!(t[k] >= grid().front() && t[k] <= grid().back()))
                 throw out_of_domain("t = " + detail::num(double(t[k])) + " (index " + std::to_string(k) +

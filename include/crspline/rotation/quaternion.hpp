@@ -347,4 +347,13 @@ quaternion<T> checked_unit(const quaternion<T>& q, std::size_t index, T toleranc
     return {q.w / n, q.x / n, q.y / n, q.z / n};
 }
 
+/// A batch call's output must hold one result per parameter value: the
+/// sizes, in the words every rotation class uses ("output has 3 rotations
+/// for 4 parameter values").
+inline void check_batch_size(std::size_t out, std::size_t t, const char* what) {
+    if (out != t)
+        throw invalid_input("output has " + std::to_string(out) + " " + what + " for " + std::to_string(t) +
+                            " parameter values");
+}
+
 }  // namespace crspline::rotation
