@@ -85,6 +85,7 @@
 #include <span>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -212,7 +213,11 @@ struct decision_engine {
     std::vector<piece> pieces;
     std::vector<std::size_t> first_piece;  // per curve, and one past the end
     decision out;
-    std::map<std::array<std::size_t, 4>, unsigned> pair_flags;
+    bool record_pairs = true;
+    // The arguments of each pair of segments, as (key, flags) items that
+    // run() merges at the end (a pair decided in several piece pairs has
+    // several items).
+    std::vector<std::pair<std::array<std::size_t, 4>, unsigned>> pair_flags;
     std::map<std::array<std::size_t, 4>, std::size_t> contact_index;
     std::size_t budget = 0, pair_budget = 0;
     static constexpr std::size_t npos = std::size_t(-1);
@@ -222,6 +227,19 @@ struct decision_engine {
     std::vector<std::vector<std::size_t>> rank, next_seg, prev_seg;
     std::vector<std::size_t> nonpoint;
     std::vector<std::array<std::array<double, 2>, 2>> crossing_range;  // per crossing: curve ranges (rank + u)
+    // The proved crossings by the unit cells of curve coordinates that their
+    // ranges cover (cell floor(t), modulo the curve's length when closed),
+    // each filed under both its ranges: a crossing that overlaps a new one
+    // shares a cell with it, so finding it looks at a few crossings, not all.
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> crossing_cells;
+    template <class F>
+    void for_each_cell(std::size_t curve, double lo, double hi, F&& f) const {
+        const double n = double(nonpoint[curve]);
+        for (double c = std::floor(lo); c <= hi; c += 1) {
+            const double w = closed[curve] && n > 0 ? c - n * std::floor(c / n) : c;  // >= -1: a range starts at rank - 1 at least
+            f((std::uint64_t(curve) << 32) + std::uint64_t(std::int64_t(w) + 2));
+        }
+    }
 
     static double norm1(const P& d) noexcept { return std::abs(d[0]) + std::abs(d[1]); }
     double margin(double e, const P& d) const noexcept { return (e + 10 * eps * M) * norm1(d); }
@@ -451,17 +469,23 @@ struct decision_engine {
         if (!krawczyk(A.sd, B.sd, X)) return false;
         // One crossing per zero: a neighbouring pair of pieces may prove the same one.
         const std::array<std::array<double, 2>, 2> g{{{A.base + X[0].lo, A.base + X[0].hi}, {B.base + X[1].lo, B.base + X[1].hi}}};
-        for (std::size_t k = 0; k < out.crossings.size(); ++k) {
-            const auto& c = out.crossings[k];
-            const auto& h = crossing_range[k];
-            for (const int flip : {0, 1}) {
-                const std::size_t p = std::size_t(flip), q = std::size_t(1 - flip);
-                if (c.curve[p] == a.curve && c.curve[q] == b.curve &&
-                    overlap(h[p][0], h[p][1], g[0][0], g[0][1], closed[a.curve], double(nonpoint[a.curve])) &&
-                    overlap(h[q][0], h[q][1], g[1][0], g[1][1], closed[b.curve], double(nonpoint[b.curve])))
-                    return true;
+        bool known = false;
+        for_each_cell(a.curve, g[0][0], g[0][1], [&](std::uint64_t cell) {
+            const auto it = crossing_cells.find(cell);
+            if (known || it == crossing_cells.end()) return;
+            for (const std::uint32_t k : it->second) {
+                const auto& c = out.crossings[k];
+                const auto& h = crossing_range[k];
+                for (const int flip : {0, 1}) {
+                    const std::size_t p = std::size_t(flip), q = std::size_t(1 - flip);
+                    if (c.curve[p] == a.curve && c.curve[q] == b.curve &&
+                        overlap(h[p][0], h[p][1], g[0][0], g[0][1], closed[a.curve], double(nonpoint[a.curve])) &&
+                        overlap(h[q][0], h[q][1], g[1][0], g[1][1], closed[b.curve], double(nonpoint[b.curve])))
+                        known = true;
+                }
             }
-        }
+        });
+        if (known) return true;
         // Reported in the segment that holds the middle of the interval
         // (the interval may reach past that segment's end at a vertex).
         auto place = [](const side_of& sd, const interval& x, std::size_t& seg, std::array<double, 2>& u) {
@@ -478,8 +502,11 @@ struct decision_engine {
         place(A, X[0], c.segment[0], c.u[0]);
         place(B, X[1], c.segment[1], c.u[1]);
         c.point = bezier_at(curves[a.curve][c.segment[0]], (c.u[0][0] + c.u[0][1]) / 2);
+        const auto k = std::uint32_t(out.crossings.size());
         out.crossings.push_back(c);
         crossing_range.push_back(g);
+        for (const std::size_t p : {std::size_t(0), std::size_t(1)})
+            for_each_cell(c.curve[p], g[p][0], g[p][1], [&](std::uint64_t cell) { crossing_cells[cell].push_back(k); });
         return true;
     }
 
@@ -556,7 +583,7 @@ struct decision_engine {
     void flag(const piece& a, const piece& b, unsigned f) {
         std::array<std::size_t, 4> key{a.curve, a.segment, b.curve, b.segment};
         if (std::pair(key[2], key[3]) < std::pair(key[0], key[1])) key = {key[2], key[3], key[0], key[1]};
-        pair_flags[key] |= f;
+        if (record_pairs) pair_flags.push_back({key, f});
     }
 
     // One pair of pieces; `corner`: a ends exactly where b starts.
@@ -759,8 +786,13 @@ struct decision_engine {
             return std::tie(x.curve, x.segment, x.u[0][0]) < std::tie(y.curve, y.segment, y.u[0][0]);
         });
         out.result = !out.crossings.empty() ? verdict::crosses : !out.touches.empty() ? verdict::touches : verdict::simple;
-        for (const auto& [key, f] : pair_flags)
+        std::sort(pair_flags.begin(), pair_flags.end());
+        for (std::size_t k = 0; k < pair_flags.size();) {
+            const auto& key = pair_flags[k].first;
+            unsigned f = 0;
+            for (; k < pair_flags.size() && pair_flags[k].first == key; ++k) f |= pair_flags[k].second;
             out.pairs.push_back({{key[0], key[2]}, {key[1], key[3]}, f});
+        }
     }
 };
 
@@ -787,8 +819,8 @@ inline decision decide_paths(std::span<const bezier_path> curves, bool self, boo
     }
     e.budget = opt.budget;
     e.pair_budget = opt.pair_budget;
+    e.record_pairs = opt.record_pairs;
     e.run(self, between);
-    if (!opt.record_pairs) e.out.pairs.clear();
     return std::move(e.out);
 }
 
