@@ -27,6 +27,7 @@
 #include "detail/finite_geometry.hpp"
 #include "detail/format.hpp"
 #include "detail/knot_index.hpp"
+#include "detail/magnitude.hpp"
 #include "detail/storage.hpp"
 #include "end_condition.hpp"
 #include "error.hpp"
@@ -440,7 +441,14 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
     const std::size_t n = p.size();
     closed_ = opt.closed;
     // 1. Validate the input once, here at the boundary, by the same code
-    //    as crspline::validate(curve_spec) (detail/validate.hpp).
+    //    as crspline::validate(curve_spec) (detail/validate.hpp). The
+    //    coordinates first, as validate_description orders its checks: one
+    //    reduction over the flat array (detail/magnitude.hpp), and only if it
+    //    finds a NaN or an infinity the check that names it.
+    static_assert(sizeof(point) == D * sizeof(T), "points are stored as D contiguous scalars");
+    detail::check_point_count(n, closed_);
+    const detail::magnitude<T> point_magnitude = detail::max_abs_finite(p.front().data(), n * D);
+    if (!point_magnitude.finite) check_finite(p);
     const auto end_of = [](const end_condition<D, T>& e) {
         using k = typename end_condition<D, T>::kind;
         const detail::end_kind type = e.type == k::tangent   ? detail::end_kind::tangent
@@ -450,7 +458,8 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
     };
     detail::validate_description<T>(
         n, D, [&](std::size_t i, std::size_t k) { return p[i][k]; }, opt.alpha, opt.grid, closed_,
-        end_of(opt.start), end_of(opt.end), double(opt.tension), opt.kb.tension, opt.kb.continuity, opt.kb.bias);
+        end_of(opt.start), end_of(opt.end), double(opt.tension), opt.kb.tension, opt.kb.continuity, opt.kb.bias,
+        /*coordinates_checked=*/true);
 
     // 2. Parameterization: intervals from alpha, kept as computed, and the
     //    knots as their running sums; or the given grid and its differences.
@@ -478,7 +487,7 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
             }
         }
         grid_.resize(nseg + 1);
-        detail::fill_intervals(p, alpha, closed_, h_.data());
+        detail::fill_intervals(p, alpha, closed_, h_.data(), point_magnitude.max_abs);
         grid_[0] = 0;
         for (std::size_t i = 0; i < nseg; ++i) grid_[i + 1] = grid_[i] + h_[i];
     }
@@ -518,7 +527,40 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
     auto tcb_at = [&](const std::vector<T>& a, std::size_t i) { return a.empty() ? T(0) : a[i]; };
     const bool plain = opt.kb.empty();
     const std::size_t first_kb = closed_ ? 0 : 1, last_kb = closed_ ? n : n - 1;  // vertices that use TCB
-    if (last_kb > first_kb) {
+    if (last_kb > first_kb && plain) {
+        // The plain tangent (h1 v0 + h0 v1) / (h0 + h1), block by block: the
+        // block's reciprocals 1 / (h0 + h1) first, in a loop the compiler
+        // runs two (SSE2) divisions at a time, then the tangents, which use
+        // them. The same operations on the same values as one division per
+        // vertex: the same bits (issue 30: the divisions, not the loads,
+        // limit the construction).
+        constexpr std::size_t block = 256;
+        T inv_sum[block];
+        std::size_t before = first_kb == 0 ? nseg - 1 : first_kb - 1;
+        point v0 = chord_velocity(before);
+        T h0 = h_[before];
+        for (std::size_t b0 = first_kb; b0 < last_kb; b0 += block) {
+            const std::size_t b1 = std::min(b0 + block, last_kb);
+            std::size_t k = b0;
+            if (k == 0) {  // a closed curve's vertex 0: the interval before it is the last
+                const T sum = h_[nseg - 1] + h_[0];
+                inv_sum[0] = sum > 0 ? T(1) / sum : T(0);
+                ++k;
+            }
+            for (; k < b1; ++k) {
+                const T sum = h_[k - 1] + h_[k];
+                const T r = T(1) / (sum > 0 ? sum : T(1));
+                inv_sum[k - b0] = sum > 0 ? r : T(0);
+            }
+            for (std::size_t i = b0; i < b1; ++i) {
+                const point v1 = chord_velocity(i);  // i < nseg: the segment after vertex i
+                const T h1 = h_[i];
+                if (h0 + h1 > 0) tangent_[i] = (h1 * v0 + h0 * v1) * inv_sum[i - b0];
+                else tangent_[i] = point{};
+                v0 = v1, h0 = h1;
+            }
+        }
+    } else if (last_kb > first_kb) {
         std::size_t before = first_kb == 0 ? nseg - 1 : first_kb - 1;
         point v0 = chord_velocity(before);
         T h0 = h_[before];
@@ -579,13 +621,29 @@ void catmull_rom<D, T>::build(std::span<const point> p, const options_type& opt)
                 if (!(i == n - 1 && end_given)) in_[i] *= keep;
     }
     // 5. The t -> u map: 1 / d(i) of the stored knots, which differs from
-    //    1 / h(i) only where a sum was rounded (never for an explicit grid).
+    //    1 / h(i) only where a sum was rounded (never for an explicit grid,
+    //    but for most segments of a long curve). Written, like step 3, so
+    //    that the compiler divides two at a time; where d = h it writes the
+    //    same bits as step 3 did.
     for (std::size_t i = 0; i < nseg; ++i) {
         const T d = grid_[i + 1] - grid_[i];
-        if (d != h_[i]) inv_h_[i] = d > 0 ? T(1) / d : T(0);
+        const T r = T(1) / (d > 0 ? d : T(1));
+        inv_h_[i] = d > 0 ? r : T(0);
     }
-    // 6. Nothing overflowed: chords, knots, tangents, Bezier points.
-    check_finite_geometry();
+    // 6. Nothing overflowed: chords, knots, tangents, Bezier points. The
+    //    bound of detail::check_finite_geometry from reductions over the
+    //    flat arrays; only when it fails, the check that names the points.
+    {
+        const auto mh = detail::max_abs_finite(h_.data(), nseg);
+        auto mm = detail::max_abs_finite(tangent_.front().data(), n * D);
+        if (!in_.empty()) {
+            const auto mi = detail::max_abs_finite(in_.front().data(), n * D);
+            mm = {std::max(mm.max_abs, mi.max_abs), mm.finite && mi.finite};
+        }
+        if (!(mh.finite && mm.finite &&
+              detail::finite_geometry_bounded(point_magnitude.max_abs, mm.max_abs, mh.max_abs, grid_.back())))
+            check_finite_geometry();
+    }
     index_.build(grid_.data(), nseg);
     // 7. Remember how the curve was built (the grid is grid_, not copied).
     options_.alpha = opt.grid ? std::nullopt : std::optional<double>(opt.alpha.value_or(centripetal));

@@ -20,6 +20,7 @@
 #endif
 
 #include "detail/format.hpp"
+#include "detail/magnitude.hpp"
 #include "detail/validate.hpp"
 #include "error.hpp"
 #include "vec.hpp"
@@ -92,13 +93,41 @@ void sqrt_or_negate(T* x, std::size_t n) noexcept {
     for (; i < n; ++i) x[i] = x[i] > 0 ? std::sqrt(x[i]) : T(0) - x[i];
 }
 
+/// The squared length of chord i (or its negated length where norm()
+/// rescales, or 0 when it is coincident), decided on the window of three
+/// chords as coincident_chords() does: the chord and its two neighbours set
+/// the scale.
+template <std::size_t D, class T>
+T interval_square_in_window(std::span<const vec<D, T>> p, bool closed, std::size_t i) noexcept {
+    const std::size_t n = p.size(), chords = closed ? n : n - 1;
+    auto chord = [&](std::size_t j) { return p[j + 1 == n ? 0 : j + 1] - p[j]; };
+    const T tiny = T(8) * std::numeric_limits<T>::epsilon();  // as coincident()
+    const vec<D, T> d = chord(i);
+    const T m = max_abs(d);
+    const T m_prev = i > 0 ? max_abs(chord(i - 1)) : closed ? max_abs(chord(chords - 1)) : T(0);
+    const T m_next = i + 1 < chords ? max_abs(chord(i + 1)) : closed ? max_abs(chord(0)) : T(0);
+    const T a_here = max_abs(p[i]), a_next = max_abs(p[i + 1 == n ? 0 : i + 1]);
+    const T scale = std::max(std::max(a_here, a_next), std::max(m_prev, m_next));
+    const bool zero = m <= tiny * scale, plain = plain_norm_range<D>(m);
+    return zero ? T(0) : plain ? dot(d, d) : -norm(d);
+}
+
 /// Writes the knot intervals, as knot_intervals() defines them, to h[0 ..
 /// chords): a window of three chords decides coincidence exactly as
-/// coincident_chords() does (the chord and its two neighbours set the
-/// scale), in one pass over the points that stores squared lengths; the
-/// roots are taken afterwards two at a time. Points must be finite.
+/// coincident_chords() does, and the roots are taken afterwards two at a
+/// time. Points must be finite. max_abs_points, the largest |coordinate|,
+/// when the caller knows it (else computed here).
+///
+/// Fast path (issue 30): every scale of the window is at most 2 M, M the
+/// largest |coordinate| (a chord's coordinate is a difference of two), so a
+/// chord with max_abs(d) > L = max(fl(8 eps 2 M), the plain norm's lower
+/// limit) is neither coincident nor rescaled by norm(); and max_abs(d)^2 >=
+/// d.d / D, so d.d > 2 D L^2 (the 2 covers the roundings of both sides)
+/// shows it from the square alone. Such a chord's entry is d.d, as in the
+/// window; every other chord (and all of them when 2 M reaches the plain
+/// norm's upper limit) takes the window's decision.
 template <std::size_t D, class T>
-void fill_intervals(std::span<const vec<D, T>> p, double alpha, bool closed, T* h) {
+void fill_intervals(std::span<const vec<D, T>> p, double alpha, bool closed, T* h, T max_abs_points = T(-1)) {
     const std::size_t n = p.size();
     if (n < 2) return;
     const std::size_t chords = closed ? n : n - 1;
@@ -106,27 +135,23 @@ void fill_intervals(std::span<const vec<D, T>> p, double alpha, bool closed, T* 
         std::fill(h, h + chords, T(1));
         return;
     }
-    auto chord = [&](std::size_t i) { return p[i + 1 == n ? 0 : i + 1] - p[i]; };
-    const T tiny = T(8) * std::numeric_limits<T>::epsilon();  // as coincident()
-    // 1. Per chord: 0 when coincident (the zero-chord-velocity limit); else
-    //    d . d where norm() takes the plain formula (m is its max_abs), or
-    //    -norm(d) where it rescales (rare; negated to tell it apart).
-    vec<D, T> d = chord(0);
-    const T m_first = max_abs(d);
-    T m = m_first;                                          // max_abs of chord i
-    T m_prev = closed ? max_abs(chord(chords - 1)) : T(0);  // of chord i - 1 (0: none)
-    T a_here = max_abs(p[0]);                               // max_abs of P(i)
-    for (std::size_t i = 0; i < chords; ++i) {
-        vec<D, T> d_next{};
-        T m_next = 0;  // of chord i + 1 (0: none)
-        if (i + 1 < chords) m_next = max_abs(d_next = chord(i + 1));
-        else if (closed) m_next = m_first;
-        const T a_next = max_abs(p[i + 1 == n ? 0 : i + 1]);
-        const T scale = std::max(std::max(a_here, a_next), std::max(m_prev, m_next));
-        const bool zero = m <= tiny * scale, plain = plain_norm_range<D>(m);
-        h[i] = zero ? T(0) : plain ? dot(d, d) : -norm(d);
-        m_prev = m, m = m_next, d = d_next, a_here = a_next;
+    const T mp = max_abs_points >= 0 ? max_abs_points : max_abs_finite(p.front().data(), n * D).max_abs;
+    const T lo = std::sqrt(std::numeric_limits<T>::min()) / std::numeric_limits<T>::epsilon();
+    const T hi = std::sqrt(std::numeric_limits<T>::max() / T(D));
+    const T L = std::max(T(8) * std::numeric_limits<T>::epsilon() * (T(2) * mp), lo);
+    const T threshold = T(2 * D) * (L * L);  // inf when L * L overflows: every chord goes to the window
+    bool all_fast = T(2) * mp < hi;
+    if (all_fast) {
+        for (std::size_t i = 0; i < chords; ++i) {
+            const vec<D, T> d = p[i + 1 == n ? 0 : i + 1] - p[i];
+            const T dd = dot(d, d);
+            h[i] = dd;
+            all_fast &= dd > threshold;
+        }
     }
+    if (!all_fast)
+        for (std::size_t i = 0; i < chords; ++i)
+            if (!(T(2) * mp < hi) || !(h[i] > threshold)) h[i] = interval_square_in_window(p, closed, i);
     // 2. Lengths, then length^alpha.
     sqrt_or_negate(h, chords);
     if (alpha == 0.5) sqrt_or_negate(h, chords);

@@ -39,6 +39,14 @@ namespace crspline::detail {
 /// (and the last knot is), all of them are: one pass over the arrays, no
 /// per-segment work. Otherwise the slow path checks each of them, segment
 /// by segment, and names the first that fails.
+/// The fast path's test: with mp, mm, mh the largest magnitudes of the
+/// points, the tangents and the intervals (all finite), everything named
+/// below is finite when 32 mp + 16 mh mm and the last knot are.
+template <class T>
+bool finite_geometry_bounded(T mp, T mm, T mh, T last_knot) noexcept {
+    return std::isfinite(T(32) * mp + T(16) * (mh * mm)) && std::isfinite(last_knot);
+}
+
 template <std::size_t D, class T, class Out, class In>
 void check_finite_geometry(std::span<const vec<D, T>> points, std::span<const T> h, std::span<const T> grid,
                            Out&& out, In&& in) {
@@ -55,8 +63,7 @@ void check_finite_geometry(std::span<const vec<D, T>> points, std::span<const T>
     };
     for (std::size_t i = 0; i < n; ++i) grow(mp, points[i]), grow(mm, out(i)), grow(mm, in(i));
     for (std::size_t i = 0; i < nseg; ++i) mh = std::max(mh, h[i]), probe += h[i] - h[i];
-    const T sum = T(32) * mp + T(16) * (mh * mm);
-    if (probe == 0 && std::isfinite(sum) && std::isfinite(grid.back())) return;
+    if (probe == 0 && finite_geometry_bounded(mp, mm, mh, grid.back())) return;
 
     // 2. The first failure by name, causes before what they cause: every
     //    chord, then every knot interval and knot, then every tangent (a

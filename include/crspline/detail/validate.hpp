@@ -89,9 +89,12 @@ template <class T, class Coord>
 void validate_description(std::size_t n, std::size_t dim, Coord&& coord, const std::optional<double>& alpha,
                           const std::optional<std::vector<T>>& grid, bool closed, end_view<T> start,
                           end_view<T> end, double tension, const std::vector<T>& kb_tension,
-                          const std::vector<T>& kb_continuity, const std::vector<T>& kb_bias) {
+                          const std::vector<T>& kb_continuity, const std::vector<T>& kb_bias,
+                          bool coordinates_checked = false) {
     check_point_count(n, closed);
-    check_coordinates(n, dim, coord);
+    // (The curve's constructor checks the coordinates itself, in one
+    // reduction over the flat array: detail/magnitude.hpp.)
+    if (!coordinates_checked) check_coordinates(n, dim, coord);
     check_alpha_or_grid(alpha.has_value(), grid.has_value());
     if (!(tension >= 0 && tension <= 1))
         spec_fail("tension", std::nullopt, std::nullopt, num(tension),
