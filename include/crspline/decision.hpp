@@ -334,8 +334,10 @@ struct decision_engine {
         return false;
     }
 
-    // Interval de Casteljau: the curve and its derivative over u.
-    static ipoint eval(const std::array<ipoint, 4>& q, const interval& u) {
+    // Interval de Casteljau: the curve and its derivative over u (an
+    // interval, or a double: the parameter exactly).
+    template <class U>
+    static ipoint eval(const std::array<ipoint, 4>& q, const U& u) {
         ipoint r;
         for (std::size_t k = 0; k < 2; ++k) {
             const interval a0 = lerp(q[0][k], q[1][k], u), a1 = lerp(q[1][k], q[2][k], u), a2 = lerp(q[2][k], q[3][k], u);
@@ -363,7 +365,8 @@ struct decision_engine {
     struct side {
         const std::array<ipoint, 4>* f = nullptr;
         const std::array<ipoint, 4>* g = nullptr;
-        ipoint at(double s) const { return g && s >= 1 ? eval(*g, interval::point(s) - interval::point(1)) : eval(*f, interval::point(s)); }
+        // s - 1 is exact for s in [1, 2] (Sterbenz).
+        ipoint at(double s) const { return g && s >= 1 ? eval(*g, s - 1) : eval(*f, s); }
         ipoint slope(const interval& S) const {
             const bool in_f = S.lo < 1 || !g, in_g = g && S.hi >= 1;
             ipoint r{};
@@ -393,10 +396,10 @@ struct decision_engine {
             const double C[2][2] = {{j11 / det, -j01 / det}, {-j10 / det, j00 / det}};
             std::array<interval, 2> K;
             for (std::size_t r = 0; r < 2; ++r) {
-                interval k = interval::point(m[r]) - (interval::point(C[r][0]) * F[0] + interval::point(C[r][1]) * F[1]);
+                interval k = interval::point(m[r]) - (C[r][0] * F[0] + C[r][1] * F[1]);
                 for (std::size_t c = 0; c < 2; ++c) {
                     const interval e = interval::point(r == c ? 1.0 : 0.0) -
-                                       (interval::point(C[r][0]) * J[0][c] + interval::point(C[r][1]) * J[1][c]);
+                                       (C[r][0] * J[0][c] + C[r][1] * J[1][c]);
                     k = k + e * (X[c] - interval::point(m[c]));
                 }
                 K[r] = k;
@@ -510,6 +513,35 @@ struct decision_engine {
         return true;
     }
 
+    // Worth Krawczyk's test? Only where every tangent of a crosses every
+    // tangent of b with one sign: the cross products of their hodographs'
+    // control vectors (zero ones left out) all strictly positive or all
+    // strictly negative. Elsewhere some Jacobian of F over the pieces may be
+    // singular, and then the test cannot succeed (its success proves every
+    // Jacobian in the box invertible): the pair is split instead, and its
+    // halves' hodographs are tighter. A filter on where to try, rounded
+    // plainly: it decides nothing, and a crossing it passes over is proved
+    // on smaller pieces (or at the floor, where the test is always tried).
+    static bool transversal(const piece& a, const piece& b) {
+        // The chords meet (end points on both sides of the other's chord line, or on it).
+        const P ca = a.b[3] - a.b[0], cb = b.b[3] - b.b[0];
+        if (cross2(ca, b.b[0] - a.b[0]) * cross2(ca, b.b[3] - a.b[0]) > 0) return false;
+        if (cross2(cb, a.b[0] - b.b[0]) * cross2(cb, a.b[3] - b.b[0]) > 0) return false;
+        int pos = 0, neg = 0;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const P ha = a.b[i + 1] - a.b[i];
+            if (ha[0] == 0 && ha[1] == 0) continue;
+            for (std::size_t j = 0; j < 3; ++j) {
+                const P hb = b.b[j + 1] - b.b[j];
+                if (hb[0] == 0 && hb[1] == 0) continue;
+                const double x = cross2(ha, hb);
+                pos += x > 0, neg += x < 0;
+                if (!(x > 0 || x < 0) || (pos && neg)) return false;
+            }
+        }
+        return true;
+    }
+
     // Do two pieces run along each other within their rounding margins?
     // Both flat (their control points within w of their chord lines, w =
     // 2 (their error bounds) + 16 eps M), their chords parallel to within w
@@ -607,7 +639,7 @@ struct decision_engine {
             if (separated(t.a, t.b)) { f |= separation; continue; }
             if (t.corner && apart_at_joint(t.a, t.b)) { f |= joint; continue; }
             if (!t.corner && (t.a.depth + t.b.depth > 0 || t.a.segment != t.b.segment || t.a.curve != t.b.curve) &&
-                try_crossing(t.a, t.b, false)) {
+                transversal(t.a, t.b) && try_crossing(t.a, t.b, false)) {
                 f |= crossing;
                 continue;
             }
