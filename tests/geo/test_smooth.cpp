@@ -211,7 +211,76 @@ TEST(GeoSmooth, NestedRingsNeverCross) {
     }
     EXPECT_GE(cases, 4u);
     EXPECT_GT(checked_total, 10000u);
-    // Not vacuous: at these gaps some vertices needed tension.
+    // At these gaps the segment-by-segment proof needs no tension (the old
+    // piece-by-piece one raised it where a short piece at a knot left its
+    // neighbours close): CornerOvershootGetsTension is the case that needs it.
+    (void)tensioned;
+}
+
+// A line turning a right angle next to a straight line 0.02 below it: the
+// free curve dips about 0.074 below its first leg (Catmull-Rom's overshoot
+// before the corner), so smoothed alone the two cross; the proof must add
+// tension there until they are apart, and report the smaller deviation.
+TEST(GeoSmooth, CornerOvershootGetsTension) {
+    geo::layer l;
+    l.add_part(0, part_kind::line, std::vector<double>{-3, 0, -2, 0, -1, 0, 0, 0, 1, 0, 1, 1, 1, 2});
+    l.add_part(1, part_kind::line, std::vector<double>{-3, -0.02, 3, -0.02});
+    std::size_t checked = 0;
+    ASSERT_EQ(output_meetings(l, checked), 0u);  // the inputs do not meet
+    const auto free = geo::smooth(l, {.tolerance = 1e-4, .preserve_topology = false});
+    EXPECT_GT(output_meetings(free.output, checked), 0u);  // not vacuous: alone, they cross
+    // The free dip, measured at the output vertices (within 1e-4 of the curve), is bounded by the report.
+    double dip = 0;
+    for (std::size_t v = free.output.part_offsets[0]; v < free.output.part_offsets[1]; ++v)
+        dip = std::max(dip, -free.output.xy[2 * v + 1]);
+    EXPECT_GT(dip, 0.07);
+    EXPECT_LE(dip, free.features[0].max_deviation + 1e-12);
+    const auto r = geo::smooth(l, {.tolerance = 1e-4});
+    EXPECT_EQ(output_meetings(r.output, checked), 0u);
+    EXPECT_GT(checked, 100u);
+    EXPECT_GT(r.stats.tensioned_vertices, 0u);
+    EXPECT_EQ(r.stats.input_crossings, 0u);
+    EXPECT_LT(r.features[0].max_deviation, 0.02);  // it had to come closer than the line
+    for (const auto& f : r.features) {
+        EXPECT_EQ(f.status, geo::feature_status::ok);
+        EXPECT_EQ(f.verdict, geo::verdict::simple);
+    }
+}
+
+// Contour-like lines stacked 1 apart, each vertex jittered by up to 0.49
+// across, on a shared x grid (so the inputs never meet: at every x the
+// lines keep their order and the polylines are straight between): the free
+// curves overshoot into their neighbours in places; the smoothed ones must
+// not meet anywhere, checked on every pair of output segments.
+TEST(GeoSmooth, ContourLinesNeverCross) {
+    CRSPLINE_SEEDED(seed, 4129);
+    std::mt19937_64 rng(seed);
+    // Steps short (0.01-0.05) or long (0.3-0.6) at random: a short step next
+    // to a long one with a jump across is where Catmull-Rom overshoots.
+    std::uniform_real_distribution<double> jitter(-0.49, 0.49), unit(0, 1);
+    auto step = [&](std::mt19937_64& g) { return unit(g) < 0.5 ? 0.01 + 0.04 * unit(g) : 0.3 + 0.3 * unit(g); };
+    std::size_t checked_total = 0, tensioned = 0, free_meetings = 0;
+    for (int rep = 0; rep < 6; ++rep) {
+        std::vector<double> xs{0};
+        while (xs.size() < 40) xs.push_back(xs.back() + step(rng));
+        geo::layer l;
+        for (std::size_t k = 0; k < 6; ++k) {
+            std::vector<P> line;
+            for (double x : xs) line.push_back(P{{x, double(k) + jitter(rng)}});
+            l.add_part(k, part_kind::line, flat(line));
+        }
+        std::size_t checked = 0;
+        ASSERT_EQ(output_meetings(l, checked), 0u) << "rep " << rep;
+        free_meetings += output_meetings(geo::smooth(l, {.tolerance = 1e-3, .preserve_topology = false}).output, checked);
+        const auto r = geo::smooth(l, {.tolerance = 1e-3});
+        EXPECT_EQ(output_meetings(r.output, checked), 0u) << "rep " << rep;
+        checked_total += checked;
+        tensioned += r.stats.tensioned_vertices;
+        EXPECT_EQ(r.stats.input_crossings, 0u);
+        for (const auto& f : r.features) EXPECT_EQ(f.verdict, geo::verdict::simple);
+    }
+    EXPECT_GT(checked_total, 100000u);
+    EXPECT_GT(free_meetings, 0u);  // not vacuous: smoothed alone, some cross
     EXPECT_GT(tensioned, 0u);
 }
 

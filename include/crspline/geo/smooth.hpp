@@ -8,24 +8,37 @@
 //   proved bound);
 // - no output curve crosses itself or another output curve unless the
 //   inputs did (then only the input segments themselves are output there,
-//   and the feature's verdict says `crosses`). The proof, pair of polyline
-//   pieces by pair (each piece within its flatness bound e of its chord):
-//     * pieces of one cubic segment: the segment has no loop or cusp
-//       (analyze_segment, exact);
-//     * pieces that share an end point V: the Bézier control points of each
-//       lie in a wedge at V narrower than pi, and the two wedges are
-//       disjoint, so the pieces (inside their control hulls) meet only at V;
-//     * other pieces: their chords are more than e1 + e2 apart.
+//   and the feature's verdict says `crosses`). The curve of a cubic
+//   segment, and its output polyline (chords between points of it), lie in
+//   the convex hull of the segment's Bézier points. The proof, pair of
+//   segments by pair (candidates: those whose Bézier boxes meet, found by
+//   sweeps over arcs and over each arc's segments):
+//     * one segment with itself: no loop and no cusp, by its Bézier points
+//       advancing strictly along its chord (the curve is then a graph over
+//       the chord), else by analyze_segment (exact);
+//     * segments that share an end point V: their Bézier points other than
+//       V lie in two disjoint wedges at V, each narrower than pi, so the
+//       hulls meet only at V;
+//     * otherwise, piece by piece of their output polylines (each curve
+//       piece within its flatness bound e of its chord): pieces sharing an
+//       end point by the same wedge test on the pieces' Bézier points,
+//       other pieces by their chords being more than e1 + e2 apart.
 //   Where a pair is not proved, the tension of the vertices of the
-//   segments involved goes up one level (0, 0.5, 0.8, 0.95, 1): tension 1
-//   at both ends makes the segment the input segment itself (a Hermite
-//   cubic with zero end tangents is its chord), exact, so the last resort
-//   is the input, and two input segments are proved apart by their exact
-//   distance;
+//   segments involved goes up one level (0, 0.5, 0.8, 0.95, 1), straight
+//   to 1 where the two input segments themselves meet away from a shared
+//   end: tension 1 at both ends makes the segment the input segment itself
+//   (a Hermite cubic with zero end tangents is its chord), exact, so the
+//   last resort is the input, and two input segments are proved apart by
+//   their exact distance. Each round rebuilds only the arcs whose tension
+//   changed and proves only the pairs that involve one of them;
 // - with max_deviation: no curve point is farther than that from the input
-//   polyline, proved per piece by max(distance of the piece's chord ends to
-//   the input segment) + e (the distance to a segment is convex along the
-//   chord), raised by local tension the same way;
+//   polyline, proved per segment against its own input segment [P, Q]:
+//   the coordinates of the curve along PQ and across it are cubics whose
+//   extremes on [0, 1] are found in closed form; a point's distance is
+//   sqrt(across^2 + overshoot^2) (overshoot: how far it runs past P or Q),
+//   bounded by the two maxima; raised by local tension the same way. The
+//   output polyline's chords are no farther (the distance to a segment is
+//   convex);
 // - coverages: with preserve_topology, a boundary shared by several parts
 //   is one arc (topology.hpp), smoothed once with its junctions fixed, so
 //   neighbours share it exactly: no slivers, no gaps, by construction;
@@ -253,6 +266,10 @@ struct arc_work {
     std::vector<std::uint8_t> raise;      // per segment: raise its vertices' tension
     double max_dev = 0;
     bool dirty = true;
+    std::vector<std::array<p2, 4>> hull;  // per segment: its Bézier points
+    std::vector<box<2>> hull_box;         // per segment: their box
+    std::vector<std::size_t> first_piece; // per segment: its first polyline piece; one more: the piece count
+    crspline::box<2> bounds{};            // of all the hulls
 
     std::size_t segments() const noexcept { return closed ? pts.size() : pts.size() - 1; }
     std::size_t next(std::size_t i) const noexcept { return i + 1 == pts.size() ? 0 : i + 1; }
@@ -311,6 +328,412 @@ inline void tessellate_arc(arc_work& a, double tolerance) {
         }
     }
 }
+
+// ---- The proof, segment by segment (see the file comment) ----------------
+
+// Bézier points of segment s of the arc's curve, the ends being the arc's
+// vertices themselves. The segment's curve lies in their convex hull, and
+// so does its output polyline (chords between points of the curve).
+inline std::array<p2, 4> segment_bezier(const arc_work& a, std::size_t s) {
+    const p2 p0 = a.pts[s], p3 = a.pts[a.next(s)];
+    if (a.linear(s)) return {p0, p0, p3, p3};
+    const auto seg = a.curve->segment(s);
+    const p2 d0 = seg.du(0.0, 1), d1 = seg.du(1.0, 1);
+    return {p0, p0 + d0 / 3.0, p3 - d1 / 3.0, p3};
+}
+
+// Max and min of the cubic with Bernstein coefficients c0..c3 on [0, 1]:
+// the ends and the roots of its derivative (a quadratic) inside.
+inline std::pair<double, double> bernstein_range(double c0, double c1, double c2, double c3) noexcept {
+    double lo = std::min(c0, c3), hi = std::max(c0, c3);
+    auto at = [&](double u) {
+        const double v = 1 - u;
+        return v * v * v * c0 + 3 * u * v * (v * c1 + u * c2) + u * u * u * c3;
+    };
+    auto consider = [&](double u) {
+        if (!(u > 0 && u < 1)) return;
+        const double x = at(u);
+        lo = std::min(lo, x);
+        hi = std::max(hi, x);
+    };
+    // Derivative / 3 in Bernstein form: d0 (1-u)^2 + 2 d1 u (1-u) + d2 u^2.
+    const double d0 = c1 - c0, d1 = c2 - c1, d2 = c3 - c2;
+    const double qa = d0 - 2 * d1 + d2, qb = 2 * (d1 - d0), qc = d0;
+    const double big = std::max({std::abs(qa), std::abs(qb), std::abs(qc)});
+    if (big == 0) return {lo, hi};
+    if (std::abs(qa) <= 1e-12 * big) {
+        if (qb != 0) consider(-qc / qb);
+        return {lo, hi};
+    }
+    const double disc = qb * qb - 4 * qa * qc;
+    if (disc < 0) return {lo, hi};
+    const double r = std::sqrt(disc);
+    const double q = -0.5 * (qb + (qb >= 0 ? r : -r));  // no cancellation
+    consider(q / qa);
+    if (q != 0) consider(qc / q);
+    return {lo, hi};
+}
+
+// A bound on the distance of the cubic with Bézier points b from the
+// segment [b0, b3] (its own input segment): with a the coordinate along the
+// segment and h across it (both cubics in u), every point is at distance
+// sqrt(h^2 + overshoot^2) where overshoot is how far a runs past [0, L];
+// the maximum of each, found in closed form, bounds it.
+inline double segment_deviation(const std::array<p2, 4>& b) noexcept {
+    const p2 d = b[3] - b[0];
+    const double len = norm(d);
+    if (!(len > 0)) return std::max(norm(b[1] - b[0]), norm(b[2] - b[0]));
+    const p2 t = d / len, n{{-t[1], t[0]}};
+    double a[4], h[4];
+    for (int i = 0; i < 4; ++i) {
+        const p2 r = b[i] - b[0];
+        a[i] = dot(r, t);
+        h[i] = dot(r, n);
+    }
+    const auto [hlo, hhi] = bernstein_range(h[0], h[1], h[2], h[3]);
+    const auto [alo, ahi] = bernstein_range(a[0], a[1], a[2], a[3]);
+    const double across = std::max(-hlo, hhi), over = std::max({0.0, -alo, ahi - len});
+    return std::sqrt(across * across + over * over);
+}
+
+// Whether the segment with Bézier points b is free of loops and cusps
+// cheaply: its Bézier points advance strictly along its chord (each step
+// by more than `slack`), so the curve's coordinate along the chord grows
+// strictly and the curve is a graph over the chord.
+inline bool advances_along_chord(const std::array<p2, 4>& b, double slack) noexcept {
+    const p2 d = b[3] - b[0];
+    const double len = norm(d);
+    if (!(len > 0)) return false;
+    const p2 t = d / len;
+    return dot(b[1] - b[0], t) > slack && dot(b[2] - b[1], t) > slack && dot(b[3] - b[2], t) > slack;
+}
+
+// The angular interval, seen from v, of the points q other than v (those
+// within slack of it): [lo, hi] with hi - lo < pi. False when not that narrow.
+inline bool wedge_of(const std::array<p2, 4>& pts, const p2& v, double slack, double& lo, double& hi) {
+    bool have = false;
+    p2 ref{};
+    double a = 0, b = 0;
+    for (const p2& q : pts) {
+        const p2 d = q - v;
+        if (std::abs(d[0]) <= slack && std::abs(d[1]) <= slack) continue;
+        if (!have) {
+            ref = d;
+            have = true;
+            continue;
+        }
+        const double ang = std::atan2(cross2(ref, d), dot(ref, d));
+        a = std::min(a, ang);
+        b = std::max(b, ang);
+    }
+    if (!have || b - a >= std::numbers::pi * 0.999) return false;
+    const double base = std::atan2(ref[1], ref[0]);
+    lo = base + a;
+    hi = base + b;
+    return true;
+}
+
+// Two point sets, each with v, whose hulls meet only at v: their wedges at
+// v are disjoint (with a margin against rounding).
+inline bool hulls_apart_at(const std::array<p2, 4>& p, const std::array<p2, 4>& q, const p2& v, double slack) {
+    double a0, a1, b0, b1;
+    if (!wedge_of(p, v, slack, a0, a1) || !wedge_of(q, v, slack, b0, b1)) return false;
+    constexpr double margin = 1e-9, two_pi = 2 * std::numbers::pi;
+    double s = std::fmod(b0 - a0, two_pi);
+    if (s < 0) s += two_pi;
+    return s > (a1 - a0) + margin && s + (b1 - b0) < two_pi - margin;
+}
+
+// The end point two point sets share (their first or last), if any.
+inline const p2* shared_end(const std::array<p2, 4>& p, const std::array<p2, 4>& q) noexcept {
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j)
+            if (p[3 * i] == q[3 * j]) return &p[3 * i];
+    return nullptr;
+}
+
+inline bool boxes_meet(const box<2>& a, const box<2>& b, double pad) noexcept {
+    return !(a.lo[0] > b.hi[0] + pad || b.lo[0] > a.hi[0] + pad || a.lo[1] > b.hi[1] + pad ||
+             b.lo[1] > a.hi[1] + pad);
+}
+
+// Polyline piece k of the arc (from vertex k to k + 1), with its curve
+// piece's Bézier points and flatness margin.
+inline piece piece_of(const arc_work& a, std::uint32_t arc_index, std::size_t k, double slack) {
+    piece pc;
+    const std::size_t s = a.vseg[k];
+    pc.arc = arc_index;
+    pc.seg = std::uint32_t(s);
+    pc.linear = a.linear(s);
+    const p2 pa = a.line.points[k], pb = a.line.points[k + 1];
+    pc.q[0] = pa;
+    pc.q[3] = pb;
+    if (pc.linear) {
+        pc.q[1] = pa;
+        pc.q[2] = pb;
+    } else {
+        const auto seg = a.curve->segment(s);
+        // The next vertex is in this segment, or is its end knot.
+        const double u0 = a.vu[k], u1 = a.vseg[k + 1] == s ? a.vu[k + 1] : 1.0;
+        const double w = u1 - u0;
+        pc.q[1] = pa + (w / 3) * seg.du(u0, 1);
+        pc.q[2] = pb - (w / 3) * seg.du(u1, 1);
+        pc.e = flatness_bound(seg, u0, u1) + slack;
+    }
+    pc.bounds = box<2>::of(pa);
+    pc.bounds.expand(pb);
+    return pc;
+}
+
+// What the proof found for a pair of arcs (or an arc with itself).
+struct proof_record {
+    std::size_t pairs = 0;      // segment and piece pairs examined
+    std::size_t crossings = 0;  // input segment pairs that cross properly (left as they are)
+    std::size_t touches = 0;    // input segment pairs that touch or overlap
+};
+
+// A segment in a sweep: its box's low x.
+struct seg_ref {
+    double lo;
+    std::uint32_t arc, seg;
+};
+
+// The state of one proof: arcs, options, rounding slack.
+struct proof {
+    std::vector<arc_work>& arcs;
+    const smooth_options& opt;
+    double slack;
+
+    proof(std::vector<arc_work>& a, const smooth_options& o, double rounding) : arcs(a), opt(o), slack(rounding) {}
+
+    // Rebuilds a dirty arc: curve, polyline, Bézier hulls; flags the
+    // segments that fail a test of their own (loop or cusp, deviation,
+    // domain) and records the arc's deviation bound.
+    void prepare(std::uint32_t i) {
+        arc_work& a = arcs[i];
+        build_arc_curve(a, opt.alpha);
+        tessellate_arc(a, opt.tolerance);
+        const std::size_t segs = a.segments();
+        a.hull.resize(segs);
+        a.hull_box.resize(segs);
+        a.first_piece.assign(segs + 1, 0);
+        for (std::size_t k = a.line.points.size() - 1; k-- > 0;) a.first_piece[a.vseg[k]] = k;
+        a.first_piece[segs] = a.line.points.size() - 1;
+        a.max_dev = 0;
+        for (std::size_t s = 0; s < segs; ++s) {
+            auto& b = a.hull[s];
+            b = segment_bezier(a, s);
+            box<2> bx = box<2>::of(b[0]);
+            for (int j = 1; j < 4; ++j) bx.expand(b[j]);
+            a.hull_box[s] = bx;
+            if (s == 0) a.bounds = bx;
+            a.bounds.expand(bx);
+            if (a.linear(s)) continue;
+            // Loops and cusps inside the segment: exact, unless it plainly advances.
+            if (opt.preserve_topology && !advances_along_chord(b, slack)) {
+                const auto an = analyze_segment(a.curve->segment(s));
+                if (an.has_self_intersection() || an.has_cusp()) a.raise[s] = 1;
+            }
+            const double dev = segment_deviation(b) + slack;
+            a.max_dev = std::max(a.max_dev, dev);
+            if (opt.max_deviation && dev > *opt.max_deviation) a.raise[s] = 1;
+            if (opt.domain) {
+                bool inside = true;
+                for (const p2& q : b) inside = inside && opt.domain->contains(q);
+                // The hull leaves the domain: the pieces' own hulls decide.
+                for (std::size_t k = a.first_piece[s]; !inside && k < a.first_piece[s + 1]; ++k) {
+                    const piece pc = piece_of(a, i, k, slack);
+                    bool in = true;
+                    for (const p2& q : pc.q) in = in && opt.domain->contains(q);
+                    if (!in) {
+                        a.raise[s] = 1;
+                        break;
+                    }
+                }
+            }
+        }
+    }
+
+    void fail(const piece& pc) {
+        if (!pc.linear) arcs[pc.arc].raise[pc.seg] = 1;
+    }
+
+    // Segment s of arc i against segment t of arc j (not the same segment).
+    void prove_segments(std::uint32_t i, std::size_t s, std::uint32_t j, std::size_t t, proof_record& rec) {
+        arc_work& a = arcs[i];
+        arc_work& b = arcs[j];
+        ++rec.pairs;
+        const auto& ha = a.hull[s];
+        const auto& hb = b.hull[t];
+        const p2* v = shared_end(ha, hb);
+        // Segment level: hulls meeting only at a shared end.
+        if (v && hulls_apart_at(ha, hb, *v, slack)) return;
+        const bool la = a.linear(s), lb = b.linear(t);
+        if (la && lb) {
+            // Two input segments: apart, or the input itself meets here
+            // (left as it is): a proper crossing or a touch.
+            if (!v && segment_distance(ha[0], ha[3], hb[0], hb[3]) > 0) return;
+            ++(segments_cross(ha[0], ha[3], hb[0], hb[3]) ? rec.crossings : rec.touches);
+            return;
+        }
+        // Where the input segments themselves meet away from a shared end,
+        // the proof can only end at the input: go straight there.
+        if (!v && segments_meet(ha[0], ha[3], hb[0], hb[3])) {
+            if (!la) jumps.push_back({i, s});
+            if (!lb) jumps.push_back({j, t});
+            return;
+        }
+        // Piece level: each piece within its flatness margin of its chord.
+        for (std::size_t k = a.first_piece[s]; k < a.first_piece[s + 1]; ++k) {
+            const piece p = piece_of(a, i, k, slack);
+            for (std::size_t m = b.first_piece[t]; m < b.first_piece[t + 1]; ++m) {
+                const piece q = piece_of(b, j, m, slack);
+                if (!boxes_meet(p.bounds, q.bounds, p.e + q.e + slack)) continue;
+                ++rec.pairs;
+                const p2* w = shared_end(p.q, q.q);
+                const bool proved = w ? hulls_apart_at(p.q, q.q, *w, slack)
+                                      : segment_distance(p.q[0], p.q[3], q.q[0], q.q[3]) > p.e + q.e + slack;
+                if (proved) continue;
+                fail(p);
+                fail(q);
+            }
+        }
+    }
+
+    // Every pair of segments of arc i (j == i) or of arcs i and j whose
+    // padded boxes meet: a sweep along x.
+    proof_record prove_arcs(std::uint32_t i, std::uint32_t j) {
+        proof_record rec;
+        std::vector<seg_ref>& refs = scratch;
+        refs.clear();
+        const double pad = slack;
+        auto add = [&](std::uint32_t x, const box<2>* other) {
+            const arc_work& a = arcs[x];
+            for (std::size_t s = 0; s < a.segments(); ++s)
+                if (!other || boxes_meet(a.hull_box[s], *other, pad))
+                    refs.push_back({a.hull_box[s].lo[0], x, std::uint32_t(s)});
+        };
+        if (i == j) {
+            add(i, nullptr);
+        } else {
+            add(i, &arcs[j].bounds);
+            add(j, &arcs[i].bounds);
+        }
+        std::sort(refs.begin(), refs.end(), [](const seg_ref& x, const seg_ref& y) { return x.lo < y.lo; });
+        for (std::size_t p = 0; p < refs.size(); ++p) {
+            const auto& rp = refs[p];
+            const box<2>& bp = arcs[rp.arc].hull_box[rp.seg];
+            for (std::size_t q = p + 1; q < refs.size(); ++q) {
+                const auto& rq = refs[q];
+                if (rq.lo > bp.hi[0] + pad) break;
+                if (rq.arc == rp.arc && i != j) continue;  // two arcs: only pairs across them
+                const box<2>& bq = arcs[rq.arc].hull_box[rq.seg];
+                if (!boxes_meet(bp, bq, pad)) continue;
+                prove_segments(rp.arc, rp.seg, rq.arc, rq.seg, rec);
+            }
+        }
+        return rec;
+    }
+
+    // Rounds: rebuild the dirty arcs, prove the pairs that involve one,
+    // raise tension where a proof failed; until every pair is proved.
+    // Pairs of clean arcs keep the record of the round that proved them.
+    void run() {
+        const std::size_t n = arcs.size();
+        self.assign(n, {});
+        std::vector<std::pair<std::uint64_t, proof_record>> previous;
+        std::vector<std::uint32_t> order(n);
+        std::vector<std::uint8_t> dirty(n);
+        constexpr std::size_t max_rounds = 64;
+        for (std::size_t round = 1;; ++round) {
+            rounds = round;
+            for (std::uint32_t i = 0; i < n; ++i) {
+                auto& a = arcs[i];
+                dirty[i] = a.dirty;
+                std::fill(a.raise.begin(), a.raise.end(), 0);
+                if (a.dirty) prepare(i);
+            }
+            if (opt.preserve_topology) {
+                for (std::uint32_t i = 0; i < n; ++i)
+                    if (dirty[i]) self[i] = prove_arcs(i, i);
+                // Pairs of arcs whose boxes meet: a sweep along x.
+                previous.swap(across);
+                across.clear();
+                for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
+                std::sort(order.begin(), order.end(),
+                          [&](std::uint32_t x, std::uint32_t y) { return arcs[x].bounds.lo[0] < arcs[y].bounds.lo[0]; });
+                for (std::size_t p = 0; p < n; ++p) {
+                    const std::uint32_t i = order[p];
+                    for (std::size_t q = p + 1; q < n; ++q) {
+                        const std::uint32_t j = order[q];
+                        if (arcs[j].bounds.lo[0] > arcs[i].bounds.hi[0] + slack) break;
+                        if (!boxes_meet(arcs[i].bounds, arcs[j].bounds, slack)) continue;
+                        const std::uint64_t key = (std::uint64_t(std::min(i, j)) << 32) | std::max(i, j);
+                        if (dirty[i] || dirty[j]) {
+                            across.push_back({key, prove_arcs(std::min(i, j), std::max(i, j))});
+                        } else {
+                            // Unchanged since the round that proved them.
+                            auto it = std::lower_bound(previous.begin(), previous.end(), key,
+                                                       [](const auto& e, std::uint64_t k) { return e.first < k; });
+                            across.push_back({key, it != previous.end() && it->first == key ? it->second
+                                                                                           : prove_arcs(std::min(i, j), std::max(i, j))});
+                        }
+                    }
+                }
+                std::sort(across.begin(), across.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+            }
+            // Raise tension where needed.
+            bool failed = false;
+            for (const auto& [x, s] : jumps) {
+                arc_work& a = arcs[x];
+                a.raise[s] = 1;
+                a.level[s] = a.level[a.next(s)] = linear_level;
+            }
+            jumps.clear();
+            for (auto& a : arcs) {
+                a.dirty = false;
+                for (std::size_t s = 0; s < a.segments(); ++s) {
+                    if (!a.raise[s]) continue;
+                    failed = true;
+                    a.dirty = true;
+                    for (std::size_t v : {s, a.next(s)}) {
+                        // After many rounds, straight to the last resort.
+                        const std::uint8_t to = round >= max_rounds / 2 ? linear_level : std::uint8_t(a.level[v] + 1);
+                        a.level[v] = std::min(linear_level, std::max(a.level[v], to));
+                    }
+                }
+            }
+            if (!failed || round >= max_rounds) break;  // the cap cannot be reached: levels only grow
+        }
+        // What the final proof found.
+        crossing.assign(n, 0);
+        auto note = [&](std::uint32_t i, const proof_record& r) {
+            if (r.crossings) crossing[i] = 2;
+            else if (r.touches) crossing[i] = std::max<std::uint8_t>(crossing[i], 1);
+        };
+        auto count = [&](const proof_record& r) {
+            pairs += r.pairs;
+            crossings += r.crossings;
+            touches += r.touches;
+        };
+        for (std::uint32_t i = 0; i < n; ++i) {
+            count(self[i]);
+            note(i, self[i]);
+        }
+        for (const auto& [key, r] : across) {
+            count(r);
+            note(std::uint32_t(key >> 32), r);
+            note(std::uint32_t(key & 0xffffffffu), r);
+        }
+    }
+
+    std::vector<seg_ref> scratch;
+    std::vector<std::pair<std::uint32_t, std::size_t>> jumps;   // (arc, segment) to take to the input
+    std::vector<proof_record> self;                              // per arc, with itself
+    std::vector<std::pair<std::uint64_t, proof_record>> across;  // per pair of arcs whose boxes meet, by key
+    std::vector<std::uint8_t> crossing;                          // per arc: 2 an input crossing, 1 a touch
+    std::size_t rounds = 0, pairs = 0, crossings = 0, touches = 0;
+};
 
 }  // namespace detail
 
@@ -416,140 +839,14 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
     const double slack = 64 * std::numeric_limits<double>::epsilon() * std::max(scale, tol);
 
     // 3. Rounds: build, tessellate, prove; raise tension where not proved.
-    std::vector<detail::piece> pieces;
-    std::vector<std::uint8_t> arc_crossing(arcs.size(), 0);
-    constexpr std::size_t max_rounds = 64;
-    for (std::size_t round = 1;; ++round) {
-        res.stats.rounds = round;
-        bool failed = false;
-        for (std::size_t i = 0; i < arcs.size(); ++i) {
-            auto& a = arcs[i];
-            std::fill(a.raise.begin(), a.raise.end(), 0);
-            if (!a.dirty) continue;
-            detail::build_arc_curve(a, opt.alpha);
-            detail::tessellate_arc(a, tol);
-            // Loops and cusps inside a segment (exact); only where tension
-            // leaves curvature.
-            if (opt.preserve_topology)
-                for (std::size_t s = 0; s < a.segments(); ++s) {
-                    if (a.linear(s)) continue;
-                    const auto an = analyze_segment(a.curve->segment(s));
-                    if (an.has_self_intersection() || an.has_cusp()) a.raise[s] = 1;
-                }
-        }
-        // Pieces, deviation.
-        pieces.clear();
-        for (std::size_t i = 0; i < arcs.size(); ++i) {
-            auto& a = arcs[i];
-            a.max_dev = 0;
-            for (std::size_t k = 0; k + 1 < a.line.points.size(); ++k) {
-                const std::size_t s = a.vseg[k];
-                detail::piece pc;
-                pc.arc = std::uint32_t(i);
-                pc.seg = std::uint32_t(s);
-                pc.linear = a.linear(s);
-                const p2 pa = a.line.points[k], pb = a.line.points[k + 1];
-                pc.q[0] = pa;
-                pc.q[3] = pb;
-                if (pc.linear) {
-                    pc.q[1] = pa;
-                    pc.q[2] = pb;
-                } else {
-                    const auto seg = a.curve->segment(s);
-                    // The next vertex is in this segment, or is its end knot.
-                    const double u0 = a.vu[k], u1e = a.vseg[k + 1] == s ? a.vu[k + 1] : 1.0;
-                    const double w = u1e - u0;
-                    pc.q[1] = pa + (w / 3) * seg.du(u0, 1);
-                    pc.q[2] = pb - (w / 3) * seg.du(u1e, 1);
-                    pc.e = flatness_bound(seg, u0, u1e) + slack;
-                }
-                pc.bounds = box<2>::of(pa);
-                pc.bounds.expand(pb);
-                const p2 sa = a.pts[s], sb = a.pts[a.next(s)];
-                const double dev = pc.linear ? 0.0
-                                             : std::max(detail::point_segment_distance(pa, sa, sb),
-                                                        detail::point_segment_distance(pb, sa, sb)) +
-                                                   pc.e;
-                a.max_dev = std::max(a.max_dev, dev);
-                if (opt.max_deviation && dev > *opt.max_deviation && !pc.linear) a.raise[s] = 1;
-                if (opt.domain && !pc.linear)
-                    for (const p2& q : pc.q)
-                        if (!opt.domain->contains(q)) a.raise[s] = 1;
-                pieces.push_back(pc);
-            }
-        }
-        // Pairs, by a sweep along x over boxes padded by the largest margin.
-        std::size_t pairs = 0, crossings = 0, touches = 0;
-        std::fill(arc_crossing.begin(), arc_crossing.end(), 0);
-        if (opt.preserve_topology) {
-            double emax = 0;
-            for (const auto& pc : pieces) emax = std::max(emax, pc.e);
-            const double pad = 2 * emax + slack;
-            std::vector<std::uint32_t> order(pieces.size());
-            for (std::size_t k = 0; k < order.size(); ++k) order[k] = std::uint32_t(k);
-            std::sort(order.begin(), order.end(),
-                      [&](auto x, auto y) { return pieces[x].bounds.lo[0] < pieces[y].bounds.lo[0]; });
-            auto fail = [&](const detail::piece& pc) {
-                if (!pc.linear) arcs[pc.arc].raise[pc.seg] = 1;
-            };
-            for (std::size_t oi = 0; oi < order.size(); ++oi) {
-                const auto& p = pieces[order[oi]];
-                for (std::size_t oj = oi + 1; oj < order.size(); ++oj) {
-                    const auto& q = pieces[order[oj]];
-                    if (q.bounds.lo[0] > p.bounds.hi[0] + pad) break;
-                    if (q.bounds.lo[1] > p.bounds.hi[1] + pad || p.bounds.lo[1] > q.bounds.hi[1] + pad) continue;
-                    if (p.arc == q.arc && p.seg == q.seg) continue;
-                    ++pairs;
-                    // A shared end point: the wedge test.
-                    const p2* shared = nullptr;
-                    for (int i = 0; i < 2 && !shared; ++i)
-                        for (int j = 0; j < 2 && !shared; ++j)
-                            if (p.q[3 * i] == q.q[3 * j]) shared = &p.q[3 * i];
-                    bool proved;
-                    if (shared) {
-                        proved = detail::wedges_apart(p, q, *shared, slack);
-                    } else {
-                        const double d = detail::segment_distance(p.q[0], p.q[3], q.q[0], q.q[3]);
-                        proved = d > p.e + q.e + (p.linear && q.linear ? 0.0 : slack);
-                    }
-                    if (proved) continue;
-                    if (p.linear && q.linear) {
-                        // The input itself meets here: left as it is. A
-                        // proper crossing (each segment's ends strictly on
-                        // both sides of the other) or a touch.
-                        const bool proper = detail::segments_cross(p.q[0], p.q[3], q.q[0], q.q[3]);
-                        ++(proper ? crossings : touches);
-                        for (auto ai : {p.arc, q.arc})
-                            arc_crossing[ai] = std::max<std::uint8_t>(arc_crossing[ai], proper ? 2 : 1);
-                        continue;
-                    }
-                    fail(p);
-                    fail(q);
-                }
-            }
-        }
-        res.stats.pairs_checked = pairs;
-        res.stats.input_crossings = crossings;
-        res.stats.input_touches = touches;
-        res.stats.pieces = pieces.size();
-        // Raise tension where needed.
-        for (auto& a : arcs) {
-            a.dirty = false;
-            for (std::size_t s = 0; s < a.segments(); ++s) {
-                if (!a.raise[s]) continue;
-                failed = true;
-                a.dirty = true;
-                for (std::size_t v : {s, a.next(s)}) {
-                    // After many rounds, straight to the last resort.
-                    const std::uint8_t to = round >= max_rounds / 2 ? detail::linear_level
-                                                                    : std::uint8_t(a.level[v] + 1);
-                    a.level[v] = std::min(detail::linear_level, std::max(a.level[v], to));
-                }
-            }
-        }
-        if (!failed) break;
-        if (round >= max_rounds) break;  // cannot happen: levels only grow and linear pairs never fail
-    }
+    detail::proof pr{arcs, opt, slack};
+    pr.run();
+    res.stats.rounds = pr.rounds;
+    res.stats.pairs_checked = pr.pairs;
+    res.stats.input_crossings = pr.crossings;
+    res.stats.input_touches = pr.touches;
+    for (const auto& a : arcs) res.stats.pieces += a.line.points.size() - 1;
+    const std::vector<std::uint8_t>& arc_crossing = pr.crossing;
 
     // 4. Extras along the arcs, lengths, the output layer.
     for (const auto& t : topo.arcs) {
