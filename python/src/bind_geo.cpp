@@ -3,7 +3,9 @@
 // geometries into these arrays part by part (no loop over vertices in
 // Python) and back; here the arrays are copied into a geo::layer, the GIL
 // is released while the core works, and the result comes back as arrays.
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -109,6 +111,336 @@ py::dict geo_smooth(carray<double> xy, carray<double> extra, carray<std::int64_t
     return d;
 }
 
+
+// --- The arc-wise pipeline of crspline.geo.dask -----------------------------
+// crspline.geo.dask spreads geo::smooth over a cluster: each partition cleans
+// its parts (geo_clean), the layer's junctions and arcs are found by shuffles
+// keyed by vertex and by arc, and each group of arcs that may meet is
+// smoothed by geo_smooth_arcs. These are steps 1 and 3-4 of geo::smooth
+// (crspline/geo/smooth.hpp) on the same data, with the layer-wide rounding
+// slack passed in, so the numbers are the same to the bit.
+
+// Step 1 of geo::smooth: per feature invalid / empty / degenerate, per part
+// the cleaned vertices (no consecutive repeats, a ring without its closing
+// repeat). Returns the statuses and messages and the clean parts as layer
+// vertex indices.
+py::dict geo_clean(carray<double> xy, carray<std::int64_t> part_offsets, carray<std::uint8_t> part_kinds,
+                   carray<std::int64_t> part_features, std::size_t feature_count) {
+    if (xy.ndim() != 2 || xy.shape(1) != 2)
+        throw crspline::invalid_input("xy must have shape (n, 2), got ndim " + std::to_string(xy.ndim()));
+    const std::size_t nparts = std::size_t(part_kinds.size());
+    if (std::size_t(part_offsets.size()) != nparts + 1 || std::size_t(part_features.size()) != nparts)
+        throw crspline::invalid_input("part_offsets must have one value more than part_kinds, part_features as many");
+    const double* p = xy.data();
+    const std::int64_t* off = part_offsets.data();
+    const std::int64_t* feat = part_features.data();
+    for (std::size_t q = 0; q < nparts; ++q)
+        if (off[q] < 0 || off[q + 1] < off[q] || off[q + 1] > xy.shape(0) || feat[q] < 0 ||
+            std::size_t(feat[q]) >= feature_count)
+            throw crspline::invalid_input("part " + std::to_string(q) + ": offsets or feature out of range");
+    std::vector<std::uint8_t> status(feature_count, std::uint8_t(geo::feature_status::ok));
+    std::vector<std::string> message(feature_count);
+    std::vector<std::size_t> feature_vertices(feature_count, 0), part_index(nparts, 0), count(feature_count, 0);
+    const auto invalid = std::uint8_t(geo::feature_status::invalid);
+    for (std::size_t q = 0; q < nparts; ++q) {
+        const std::size_t f = std::size_t(feat[q]);
+        part_index[q] = count[f]++;
+        feature_vertices[f] += std::size_t(off[q + 1] - off[q]);
+        if (status[f] == invalid) continue;
+        for (std::size_t v = std::size_t(off[q]); v < std::size_t(off[q + 1]); ++v)
+            for (std::size_t k = 0; k < 2; ++k)
+                if (!std::isfinite(p[2 * v + k])) {
+                    status[f] = invalid;
+                    message[f] = "part " + std::to_string(part_index[q]) + " vertex " +
+                                 std::to_string(v - std::size_t(off[q])) + ": " + (k ? "y" : "x") + " is " +
+                                 crspline::detail::num(p[2 * v + k]);
+                    v = std::size_t(off[q + 1]) - 1;
+                    break;
+                }
+    }
+    for (std::size_t f = 0; f < feature_count; ++f)
+        if (feature_vertices[f] == 0) {
+            status[f] = std::uint8_t(geo::feature_status::empty);
+            message[f] = "no vertices";
+        }
+    std::vector<std::int64_t> verts, offsets{0}, parts, features;
+    std::vector<std::uint8_t> rings;
+    for (std::size_t q = 0; q < nparts; ++q) {
+        const std::size_t f = std::size_t(feat[q]);
+        if (status[f] == invalid || off[q + 1] == off[q]) continue;
+        const bool ring = geo::part_kind(part_kinds.data()[q]) == geo::part_kind::ring;
+        std::vector<std::array<double, 2>> pts;
+        std::vector<std::int64_t> src;
+        for (std::size_t v = std::size_t(off[q]); v < std::size_t(off[q + 1]); ++v) {
+            const std::array<double, 2> pt{p[2 * v], p[2 * v + 1]};
+            if (!pts.empty() && pts.back() == pt) continue;
+            pts.push_back(pt);
+            src.push_back(std::int64_t(v));
+        }
+        if (ring && pts.size() > 1 && pts.back() == pts.front()) {
+            pts.pop_back();
+            src.pop_back();
+        }
+        const std::size_t need = ring ? 3 : 2;
+        std::vector<std::array<double, 2>> seen;
+        for (const auto& s : pts) {
+            if (seen.size() == need) break;
+            if (std::find(seen.begin(), seen.end(), s) == seen.end()) seen.push_back(s);
+        }
+        const std::size_t distinct = seen.size();
+        if (distinct < need) {
+            status[f] = std::uint8_t(geo::feature_status::degenerate);
+            message[f] = "part " + std::to_string(part_index[q]) + " (" + (ring ? "ring" : "line") + ") has " +
+                         std::to_string(distinct) + " distinct point" + (distinct == 1 ? "" : "s") + ", a " +
+                         (ring ? "ring" : "line") + " needs " + std::to_string(need) + ": passed through unchanged";
+            continue;
+        }
+        verts.insert(verts.end(), src.begin(), src.end());
+        offsets.push_back(std::int64_t(verts.size()));
+        parts.push_back(std::int64_t(q));
+        features.push_back(std::int64_t(f));
+        rings.push_back(ring ? 1 : 0);
+    }
+    py::list messages;
+    for (const auto& m : message) messages.append(m);
+    py::dict d;
+    d["status"] = to_numpy(status);
+    d["message"] = messages;
+    d["vertices"] = to_numpy(verts);
+    d["offsets"] = to_numpy(offsets);
+    d["parts"] = to_numpy(parts);
+    d["features"] = to_numpy(features);
+    d["rings"] = to_numpy(rings);
+    return d;
+}
+
+// Arcs given as flat arrays (xy (n, 2), offsets, closed flags), as
+// geo::smooth's step 2 would have made them.
+std::vector<geo::detail::arc_work> arcs_of(const carray<double>& xy, const carray<std::int64_t>& offsets,
+                                           const carray<std::uint8_t>& closed) {
+    using geo::detail::p2;
+    if (xy.ndim() != 2 || xy.shape(1) != 2)
+        throw crspline::invalid_input("xy must have shape (n, 2), got ndim " + std::to_string(xy.ndim()));
+    const std::size_t n = std::size_t(closed.size());
+    if (std::size_t(offsets.size()) != n + 1)
+        throw crspline::invalid_input("offsets must have one value more than closed (" + std::to_string(n) + ")");
+    std::vector<geo::detail::arc_work> arcs(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto a0 = offsets.data()[i], a1 = offsets.data()[i + 1];
+        auto& a = arcs[i];
+        a.closed = closed.data()[i] != 0;
+        if (a0 < 0 || a1 > xy.shape(0) || a1 - a0 < (a.closed ? 3 : 2))
+            throw crspline::invalid_input("arc " + std::to_string(i) + ": vertices [" + std::to_string(a0) + ", " +
+                                          std::to_string(a1) + ") out of range or too few");
+        for (auto v = a0; v < a1; ++v) a.pts.push_back(p2{{xy.data()[2 * v], xy.data()[2 * v + 1]}});
+        a.level.assign(a.pts.size(), a.pts.size() == 2 && !a.closed ? geo::detail::linear_level : 0);
+        a.raise.assign(a.segments(), 0);
+    }
+    return arcs;
+}
+
+// Per arc, the box of the Bézier points of its untensioned curve: every
+// tension level's curve lies inside it (a tensioned segment's inner Bézier
+// points are on the segments from its ends to the untensioned ones).
+py::array_t<double> geo_arc_boxes(carray<double> xy, carray<std::int64_t> offsets, carray<std::uint8_t> closed,
+                                  double alpha) {
+    auto arcs = arcs_of(xy, offsets, closed);
+    py::array_t<double> out({py::ssize_t(arcs.size()), py::ssize_t(4)});
+    double* o = out.mutable_data();
+    {
+        py::gil_scoped_release release;
+        for (std::size_t i = 0; i < arcs.size(); ++i) {
+            auto& a = arcs[i];
+            options<2> opt;
+            opt.alpha = alpha;
+            opt.closed = a.closed;
+            const catmull_rom<2> c(std::span<const geo::detail::p2>(a.pts), opt);
+            box<2> b = box<2>::of(a.pts[0]);
+            for (std::size_t s = 0; s < c.segment_count(); ++s)
+                for (const auto& q : c.bezier(s)) b.expand(q);
+            o[4 * i] = b.lo[0];
+            o[4 * i + 1] = b.lo[1];
+            o[4 * i + 2] = b.hi[0];
+            o[4 * i + 3] = b.hi[1];
+        }
+    }
+    return out;
+}
+
+// Steps 3 and 4 of geo::smooth (the rounds of tension and proof, the arc
+// lengths) on a group of arcs that no arc outside can meet at any tension
+// (crspline.geo.dask groups them so, with boxes from geo_arc_boxes padded
+// by `bound` + slack), with the layer's rounding slack. Every piece's
+// flatness margin e is checked to be at most `bound` (the padding assumed):
+// otherwise invalid_input, rather than a proof that missed a pair.
+py::dict geo_smooth_arcs(carray<double> xy, carray<std::int64_t> offsets, carray<std::uint8_t> closed, double alpha,
+                         double tolerance, std::optional<double> max_deviation, bool preserve_topology,
+                         std::optional<std::array<double, 4>> domain_box, double slack, double bound) {
+    using geo::detail::p2;
+    auto arcs = arcs_of(xy, offsets, closed);
+    std::optional<box<2>> domain;
+    if (domain_box)
+        domain = box<2>{vec<2>{{(*domain_box)[0], (*domain_box)[1]}}, vec<2>{{(*domain_box)[2], (*domain_box)[3]}}};
+    const double tol = tolerance;
+    std::vector<std::uint8_t> arc_crossing(arcs.size(), 0);
+    std::size_t rounds = 0;
+    double worst_e = 0;
+    {
+        py::gil_scoped_release release;
+        std::vector<geo::detail::piece> pieces;
+        constexpr std::size_t max_rounds = 64;
+        for (std::size_t round = 1;; ++round) {
+            rounds = round;
+            bool failed = false;
+            for (std::size_t i = 0; i < arcs.size(); ++i) {
+                auto& a = arcs[i];
+                std::fill(a.raise.begin(), a.raise.end(), 0);
+                if (!a.dirty) continue;
+                geo::detail::build_arc_curve(a, alpha);
+                geo::detail::tessellate_arc(a, tol);
+                if (preserve_topology)
+                    for (std::size_t s = 0; s < a.segments(); ++s) {
+                        if (a.linear(s)) continue;
+                        const auto an = analyze_segment(a.curve->segment(s));
+                        if (an.has_self_intersection() || an.has_cusp()) a.raise[s] = 1;
+                    }
+            }
+            pieces.clear();
+            for (std::size_t i = 0; i < arcs.size(); ++i) {
+                auto& a = arcs[i];
+                a.max_dev = 0;
+                for (std::size_t k = 0; k + 1 < a.line.points.size(); ++k) {
+                    const std::size_t s = a.vseg[k];
+                    geo::detail::piece pc;
+                    pc.arc = std::uint32_t(i);
+                    pc.seg = std::uint32_t(s);
+                    pc.linear = a.linear(s);
+                    const p2 pa = a.line.points[k], pb = a.line.points[k + 1];
+                    pc.q[0] = pa;
+                    pc.q[3] = pb;
+                    if (pc.linear) {
+                        pc.q[1] = pa;
+                        pc.q[2] = pb;
+                    } else {
+                        const auto seg = a.curve->segment(s);
+                        const double u0 = a.vu[k], u1e = a.vseg[k + 1] == s ? a.vu[k + 1] : 1.0;
+                        const double w = u1e - u0;
+                        pc.q[1] = pa + (w / 3) * seg.du(u0, 1);
+                        pc.q[2] = pb - (w / 3) * seg.du(u1e, 1);
+                        pc.e = flatness_bound(seg, u0, u1e) + slack;
+                    }
+                    worst_e = std::max(worst_e, pc.e);
+                    pc.bounds = box<2>::of(pa);
+                    pc.bounds.expand(pb);
+                    const p2 sa = a.pts[s], sb = a.pts[a.next(s)];
+                    const double dev = pc.linear ? 0.0
+                                                 : std::max(geo::detail::point_segment_distance(pa, sa, sb),
+                                                            geo::detail::point_segment_distance(pb, sa, sb)) +
+                                                       pc.e;
+                    a.max_dev = std::max(a.max_dev, dev);
+                    if (max_deviation && dev > *max_deviation && !pc.linear) a.raise[s] = 1;
+                    if (domain && !pc.linear)
+                        for (const p2& q : pc.q)
+                            if (!domain->contains(q)) a.raise[s] = 1;
+                    pieces.push_back(pc);
+                }
+            }
+            std::fill(arc_crossing.begin(), arc_crossing.end(), 0);
+            if (preserve_topology) {
+                double emax = 0;
+                for (const auto& pc : pieces) emax = std::max(emax, pc.e);
+                const double pad = 2 * emax + slack;
+                std::vector<std::uint32_t> order(pieces.size());
+                for (std::size_t k = 0; k < order.size(); ++k) order[k] = std::uint32_t(k);
+                std::sort(order.begin(), order.end(),
+                          [&](auto x, auto y) { return pieces[x].bounds.lo[0] < pieces[y].bounds.lo[0]; });
+                auto fail = [&](const geo::detail::piece& pc) {
+                    if (!pc.linear) arcs[pc.arc].raise[pc.seg] = 1;
+                };
+                for (std::size_t oi = 0; oi < order.size(); ++oi) {
+                    const auto& p = pieces[order[oi]];
+                    for (std::size_t oj = oi + 1; oj < order.size(); ++oj) {
+                        const auto& q = pieces[order[oj]];
+                        if (q.bounds.lo[0] > p.bounds.hi[0] + pad) break;
+                        if (q.bounds.lo[1] > p.bounds.hi[1] + pad || p.bounds.lo[1] > q.bounds.hi[1] + pad) continue;
+                        if (p.arc == q.arc && p.seg == q.seg) continue;
+                        const p2* shared = nullptr;
+                        for (int i = 0; i < 2 && !shared; ++i)
+                            for (int j = 0; j < 2 && !shared; ++j)
+                                if (p.q[3 * i] == q.q[3 * j]) shared = &p.q[3 * i];
+                        bool proved;
+                        if (shared) {
+                            proved = geo::detail::wedges_apart(p, q, *shared, slack);
+                        } else {
+                            const double d = geo::detail::segment_distance(p.q[0], p.q[3], q.q[0], q.q[3]);
+                            proved = d > p.e + q.e + (p.linear && q.linear ? 0.0 : slack);
+                        }
+                        if (proved) continue;
+                        if (p.linear && q.linear) {
+                            const bool proper = geo::detail::segments_cross(p.q[0], p.q[3], q.q[0], q.q[3]);
+                            for (auto ai : {p.arc, q.arc})
+                                arc_crossing[ai] = std::max<std::uint8_t>(arc_crossing[ai], proper ? 2 : 1);
+                            continue;
+                        }
+                        fail(p);
+                        fail(q);
+                    }
+                }
+            }
+            for (auto& a : arcs) {
+                a.dirty = false;
+                for (std::size_t s = 0; s < a.segments(); ++s) {
+                    if (!a.raise[s]) continue;
+                    failed = true;
+                    a.dirty = true;
+                    for (std::size_t v : {s, a.next(s)}) {
+                        const std::uint8_t to = round >= max_rounds / 2 ? geo::detail::linear_level
+                                                                        : std::uint8_t(a.level[v] + 1);
+                        a.level[v] = std::min(geo::detail::linear_level, std::max(a.level[v], to));
+                    }
+                }
+            }
+            if (!failed) break;
+            if (round >= max_rounds) break;
+        }
+    }
+    if (preserve_topology && worst_e > bound)
+        throw crspline::invalid_input("a piece's flatness margin " + crspline::detail::num(worst_e) +
+                                      " exceeds the bound " + crspline::detail::num(bound) +
+                                      " the arcs were grouped by (tolerance below the rounding of the coordinates?)");
+    // Lengths (step 4) and the polylines, knots exact.
+    std::vector<double> length(arcs.size(), 0), dev(arcs.size(), 0), vu;
+    std::vector<std::int64_t> line_offsets{0}, vseg;
+    std::vector<double> line;
+    for (std::size_t i = 0; i < arcs.size(); ++i) {
+        auto& a = arcs[i];
+        double len = 0;
+        for (std::size_t s = 0; s < a.segments(); ++s)
+            len += a.linear(s) ? norm(a.pts[a.next(s)] - a.pts[s]) : arc_length(a.curve->segment(s));
+        length[i] = len;
+        dev[i] = a.max_dev;
+        for (std::size_t k = 0; k < a.line.points.size(); ++k) {
+            line.push_back(a.line.points[k][0]);
+            line.push_back(a.line.points[k][1]);
+            vseg.push_back(std::int64_t(a.vseg[k]));
+            vu.push_back(a.vu[k]);
+        }
+        line_offsets.push_back(std::int64_t(vseg.size()));
+    }
+    py::array_t<double> lxy({py::ssize_t(vseg.size()), py::ssize_t(2)});
+    if (!line.empty()) std::copy(line.begin(), line.end(), lxy.mutable_data());
+    py::dict d;
+    d["xy"] = lxy;
+    d["offsets"] = to_numpy(line_offsets);
+    d["vseg"] = to_numpy(vseg);
+    d["vu"] = to_numpy(vu);
+    d["length"] = to_numpy(length);
+    d["max_deviation"] = to_numpy(dev);
+    d["crossing"] = to_numpy(arc_crossing);
+    d["rounds"] = rounds;
+    return d;
+}
+
 }  // namespace
 
 void bind_geo(py::module_& m) {
@@ -121,6 +453,15 @@ void bind_geo(py::module_& m) {
                    geo::feature_status::invalid})
         statuses.append(geo::to_string(s));
     for (auto v : {geo::verdict::simple, geo::verdict::touches, geo::verdict::crosses}) verdicts.append(geo::to_string(v));
+    m.def("_geo_clean", &geo_clean, py::arg("xy"), py::arg("part_offsets"), py::arg("part_kinds"),
+          py::arg("part_features"), py::arg("feature_count"),
+          "Step 1 of geo::smooth (statuses, cleaned parts); private: used by crspline.geo.dask.");
+    m.def("_geo_arc_boxes", &geo_arc_boxes, py::arg("xy"), py::arg("offsets"), py::arg("closed"), py::arg("alpha"),
+          "Boxes holding every tension level's curve of each arc; private: used by crspline.geo.dask.");
+    m.def("_geo_smooth_arcs", &geo_smooth_arcs, py::arg("xy"), py::arg("offsets"), py::arg("closed"),
+          py::arg("alpha"), py::arg("tolerance"), py::arg("max_deviation"), py::arg("preserve_topology"),
+          py::arg("domain"), py::arg("slack"), py::arg("bound"),
+          "Steps 3-4 of geo::smooth on a closed group of arcs; private: used by crspline.geo.dask.");
     m.attr("_geo_statuses") = statuses;
     m.attr("_geo_verdicts") = verdicts;
 }

@@ -29,7 +29,10 @@ the reported deviations are upper bounds in true metres. Lengths are
 geodesic on the ellipsoid (pyproj.Geod) along the output polylines. The
 frame's inverse is not used for the input vertices: they come back bit for
 bit. The curves are kept within the poles and the antimeridian (tension
-where they would leave); a line across the antimeridian is not unwrapped.
+where they would leave). A line or ring that crosses the antimeridian (a
+step of more than 180 degrees of longitude between neighbours) is unwrapped
+first: its longitudes made continuous (179, 181, ...), smoothed so, and
+brought back into [-180, 180] on output (input vertices bit for bit).
 """
 from __future__ import annotations
 
@@ -129,27 +132,94 @@ _B = _A * (1 - _F)
 _R_MAX = _A * _A / _B
 
 
+def _frame_stats(lonlat, original=None):
+    """What the geographic frame needs from some vertices: (latitude min,
+    max, smallest |latitude|, lo, hi of the finite rows of `lonlat` (the
+    longitudes unwrapped), lo, hi of those of `original` (as given)),
+    combined over partitions by _frame_from_stats."""
+    def box(a):
+        a = np.asarray(a, dtype=float).reshape(-1, 2)
+        finite = np.isfinite(a).all(axis=1)
+        return (a[finite].min(axis=0), a[finite].max(axis=0)) if finite.any() else (None, None)
+
+    lonlat = np.asarray(lonlat, dtype=float).reshape(-1, 2)
+    lat = lonlat[:, 1]
+    lat = lat[np.isfinite(lat)]
+    boxes = box(lonlat) + box(lonlat if original is None else original)
+    if lat.size == 0:
+        return (None, None, None) + boxes
+    return (float(lat.min()), float(lat.max()), float(np.min(np.abs(lat)))) + boxes
+
+
+def _frame_from_stats(stats, index=3):
+    """(scale_x, scale_y, lo, hi): metres per degree of the conservative
+    frame and the box (degrees) the curves stay in, from _frame_stats of
+    every piece of the layer (index 5: the box of the input as given)."""
+    lats = [s for s in stats if s[0] is not None]
+    if not lats or (min(s[0] for s in lats) <= 0 <= max(s[1] for s in lats)):
+        phi0 = 0.0
+    else:
+        phi0 = min(s[2] for s in lats)
+    k = _R_MAX * math.pi / 180
+    # The box: the globe's, grown to hold the input.
+    lo, hi = np.array([-180.0, -90.0]), np.array([180.0, 90.0])
+    for s in stats:
+        if s[index] is not None:
+            lo = np.minimum(lo, s[index])
+            hi = np.maximum(hi, s[index + 1])
+    return k * math.cos(math.radians(phi0)), k, lo, hi
+
+
 def geographic_frame(lonlat):
     """(scale_x, scale_y) in metres per degree of the conservative frame for
     these longitudes and latitudes (see the module's doc)."""
-    lat = np.asarray(lonlat, dtype=float)[:, 1]
-    lat = lat[np.isfinite(lat)]
-    if lat.size == 0 or (lat.min() <= 0 <= lat.max()):
-        phi0 = 0.0
-    else:
-        phi0 = float(np.min(np.abs(lat)))
-    k = _R_MAX * math.pi / 180
-    return k * math.cos(math.radians(phi0)), k
+    sx, sy, _, _ = _frame_from_stats([_frame_stats(lonlat)])
+    return sx, sy
 
 
-def _domain_degrees(lonlat):
-    """The box the curves must stay in: the globe's, grown to hold the input."""
-    lo, hi = np.array([-180.0, -90.0]), np.array([180.0, 90.0])
-    finite = np.isfinite(lonlat).all(axis=1)
-    if finite.any():
-        lo = np.minimum(lo, lonlat[finite].min(axis=0))
-        hi = np.maximum(hi, lonlat[finite].max(axis=0))
-    return lo, hi
+def _unwrap(xy, offsets, kinds):
+    """Longitudes made continuous along each line or ring that crosses the
+    antimeridian (a step of more than 180 degrees between neighbours is
+    taken as the short way across +-180): returns the unwrapped (n, 2) array
+    (the input when nothing crosses) and a flag per part. A ring whose
+    steps add up to a turn round the pole is left as it is (it has no
+    continuous longitude)."""
+    n = len(xy)
+    unwrapped = np.zeros(len(offsets) - 1, dtype=bool)
+    if n < 2:
+        return xy, unwrapped
+    lon = xy[:, 0]
+    with np.errstate(invalid="ignore"):
+        step = np.diff(lon)
+        jump = np.where(step > 180, -360.0, np.where(step < -180, 360.0, 0.0))
+    part_of = np.repeat(np.arange(len(offsets) - 1), np.diff(offsets))
+    jump[part_of[:-1] != part_of[1:]] = 0.0  # no step between parts
+    if not jump.any():
+        return xy, unwrapped
+    shift = np.concatenate(([0.0], np.cumsum(jump)))
+    starts = np.asarray(offsets[:-1], dtype=np.int64)
+    nonempty = np.diff(offsets) > 0
+    base = np.zeros(len(offsets) - 1)
+    base[nonempty] = shift[starts[nonempty]]
+    shift = shift - base[part_of]  # from each part's first vertex
+    ends = np.asarray(offsets[1:], dtype=np.int64) - 1
+    moved = np.zeros(len(offsets) - 1, dtype=bool)
+    np.logical_or.at(moved, part_of, shift != 0)
+    for p in np.flatnonzero(moved):
+        if kinds[p] == 1:
+            # The closing step, last vertex to first, unwrapped too: a ring
+            # round a pole does not come back to its start.
+            with np.errstate(invalid="ignore"):
+                close = lon[starts[p]] - (lon[ends[p]] + shift[ends[p]])
+            if not (abs(close) <= 180):
+                shift[starts[p]:ends[p] + 1] = 0.0
+                continue
+        unwrapped[p] = True
+    if not unwrapped.any():
+        return xy, unwrapped
+    out = xy.copy()
+    out[:, 0] = lon + shift
+    return out, unwrapped
 
 
 def _restore_inputs(out_xy, frame_in, original):
@@ -167,39 +237,86 @@ def _restore_inputs(out_xy, frame_in, original):
     return hit, order[pos]
 
 
+class _Prepared:
+    """A layer's flat arrays and, on a geographic CRS, its unwrapped
+    longitudes (the frame itself is layer-wide: see _Frame)."""
+
+    def __init__(self, geoms, geographic, has_z=None):
+        self.geoms = geoms
+        self.layer = _Layer(geoms)
+        if has_z is not None:
+            self.layer.has_z = has_z
+        self.xy, self.z, self.offsets, self.kinds, self.features = self.layer.arrays()
+        self.geographic = geographic
+        self.unwrapped = np.zeros(len(self.offsets) - 1, dtype=bool)
+        self.lonlat = self.xy
+        if geographic:
+            self.lonlat, self.unwrapped = _unwrap(self.xy, self.offsets, self.kinds)
+
+    def frame_stats(self):
+        return _frame_stats(self.lonlat, self.xy)
+
+
+class _Frame:
+    """The layer's frame: identity on a projected CRS; on a geographic one
+    the conservative equirectangular frame in metres and the box the curves
+    stay in (see the module doc)."""
+
+    def __init__(self, geographic, stats=()):
+        self.geographic = geographic
+        if geographic:
+            # The curves stay in lo..hi (the globe's box grown to hold the
+            # unwrapped input); the output is brought back into clip_lo..
+            # clip_hi (grown to hold the input as given).
+            self.sx, self.sy, self.lo, self.hi = _frame_from_stats(stats)
+            _, _, self.clip_lo, self.clip_hi = _frame_from_stats(stats, 5)
+            self.domain = (self.lo[0] * self.sx, self.lo[1] * self.sy, self.hi[0] * self.sx, self.hi[1] * self.sy)
+        else:
+            self.domain = None
+
+    def forward(self, lonlat):
+        if not self.geographic:
+            return lonlat
+        return np.column_stack((lonlat[:, 0] * self.sx, lonlat[:, 1] * self.sy))
+
+
 def _run(series, *, alpha, tolerance, max_deviation, preserve):
+    geoms = list(series.values)
+    crs = series.crs
+    prep = _Prepared(geoms, crs is not None and crs.is_geographic)
+    frame = _Frame(prep.geographic, [prep.frame_stats()])
+    frame_xy = frame.forward(prep.lonlat)
+    r = _crspline._geo_smooth(frame_xy, prep.z, prep.offsets, prep.kinds, prep.features, prep.layer.feature_count,
+                              float(alpha), float(tolerance), None if max_deviation is None else float(max_deviation),
+                              bool(preserve), frame.domain)
+    return _finish(prep, frame, frame_xy, r)
+
+
+def _finish(prep, frame, frame_xy, r):
+    """The geometries and measures from the core's result `r` (frame
+    coordinates; the same keys as _crspline._geo_smooth returns)."""
     from shapely.geometry import LinearRing, LineString, MultiLineString, MultiPolygon, Polygon
 
-    geoms = list(series.values)
-    layer = _Layer(geoms)
-    xy, z, offsets, kinds, features = layer.arrays()
-    crs = series.crs
-    geographic = crs is not None and crs.is_geographic
-    frame_xy = xy
-    domain = None
-    if geographic:
-        # Curves stay within the poles and the antimeridian.
-        sx, sy = geographic_frame(xy)
-        frame_xy = np.column_stack((xy[:, 0] * sx, xy[:, 1] * sy))
-        lo, hi = _domain_degrees(xy)
-        domain = (lo[0] * sx, lo[1] * sy, hi[0] * sx, hi[1] * sy)
-    r = _crspline._geo_smooth(frame_xy, z, offsets, kinds, features, layer.feature_count, float(alpha),
-                              float(tolerance), None if max_deviation is None else float(max_deviation),
-                              bool(preserve), domain)
+    geoms, layer, xy, features = prep.geoms, prep.layer, prep.xy, prep.features
     out = r["xy"]
-    if geographic:
-        back = np.column_stack((out[:, 0] / sx, out[:, 1] / sy))
+    offs = r["part_offsets"]
+    if frame.geographic:
+        back = np.column_stack((out[:, 0] / frame.sx, out[:, 1] / frame.sy))
         hit, idx = _restore_inputs(out, frame_xy, xy)
+        lo, hi = frame.clip_lo, frame.clip_hi
+        if frame.hi[0] > hi[0] or frame.lo[0] < lo[0]:
+            # A part was unwrapped across the antimeridian, so curves may go
+            # past +-180: they come back by a turn.
+            lon = back[:, 0]
+            back[:, 0] = np.where(lon > hi[0], lon - 360, np.where(lon < lo[0], lon + 360, lon))
         # The curves were kept inside the frame's box; the division may round
         # past it. (Input vertices come back as they were, even a longitude
         # of 180.00000000000006 as Natural Earth has.)
-        lo, hi = _domain_degrees(xy)
         np.clip(back[:, 0], lo[0], hi[0], out=back[:, 0])
         np.clip(back[:, 1], lo[1], hi[1], out=back[:, 1])
         back[hit] = xy[idx[hit]]
         out = back
     oz = r["extra"]
-    offs = r["part_offsets"]
     statuses = _crspline._geo_statuses
     verdicts = _crspline._geo_verdicts
     status = []
@@ -250,12 +367,12 @@ def _run(series, *, alpha, tolerance, max_deviation, preserve):
                 status[i] = f"degenerate: {e}: passed through unchanged"
         new.append(geom)
     length = np.asarray(r["length"], dtype=float)
-    if geographic:
+    if frame.geographic:
         length = _geodesic_lengths(out, offs, features, layer.feature_count)
     for i in layer.unsupported:
         length[i] = 0.0
     verdict = [verdicts[v] for v in r["verdict"]]
-    return new, length, np.asarray(r["max_deviation"], dtype=float), verdict, status, r["stats"]
+    return new, length, np.asarray(r["max_deviation"], dtype=float), verdict, status, r.get("stats", {})
 
 
 def _geodesic_lengths(lonlat, offsets, features, feature_count):

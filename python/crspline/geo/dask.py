@@ -4,26 +4,61 @@
 ``crspline.geo.smooth`` gives on the same layer in one process, byte for
 byte (geometry as WKB out), with the same options and columns.
 
-How the work is spread (and what is not yet): decoding the WKB of each
-partition and encoding the results run on the workers, partition by
-partition; the smoothing itself (topology, arcs, proof) runs as ONE task
-over the whole layer, so a boundary shared by features in different
-partitions is still one arc, smoothed once, and the rows match the
-single-process path exactly. That task needs the layer's vertices in one
-worker's memory: the arc-keyed shuffle that would smooth arcs on many
-workers (group arcs by their end vertices) is not implemented yet.
+How the work is spread. No task holds the layer's vertices; each stage is
+a set of tasks, and the stages meet by shuffles (every task of one stage
+sends each task of the next the records whose key hashes to it, as Dask's
+task-based shuffle does):
+
+1. per partition: WKB decoded, parts cleaned (the core's step 1), and, on a
+   geographic CRS, lines across the antimeridian unwrapped; a few numbers
+   per partition (latitudes, boxes, the largest coordinate) make the
+   layer-wide frame and rounding slack, as the single-process path has them;
+2. shuffle by vertex (its exact coordinates): a vertex is a junction when
+   its distinct neighbours over all partitions are not exactly two, or it
+   ends a line; its first occurrence in layer order is kept, so the arcs'
+   direction is the one the single-process path picks;
+3. per partition: parts cut into arcs at the junctions, each arc keyed by
+   its vertex sequence in canonical direction; shuffle by arc key, so the
+   copies of a boundary shared by features in different partitions meet in
+   one task and the arc is smoothed once;
+4. the crossing proof pairs pieces of different arcs, so arcs that may meet
+   must be smoothed together. Each distinct arc's box holds its curve at
+   every tension level (the box of its untensioned Bezier points: tension
+   only pulls the inner points towards the ends), padded by the largest
+   flatness margin a piece can have (tolerance + 2 slack, checked by the
+   core after smoothing); arcs whose padded boxes overlap are linked, and
+   each connected group is smoothed in one task by the core's own rounds
+   (tension raised where a pair is not proved). A pair of pieces in two
+   groups is more than the sum of their margins apart at every tension, so
+   it is proved without being looked at: the proof is complete, and every
+   arc ends with the tension the single-process run gives it. Only the
+   boxes (four numbers per arc) meet in one task, to find the groups;
+5. shuffle back: each partition gets the smoothed arcs its parts use, and
+   rebuilds its rings and measures as crspline.geo.smooth does.
+
+What this does not spread: a group is one task, and in a coverage (every
+country touching its neighbours) the touching features form one group, so
+step 4 for Natural Earth's Eurasia and Africa is one task. Separate lines
+and islands spread over the workers.
 
 ``write_partitions(result, directory, crs=...)`` writes one file per
-partition (GeoJSON by default; any fiona driver), each on a worker.
+partition (GeoJSON by default; any fiona driver), each by a task on a worker.
 """
 from __future__ import annotations
 
+import copy
 import os
+import zlib
 
-__all__ = ["smooth", "write_partitions"]
+import numpy as np
+
+__all__ = ["smooth", "write_partitions", "arc_counts"]
 
 _OUT_COLUMNS = ("length", "max_deviation", "verdict", "status")
+_POS_BITS = 40  # a vertex's place in layer order: partition << 40 | index in the partition
 
+
+# --- 1. per partition --------------------------------------------------------
 
 def _decode(df, geometry):
     """A partition's WKB column as Shapely geometries (None stays None)."""
@@ -32,64 +67,530 @@ def _decode(df, geometry):
     return [None if b is None else wkb.loads(bytes(b)) for b in df[geometry]]
 
 
-def _smooth_all(decoded, crs, options):
-    """The whole layer in one call of crspline.geo.smooth: per partition,
-    the columns to add (geometry WKB and the four measures)."""
-    import geopandas as gpd
+def _prepare(df, geometry, geographic):
+    from . import _Prepared
 
-    from . import smooth as smooth_series
-
-    sizes = [len(d) for d in decoded]
-    geoms = [g for d in decoded for g in d]
-    series = gpd.GeoSeries(geoms, crs=crs)
-    out = smooth_series(series, **options)
-    results, k = [], 0
-    for n in sizes:
-        part = out.iloc[k:k + n]
-        results.append({
-            "geometry": [None if g is None else g.wkb for g in part.geometry],
-            "length": part["length"].to_numpy(),
-            "max_deviation": part["max_deviation"].to_numpy(),
-            "verdict": part["verdict"].to_list(),
-            "status": part["status"].to_list(),
-        })
-        k += n
-    return results
+    prep = _Prepared(_decode(df, geometry), geographic)
+    return {"prep": prep, "stats": prep.frame_stats() if geographic else None, "has_z": prep.layer.has_z,
+            "features": prep.layer.feature_count}
 
 
-def _assemble(df, result, geometry):
-    out = df.copy()
-    out[geometry] = result["geometry"]
-    for c in _OUT_COLUMNS:
-        out[c] = result[c]
+def _layer_info(prepared, geographic):
+    """Layer-wide numbers: the frame, Z or not, each partition's first
+    feature (in layer order)."""
+    from . import _Frame
+
+    frame = _Frame(geographic, [p["stats"] for p in prepared])
+    first = np.concatenate(([0], np.cumsum([p["features"] for p in prepared])))
+    return {"frame": frame, "has_z": any(p["has_z"] for p in prepared), "first_feature": first}
+
+
+def _vertex_keys(xy):
+    """Exact coordinates as integer keys (-0 is 0), one row per vertex."""
+    a = np.where(xy == 0, 0.0, xy)
+    return np.ascontiguousarray(a).view(np.int64).reshape(-1, 2)
+
+
+def _bucket_of_keys(keys, buckets):
+    h = (keys[:, 0].astype(np.uint64) * np.uint64(0x9E3779B97F4A7C15)) ^ keys[:, 1].astype(np.uint64)
+    h ^= h >> np.uint64(29)
+    return (h % np.uint64(buckets)).astype(np.int64)
+
+
+def _clean(a, info, index, buckets, preserve):
+    """Frame coordinates, the core's cleaning, and the vertex records for
+    the junction shuffle (bucketed by vertex key)."""
+    from .. import _crspline
+
+    prep = a["prep"]
+    if info["has_z"] and not prep.layer.has_z:
+        # Z somewhere in the layer: every part gets it (0 where it had none).
+        prep = copy.copy(prep)
+        prep.layer = copy.copy(prep.layer)
+        prep.layer.has_z = True
+        prep.z = np.zeros((len(prep.xy), 1))
+    frame = info["frame"]
+    frame_xy = frame.forward(prep.lonlat)
+    c = _crspline._geo_clean(frame_xy, prep.offsets, prep.kinds, prep.features, prep.layer.feature_count)
+    verts = c["vertices"]
+    pts = frame_xy[verts]
+    scale = float(np.max(np.abs(pts))) if len(pts) else 0.0
+    out = {"prep": prep, "frame_xy": frame_xy, "clean": c, "scale": scale, "index": index}
+    if not preserve:
+        return out
+    keys = _vertex_keys(pts)
+    offs = c["offsets"]
+    n = len(verts)
+    part_of = np.repeat(np.arange(len(offs) - 1), np.diff(offs))
+    ring = c["rings"].astype(bool)
+    # Each vertex's neighbours along its part (both ways; a ring closes).
+    nxt = np.arange(1, n + 1)
+    prv = np.arange(-1, n - 1)
+    starts, ends = offs[:-1], offs[1:] - 1
+    nxt[ends] = np.where(ring, starts, -1)
+    prv[starts] = np.where(ring, ends, -1)
+    line_end = np.zeros(n, dtype=bool)
+    line_end[starts[~ring]] = True
+    line_end[ends[~ring]] = True
+    pos = (np.int64(index) << _POS_BITS) + np.arange(n, dtype=np.int64)
+    rec_v, rec_n = [], []
+    for nb in (nxt, prv):
+        has = nb >= 0
+        rec_v.append(np.flatnonzero(has))
+        rec_n.append(nb[has])
+    v = np.concatenate(rec_v)
+    nbr = np.concatenate(rec_n)
+    b_vertex = _bucket_of_keys(keys, buckets)
+    # Per bucket: every vertex once (key, place, line end) and its edges.
+    out["keys"] = keys
+    out["vbuckets"] = []
+    for b in range(buckets):
+        mine = np.flatnonzero(b_vertex == b)
+        edges = v[b_vertex[v] == b]
+        nbs = nbr[b_vertex[v] == b]
+        out["vbuckets"].append({"vertex": mine, "key": keys[mine], "pos": pos[mine], "line_end": line_end[mine],
+                                "edge_key": keys[edges], "edge_nbr": keys[nbs]})
     return out
 
 
-def smooth(ddf, *, crs, geometry="geometry", alpha=0.5, tolerance=None, max_deviation=None, topology="preserve"):
-    """Smooth a Dask DataFrame's WKB geometry column (see crspline.geo.smooth
-    for the options and columns). `crs`: the layer's CRS (anything pyproj
-    takes). Returns a lazy Dask DataFrame with the same partitions, index
-    and columns, the geometry smoothed (WKB) and the four measure columns."""
-    import dask
-    import dask.dataframe as dd
-    import pandas as pd
+# --- 2. junctions, by vertex ---------------------------------------------------
+
+def _junctions(*records):
+    """One bucket of vertices from every partition: junction flag and first
+    place in layer order per vertex key, answered to each partition for the
+    vertices it sent."""
+    keys = np.concatenate([r["key"] for r in records]).reshape(-1, 2)
+    uniq, inv = np.unique(keys, axis=0, return_inverse=True)
+    inv = inv.reshape(-1)
+    first = np.full(len(uniq), np.iinfo(np.int64).max, dtype=np.int64)
+    np.minimum.at(first, inv, np.concatenate([r["pos"] for r in records]))
+    junction = np.zeros(len(uniq), dtype=bool)
+    np.logical_or.at(junction, inv, np.concatenate([r["line_end"] for r in records]))
+    # Distinct neighbours per vertex.
+    ek = np.concatenate([r["edge_key"] for r in records]).reshape(-1, 2)
+    en = np.concatenate([r["edge_nbr"] for r in records]).reshape(-1, 2)
+    if len(ek):
+        pairs = np.unique(np.hstack((ek, en)), axis=0)
+        vk = pairs[:, :2]
+        idx = _rows_in(uniq, vk)
+        count = np.bincount(idx, minlength=len(uniq))
+    else:
+        count = np.zeros(len(uniq), dtype=np.int64)
+    junction |= count != 2
+    answers, k = [], 0
+    for r in records:
+        m = len(r["key"])
+        sel = inv[k:k + m]
+        answers.append({"vertex": r["vertex"], "junction": junction[sel], "first": first[sel]})
+        k += m
+    return answers
+
+
+def _rows_in(table, rows):
+    """Index in `table` (unique rows, sorted as np.unique sorts them) of each
+    row of `rows` (all present)."""
+    t = np.ascontiguousarray(table).view([("x", np.int64), ("y", np.int64)]).reshape(-1)
+    r = np.ascontiguousarray(rows).view([("x", np.int64), ("y", np.int64)]).reshape(-1)
+    return np.searchsorted(t, r)
+
+
+# --- 3. arcs, by key -----------------------------------------------------------
+
+def _cut(b, info, buckets, *answers):
+    """The partition's parts cut into arcs at the layer's junctions, each in
+    the canonical direction geo::smooth gives it (by first occurrence in
+    layer order), bucketed by arc key."""
+    c = b["clean"]
+    n = len(c["vertices"])
+    junction = np.zeros(n, dtype=bool)
+    first = np.zeros(n, dtype=np.int64)
+    for a in answers:
+        junction[a["vertex"]] = a["junction"]
+        first[a["vertex"]] = a["first"]
+    keys, offs = b["keys"], c["offsets"]
+    pts = b["frame_xy"][c["vertices"]]
+    prep = b["prep"]
+    extra = prep.z[c["vertices"]] if prep.layer.has_z else None
+    p_index = b["index"]
+    feature0 = int(info["first_feature"][p_index])
+    parts = []  # per clean part: [(arc key, reversed)]
+    abuckets = [dict() for _ in range(buckets)]
+    for q in range(len(offs) - 1):
+        s, e = int(offs[q]), int(offs[q + 1])
+        ids = first[s:e]
+        jn = junction[s:e]
+        m = e - s
+        runs = []  # (local indices in the part, closed)
+        if c["rings"][q]:
+            jidx = np.flatnonzero(jn)
+            if len(jidx) == 0:
+                runs.append((np.arange(m), True))
+            else:
+                walk = (jidx[0] + np.arange(m + 1)) % m
+                cuts = np.flatnonzero(jn[walk])
+                for u, w in zip(cuts[:-1], cuts[1:]):
+                    runs.append((walk[u:w + 1], False))
+        else:
+            cuts = np.flatnonzero(jn)
+            for u, w in zip(cuts[:-1], cuts[1:]):
+                runs.append((np.arange(u, w + 1), False))
+        arcs = []
+        for k, (seq, closed) in enumerate(runs):
+            sid = ids[seq]
+            reversed_ = False
+            if closed:
+                r = int(np.argmin(sid))
+                seq = np.roll(seq, -r)
+                sid = ids[seq]
+                if sid[-1] < sid[1]:
+                    seq = np.concatenate((seq[:1], seq[1:][::-1]))
+                    reversed_ = True
+            else:
+                diff = np.flatnonzero(sid != sid[::-1])
+                if len(diff) and sid[::-1][diff[0]] < sid[diff[0]]:
+                    seq = seq[::-1]
+                    reversed_ = True
+            g = s + seq
+            key = keys[g].tobytes() + (b"c" if closed else b"o")
+            arcs.append((key, reversed_))
+            bucket = zlib.crc32(key) % buckets
+            rec = abuckets[bucket].get(key)
+            order = (p_index, q, k)
+            feature = feature0 + int(c["features"][q])
+            if rec is None:
+                abuckets[bucket][key] = {"order": order, "xy": pts[g], "closed": closed,
+                                         "extra": None if extra is None else extra[g],
+                                         "features": {feature}, "partitions": {p_index}}
+            else:
+                rec["features"].add(feature)
+        parts.append(arcs)
+    return {"parts": parts, "abuckets": abuckets}
+
+
+def _arc_split(cut, bucket):
+    return cut["abuckets"][bucket]
+
+
+def _distinct_arcs(alpha, *records):
+    """One bucket of arc records from every partition: each distinct arc
+    once (its first occurrence's coordinates and Z, all its features and
+    partitions) and the box that holds it at every tension."""
+    from .. import _crspline
+
+    arcs = {}
+    for r in records:
+        for key, rec in r.items():
+            have = arcs.get(key)
+            if have is None:
+                arcs[key] = dict(rec, features=set(rec["features"]), partitions=set(rec["partitions"]))
+            else:
+                if rec["order"] < have["order"]:
+                    for f in ("order", "xy", "extra"):
+                        have[f] = rec[f]
+                have["features"] |= rec["features"]
+                have["partitions"] |= rec["partitions"]
+    keys = sorted(arcs, key=lambda k: arcs[k]["order"])
+    xy, offs, closed = _flat([arcs[k] for k in keys])
+    boxes = _crspline._geo_arc_boxes(xy, offs, closed, float(alpha)) if keys else np.zeros((0, 4))
+    return {"keys": keys, "arcs": arcs, "boxes": boxes}
+
+
+def _flat(arcs):
+    xy = np.concatenate([a["xy"] for a in arcs]) if arcs else np.zeros((0, 2))
+    offs = np.concatenate(([0], np.cumsum([len(a["xy"]) for a in arcs]))).astype(np.int64)
+    closed = np.asarray([a["closed"] for a in arcs], dtype=np.uint8)
+    return xy, offs, closed
+
+
+# --- 4. groups of arcs that may meet --------------------------------------------
+
+def _slack(cleaned, tolerance):
+    """geo::smooth's rounding slack: 64 eps times the layer's largest
+    coordinate (or the tolerance, if larger)."""
+    scale = max([c["scale"] for c in cleaned] + [0.0])
+    return 64 * np.finfo(float).eps * max(scale, float(tolerance))
+
+
+def _groups(slack, tolerance, buckets, *distinct):
+    """Arcs linked when their boxes, padded by the largest flatness margin
+    a piece may have, overlap; per distinct-arc bucket, the group task of
+    each arc (groups spread over `buckets` tasks) and its group."""
+    # A piece's margin e is its flatness bound (at most the tolerance, up to
+    # rounding) plus the slack: at most `bound`, which the core checks.
+    bound = float(tolerance) + 2 * slack
+    pad = bound + slack  # two padded boxes apart: more than 2 bound + slack between the pieces
+    boxes = np.concatenate([d["boxes"] for d in distinct]) if distinct else np.zeros((0, 4))
+    n = len(boxes)
+    lo = boxes[:, :2] - pad
+    hi = boxes[:, 2:] + pad
+    parent = np.arange(n)
+
+    def root(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    order = np.argsort(lo[:, 0], kind="stable")
+    lo_sorted = lo[order, 0]
+    for i in range(n):
+        # Candidates: boxes starting (in x) before this one ends.
+        j_end = np.searchsorted(lo_sorted, hi[i, 0], side="right")
+        cand = order[:j_end]
+        cand = cand[(hi[cand, 0] >= lo[i, 0]) & (lo[cand, 1] <= hi[i, 1]) & (hi[cand, 1] >= lo[i, 1])]
+        ri = root(i)
+        for j in cand:
+            rj = root(j)
+            if rj != ri:
+                parent[max(ri, rj)] = min(ri, rj)
+                ri = min(ri, rj)
+    group = np.array([root(i) for i in range(n)], dtype=np.int64)
+    out, k = [], 0
+    for d in distinct:
+        m = len(d["boxes"])
+        g = group[k:k + m]
+        out.append({"group": g, "task": g % buckets})
+        k += m
+    return {"assign": out, "bound": bound, "groups": int(len(np.unique(group)))}
+
+
+def _to_group_task(d, groups, d_index, task):
+    a = groups["assign"][d_index]
+    sel = np.flatnonzero(a["task"] == task)
+    return [(int(a["group"][i]), d["keys"][i], d["arcs"][d["keys"][i]]) for i in sel]
+
+
+def _smooth_groups(options, frame_domain, slack, groups, partitions, *pieces):
+    """Each group of arcs smoothed by the core's rounds; per partition, the
+    smoothed arcs its parts use."""
+    from .. import _crspline
+
+    by_group = {}
+    for piece in pieces:
+        for g, key, arc in piece:
+            by_group.setdefault(g, []).append((key, arc))
+    answers = [dict() for _ in range(partitions)]
+    max_dev = options["max_deviation"]
+    for g, members in by_group.items():
+        # The core's arc order: first occurrence in layer order.
+        members.sort(key=lambda m: m[1]["order"])
+        arcs = [m[1] for m in members]
+        xy, offs, closed = _flat(arcs)
+        r = _crspline._geo_smooth_arcs(xy, offs, closed, float(options["alpha"]), float(options["tolerance"]),
+                                       None if max_dev is None else float(max_dev), True, frame_domain, slack,
+                                       groups["bound"])
+        # Verdicts: an arc touches when several features use it or one of
+        # its ends (a junction) is shared by several features' arcs: all
+        # arcs ending at a vertex are in its group (their boxes meet there).
+        at_end = {}
+        for (key, arc) in members:
+            if not arc["closed"]:
+                for v in (arc["xy"][0], arc["xy"][-1]):
+                    at_end.setdefault(_vertex_keys(v.reshape(1, 2)).tobytes(), set()).update(arc["features"])
+        lo = r["offsets"]
+        for i, (key, arc) in enumerate(members):
+            touches = len(arc["features"]) > 1
+            if not arc["closed"]:
+                for v in (arc["xy"][0], arc["xy"][-1]):
+                    touches = touches or len(at_end[_vertex_keys(v.reshape(1, 2)).tobytes()]) > 1
+            crossing = int(r["crossing"][i])
+            verdict = 2 if crossing == 2 else (1 if touches or crossing == 1 else 0)
+            a, b = lo[i], lo[i + 1]
+            result = {"xy": r["xy"][a:b], "vseg": r["vseg"][a:b], "vu": r["vu"][a:b],
+                      "length": float(r["length"][i]), "max_deviation": float(r["max_deviation"][i]),
+                      "verdict": verdict, "extra": arc["extra"], "n": len(arc["xy"]), "closed": arc["closed"]}
+            for p in arc["partitions"]:
+                answers[p][key] = result
+    return answers
+
+
+# --- 5. back to the partitions ------------------------------------------------
+
+def _assemble_parts(b, arc_of, part_arcs):
+    """The core's output layer (frame coordinates) for one partition, from
+    the smoothed arcs of its clean parts: as geo::smooth's step 4 emits it."""
+    prep, c, frame_xy = b["prep"], b["clean"], b["frame_xy"]
+    E = 1 if prep.layer.has_z else 0
+    nparts = len(prep.offsets) - 1
+    clean_of = np.full(nparts, -1, dtype=np.int64)
+    clean_of[c["parts"]] = np.arange(len(c["parts"]))
+    nf = prep.layer.feature_count
+    length = np.zeros(nf)
+    dev = np.zeros(nf)
+    verdict = np.zeros(nf, dtype=np.uint8)
+    out_xy, out_z, offsets = [], [], [0]
+    for p in range(nparts):
+        s, e = int(prep.offsets[p]), int(prep.offsets[p + 1])
+        q = clean_of[p]
+        if q < 0:
+            out_xy.append(frame_xy[s:e])
+            out_z.append(prep.z[s:e])
+            offsets.append(offsets[-1] + (e - s))
+            continue
+        f = int(prep.features[p])
+        chunks, zchunks = [], []
+        for j, (key, reversed_) in enumerate(part_arcs[q]):
+            a = arc_of[key]
+            length[f] += a["length"]
+            dev[f] = max(dev[f], a["max_deviation"])
+            verdict[f] = max(verdict[f], a["verdict"])
+            idx = np.arange(len(a["xy"]))
+            if reversed_:
+                idx = idx[::-1]
+            if j > 0:
+                idx = idx[1:]  # the junction, already out
+            chunks.append(a["xy"][idx])
+            if E:
+                seg = a["vseg"][idx]
+                nxt = np.where(seg + 1 == a["n"], 0, seg + 1)
+                e0, e1 = a["extra"][seg, 0], a["extra"][nxt, 0]
+                u = a["vu"][idx]
+                zchunks.append(np.where(u == 0, e0, np.where(u == 1, e1, e0 + u * (e1 - e0))).reshape(-1, 1))
+        part = np.concatenate(chunks)
+        zpart = np.concatenate(zchunks) if E else np.zeros((len(part), 0))
+        if c["rings"][q] and not (part[0, 0] == part[-1, 0] and part[0, 1] == part[-1, 1]):
+            part = np.vstack((part, part[:1]))
+            zpart = np.vstack((zpart, zpart[:1]))
+        out_xy.append(part)
+        out_z.append(zpart)
+        offsets.append(offsets[-1] + len(part))
+    return {"xy": np.concatenate(out_xy) if out_xy else np.zeros((0, 2)),
+            "extra": np.concatenate(out_z) if out_z else np.zeros((0, E)),
+            "part_offsets": np.asarray(offsets, dtype=np.int64), "status": c["status"],
+            "message": c["message"], "verdict": verdict, "length": length, "max_deviation": dev}
+
+
+def _finish_partition(df, b, info, geometry, r):
+    from . import _finish
+
+    new, length, dev, verdict, status, _ = _finish(b["prep"], info["frame"], b["frame_xy"], r)
+    out = df.copy()
+    out[geometry] = [None if g is None else g.wkb for g in new]
+    out["length"] = length
+    out["max_deviation"] = dev
+    out["verdict"] = verdict
+    out["status"] = status
+    return out
+
+
+def _assemble(df, b, cut, info, geometry, *answers):
+    arc_of = {}
+    for a in answers:
+        arc_of.update(a)
+    return _finish_partition(df, b, info, geometry, _assemble_parts(b, arc_of, cut["parts"]))
+
+
+def _assemble_alone(df, b, info, geometry, options, slack):
+    """topology="none": each part is its own arc, smoothed alone (no proof),
+    with the layer's slack: no shuffle needed."""
+    from .. import _crspline
+
+    c = b["clean"]
+    pts = b["frame_xy"][c["vertices"]]
+    offs = np.asarray(c["offsets"], dtype=np.int64)
+    closed = np.asarray(c["rings"], dtype=np.uint8)
+    max_dev = options["max_deviation"]
+    r = _crspline._geo_smooth_arcs(pts, offs, closed, float(options["alpha"]), float(options["tolerance"]),
+                                   None if max_dev is None else float(max_dev), False, info["frame"].domain, slack,
+                                   float("inf"))
+    prep = b["prep"]
+    extra = prep.z[c["vertices"]] if prep.layer.has_z else None
+    arc_of, parts = {}, []
+    for q in range(len(offs) - 1):
+        a, e = r["offsets"][q], r["offsets"][q + 1]
+        arc_of[q] = {"xy": r["xy"][a:e], "vseg": r["vseg"][a:e], "vu": r["vu"][a:e], "length": float(r["length"][q]),
+                     "max_deviation": float(r["max_deviation"][q]), "verdict": 0,
+                     "extra": None if extra is None else extra[offs[q]:offs[q + 1]],
+                     "n": int(offs[q + 1] - offs[q]), "closed": bool(closed[q])}
+        parts.append([(q, False)])
+    return _finish_partition(df, b, info, geometry, _assemble_parts(b, arc_of, parts))
+
+
+def _check_frame(ddf, geometry, alpha, tolerance, max_deviation, topology):
+    from . import _check
 
     for c in _OUT_COLUMNS:
         if c in ddf.columns:
             raise ValueError(f"the input already has a column named {c!r}; rename it first")
     if geometry not in ddf.columns:
         raise ValueError(f"no geometry column {geometry!r} in the Dask DataFrame (columns: {list(ddf.columns)})")
-    if tolerance is None:
-        raise ValueError("tolerance is required (a distance in the layer's units, metres on a geographic CRS)")
-    options = dict(alpha=alpha, tolerance=tolerance, max_deviation=max_deviation, topology=topology)
-    parts = ddf.to_delayed()
-    decoded = [dask.delayed(_decode)(p, geometry) for p in parts]
-    whole = dask.delayed(_smooth_all)(decoded, crs, options)
+    _check(alpha, tolerance, max_deviation, topology)
+
+
+def _stages(ddf, *, crs, geometry, alpha, tolerance, max_deviation, topology, buckets):
+    """The task graph, stage by stage (lazy Dask objects): "outs" (one
+    pandas frame per partition) and, with topology "preserve", "distinct"
+    (the distinct arcs per bucket) and "groups"."""
+    import dask
+    import pyproj
+
+    geographic = crs is not None and pyproj.CRS.from_user_input(crs).is_geographic
+    preserve = topology == "preserve"
+    options = dict(alpha=alpha, tolerance=tolerance, max_deviation=max_deviation)
+    delayed = dask.delayed
+    frames = ddf.to_delayed()
+    P = len(frames)
+    B = int(buckets or P)
+    if B < 1:
+        raise ValueError(f"buckets must be at least 1, got {B}")
+    # 1. Per partition, and the layer-wide numbers.
+    prepared = [delayed(_prepare)(f, geometry, geographic) for f in frames]
+    info = delayed(_layer_info)(prepared, geographic)
+    cleaned = [delayed(_clean)(a, info, i, B, preserve) for i, a in enumerate(prepared)]
+    slack = delayed(_slack)(cleaned, tolerance)
+    if not preserve:
+        return {"outs": [delayed(_assemble_alone)(f, c, info, geometry, options, slack)
+                         for f, c in zip(frames, cleaned)]}
+    # 2. Junctions, shuffled by vertex.
+    junctions = [delayed(_junctions, nout=P)(*[c["vbuckets"][j] for c in cleaned]) for j in range(B)]
+    # 3. Arcs, shuffled by arc key.
+    cuts = [delayed(_cut)(c, info, B, *[junctions[j][i] for j in range(B)]) for i, c in enumerate(cleaned)]
+    distinct = [delayed(_distinct_arcs)(alpha, *[delayed(_arc_split)(cut, j) for cut in cuts]) for j in range(B)]
+    # 4. Groups of arcs that may meet (boxes only in one task), smoothed.
+    groups = delayed(_groups)(slack, tolerance, B, *distinct)
+    domain = info["frame"].domain
+    smoothed = [delayed(_smooth_groups, nout=P)(options, domain, slack, groups, P,
+                                                *[delayed(_to_group_task)(d, groups, j, t)
+                                                  for j, d in enumerate(distinct)])
+                for t in range(B)]
+    # 5. Back to the partitions.
+    outs = [delayed(_assemble)(f, c, cut, info, geometry, *[smoothed[t][i] for t in range(B)])
+            for i, (f, c, cut) in enumerate(zip(frames, cleaned, cuts))]
+    return {"outs": outs, "distinct": distinct, "groups": groups}
+
+
+def smooth(ddf, *, crs, geometry="geometry", alpha=0.5, tolerance=None, max_deviation=None, topology="preserve",
+           buckets=None):
+    """Smooth a Dask DataFrame's WKB geometry column (see crspline.geo.smooth
+    for the options and columns). `crs`: the layer's CRS (anything pyproj
+    takes). `buckets`: how many tasks each shuffle stage has (default: the
+    number of partitions). Returns a lazy Dask DataFrame with the same
+    partitions, index and columns, the geometry smoothed (WKB) and the four
+    measure columns."""
+    import dask.dataframe as dd
+    import pandas as pd
+
+    _check_frame(ddf, geometry, alpha, tolerance, max_deviation, topology)
+    st = _stages(ddf, crs=crs, geometry=geometry, alpha=alpha, tolerance=tolerance, max_deviation=max_deviation,
+                 topology=topology, buckets=buckets)
     meta = ddf._meta.copy()
     for c, dtype in zip(_OUT_COLUMNS, ("f8", "f8", "object", "object")):
         meta[c] = pd.Series([], dtype=dtype)
-    outs = [dask.delayed(_assemble)(p, whole[i], geometry) for i, p in enumerate(parts)]
-    return dd.from_delayed(outs, meta=meta, divisions=ddf.divisions)
+    return dd.from_delayed(st["outs"], meta=meta, divisions=ddf.divisions)
+
+
+def arc_counts(ddf, *, crs, geometry="geometry", alpha=0.5, tolerance=None, buckets=None):
+    """What the arc stages of smooth() (topology "preserve") see, computed:
+    {"arcs": distinct arcs (each smoothed once), "arcs_per_bucket": [...],
+    "groups": groups of arcs that may meet (each smoothed in one task)}."""
+    import dask
+
+    _check_frame(ddf, geometry, alpha, tolerance, None, "preserve")
+    st = _stages(ddf, crs=crs, geometry=geometry, alpha=alpha, tolerance=tolerance, max_deviation=None,
+                 topology="preserve", buckets=buckets)
+    distinct, groups = dask.compute(st["distinct"], st["groups"])
+    per = [len(d["keys"]) for d in distinct]
+    return {"arcs": sum(per), "arcs_per_bucket": per, "groups": groups["groups"]}
 
 
 def _write(df, path, crs, geometry, driver):
