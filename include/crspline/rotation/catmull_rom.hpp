@@ -36,7 +36,9 @@
 #include <vector>
 
 #include "../detail/format.hpp"
+#include "../detail/knot_index.hpp"
 #include "../error.hpp"
+#include "batch.hpp"
 #include "quaternion.hpp"
 #include "so3.hpp"
 
@@ -109,6 +111,7 @@ public:
         s.set_grid(segments.size() + 1, grid, std::nullopt, false);
         for (const auto& c : s.controls_) s.keys_.push_back(c.front());
         s.keys_.push_back(s.controls_.back().back());
+        s.finish();
         return s;
     }
 
@@ -158,9 +161,42 @@ public:
     /// Batch: rotations at every t (sorted or not), into out.
     void evaluate(std::span<const T> t, std::span<quat> out) const {
         check_batch_size(out.size(), t.size(), "rotations");
+        batch_rows<T> rows;
+        rows.quats = out.data();
+        evaluate(t, rows, 0);
+    }
+
+    /// Batch: at every t (sorted or not), the rotation and with order 1 and 2
+    /// the angular velocity and acceleration in frame f, written where out
+    /// says (batch_rows: room for t.size() samples); t outside the domain is
+    /// an out_of_domain error naming its index. Piecewise slerp goes through
+    /// a vector kernel (batch.hpp: the same values as evaluate() to a few
+    /// ulps), the other kinds through evaluate_on() one sample at a time.
+    void evaluate(std::span<const T> t, const batch_rows<T>& out, int order, frame f = frame::world) const {
+        if (order < 0 || order > 2) throw invalid_input("derivative order must be 0, 1 or 2, got " + std::to_string(order));
+        detail_batch::locator<T> find{grid_.data(), segment_count(), &index_};
+        const T lo = grid_.front(), hi = grid_.back();
+        auto locate_checked = [&](std::size_t k, T x) {
+            if (!(x >= lo && x <= hi)) [[unlikely]] check_t(x, k);
+            std::size_t i = find(x);
+            while (i > 0 && !(grid_[i + 1] > grid_[i]) && x >= grid_[i + 1]) --i;  // as locate()
+            return i;
+        };
+        if (kind_ == spline_kind::piecewise_slerp) {
+            detail_batch::run<T>(t, locate_checked, [&](const std::size_t* seg, const T* tl, std::size_t k, int valid) {
+                detail_batch::slerp_block<T>(slerp_.data(), seg, tl, k, valid, order, f, out);
+            });
+            return;
+        }
         for (std::size_t k = 0; k < t.size(); ++k) {
-            check_t(t[k], k);
-            out[k] = world_jet(locate(t[k]), t[k], 0).q;
+            so3::jet<T> j = world_jet(locate_checked(k, t[k]), t[k], order);
+            if (f == frame::body && order >= 1) {
+                j.omega = rotate(conj(j.q), j.omega);
+                j.alpha = rotate(conj(j.q), j.alpha);
+            }
+            const detail_batch::v3l<T> w{j.omega[0], j.omega[1], j.omega[2]}, a{j.alpha[0], j.alpha[1], j.alpha[2]};
+            detail_batch::store<T, T>(out, k, 1, detail_batch::ql<T>{j.q.w, j.q.x, j.q.y, j.q.z}, order >= 1 ? &w : nullptr,
+                                      order >= 2 ? &a : nullptr);
         }
     }
 
@@ -174,6 +210,30 @@ private:
     std::vector<std::vector<quat>> controls_;
     quat before_{}, after_{};                 // neighbours beyond the ends (barry_goldman, squad)
     T t_before_ = 0, t_after_ = 0;
+    detail::knot_index<T> index_;             // batch: segment of t in O(1)
+    std::vector<detail_batch::slerp_packed<T>> slerp_;  // batch: piecewise slerp's steps, per segment
+
+    // The batch's tables, once the grid and the keys are final.
+    void finish() {
+        index_.build(grid_.data(), segment_count());
+        if (kind_ != spline_kind::piecewise_slerp) return;
+        for (std::size_t i = 0; i < segment_count(); ++i) {
+            detail_batch::slerp_packed<T> p{};
+            const quat& a = keys_[i];
+            p.t0 = grid_[i];
+            p.a[0] = a.w, p.a[1] = a.x, p.a[2] = a.y, p.a[3] = a.z;
+            const T h = grid_[i + 1] - grid_[i];
+            if (h > 0) {
+                // world_jet's slerp_jet: exp(u log(b a*)) a; L = log(b a*) = half_angle * axis.
+                const vec3<T> L = log(rel(a, keys_[i + 1]));
+                const T ang = crspline::norm(L);
+                p.inv_h = T(1) / h;
+                p.half_angle = ang;
+                if (ang > 0) p.axis[0] = L[0] / ang, p.axis[1] = L[1] / ang, p.axis[2] = L[2] / ang;
+            }
+            slerp_.push_back(p);
+        }
+    }
 
     void check(T t, int order) const {
         if (order < 0 || order > 2)
@@ -327,6 +387,7 @@ private:
             case spline_kind::squad: build_squad(); break;
             default: break;
         }
+        finish();
     }
 
     /// The tangent-space construction of `splines.quaternion.KochanekBartels`:

@@ -1,0 +1,425 @@
+// crspline: batch evaluation kernels of the rotation curves: the C2 spline
+// (c2.hpp), piecewise slerp (catmull_rom.hpp) and, through them, the pose
+// curve (pose.hpp).
+//
+// The classes' batch calls check their arguments and hand the samples here.
+// Each segment's data is packed once, at construction, so that a sample does
+// the least: for the C2 spline the rotation-vector cubic and the key (one
+// exp of a small vector, one quaternion product), for slerp the step's axis
+// and half angle (one sine and cosine, one product). Samples go two at a
+// time through 16-byte vectors (GCC/Clang vector extensions: two doubles in
+// one SSE2 register on the x86-64 baseline, NEON on AArch64; elsewhere one
+// at a time), with sine and cosine from a polynomial (poly_sincos) instead
+// of libm, which no compiler vectorises.
+//
+// Every path computes what the scalar evaluate_on() computes, in the same
+// order of operations, except sine and cosine (poly_sincos: within 1 ulp of
+// the correctly rounded value, std:: within 1 ulp too) and the series for
+// the Jacobian coefficients (the same terms, summed in Horner's order): the
+// results agree with the scalar ones to a few ulps of their size
+// (tests/rotation/test_rotation_batch.cpp).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <type_traits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include "../detail/knot_index.hpp"
+#include "quaternion.hpp"
+#include "so3.hpp"
+
+namespace crspline::rotation {
+
+/// Where a batch evaluation writes, per sample: the rotation as 4 values
+/// [w, x, y, z] (or [x, y, z, w], SciPy's order, with xyzw) at q, or as a
+/// quaternion at quats; the angular velocity and acceleration as 3 values
+/// at omega and alpha (null when the order does not ask for them).
+template <class T>
+struct batch_rows {
+    T* q = nullptr;
+    quaternion<T>* quats = nullptr;
+    T* omega = nullptr;
+    T* alpha = nullptr;
+    bool xyzw = false;
+};
+
+}  // namespace crspline::rotation
+
+namespace crspline::rotation::detail_batch {
+
+template <class T>
+using rows = batch_rows<T>;
+
+// ----- lanes ----------------------------------------------------------------------
+
+#if defined(__GNUC__) || defined(__clang__)
+#define CRSPLINE_ROTATION_LANES 1
+/// Two doubles side by side (one SSE2 register), and a mask of two lanes.
+typedef double v2 __attribute__((vector_size(16)));
+typedef long long m2 __attribute__((vector_size(16)));
+
+[[gnu::always_inline]] inline v2 sel(m2 m, v2 a, v2 b) noexcept { return (v2)((m & (m2)a) | (~m & (m2)b)); }
+[[gnu::always_inline]] inline v2 vabs(v2 x) noexcept { return (v2)((m2)x & 0x7fffffffffffffffLL); }
+/// -x in the lanes where m holds (a sign flip: exact).
+[[gnu::always_inline]] inline v2 negate_if(m2 m, v2 x) noexcept {
+    return (v2)((m2)x ^ (m & static_cast<long long>(0x8000000000000000ULL)));
+}
+[[gnu::always_inline]] inline v2 vsqrt(v2 x) noexcept {
+#if defined(__SSE2__)
+    return (v2)_mm_sqrt_pd((__m128d)x);
+#else
+    return v2{std::sqrt(x[0]), std::sqrt(x[1])};
+#endif
+}
+[[gnu::always_inline]] inline bool any(m2 m) noexcept { return (m[0] | m[1]) != 0; }
+#else
+#define CRSPLINE_ROTATION_LANES 0
+#endif
+
+// Scalar lanes (one sample; float and long double, or no vector extension).
+template <class S>
+[[gnu::always_inline]] inline S sel(bool m, S a, S b) noexcept { return m ? a : b; }
+template <class S>
+[[gnu::always_inline]] inline S negate_if(bool m, S x) noexcept { return m ? -x : x; }
+template <class S>
+[[gnu::always_inline]] inline S vsqrt(S x) noexcept { return std::sqrt(x); }
+inline bool any(bool m) noexcept { return m; }
+
+/// The lanes a sample type T is computed in: two doubles, or one T.
+template <class T>
+struct pack {
+    using V = T;
+    using M = bool;
+    static constexpr int width = 1;
+};
+#if CRSPLINE_ROTATION_LANES
+template <>
+struct pack<double> {
+    using V = v2;
+    using M = m2;
+    static constexpr int width = 2;
+};
+#endif
+
+// ----- sine and cosine ------------------------------------------------------------
+
+template <class V>
+struct sin_cos {
+    V s, c;
+};
+
+#if CRSPLINE_ROTATION_LANES
+/// Arguments up to this size take the polynomial (the reduction below is
+/// exact there); larger ones, and NaN, go to std::sin and std::cos.
+inline constexpr double poly_sincos_limit = 1 << 19;
+
+/// sin x and cos x, two lanes. Cody-Waite reduction x = n pi/2 + r with
+/// |r| <= pi/4 (n by the 1.5 * 2^52 rounding trick, exact in the default
+/// rounding mode for |x| < 2^51), pi/2 split in three parts of which the
+/// first two have 33 significant bits, so n p1 and n p2 are exact for
+/// n < 2^20 and r carries an error below 2^-70 |n| + half an ulp of r; then
+/// fdlibm's kernels (k_sin.c, k_cos.c), whose polynomials are within 2^-58
+/// of sin and cos on [-pi/4, pi/4], so the result is within 1 ulp of the
+/// true value (tested against std:: at random, tests/rotation/).
+[[gnu::always_inline]] inline sin_cos<v2> poly_sincos(v2 x) noexcept {
+    if (!(std::abs(x[0]) <= poly_sincos_limit && std::abs(x[1]) <= poly_sincos_limit)) [[unlikely]]
+        return {v2{std::sin(x[0]), std::sin(x[1])}, v2{std::cos(x[0]), std::cos(x[1])}};
+    const double magic = 6755399441055744.0;  // 1.5 * 2^52
+    const v2 n = (x * 6.36619772367581382433e-01 + magic) - magic;  // round(x 2/pi)
+    const double p1 = 1.57079632673412561417e+00, p2 = 6.07710050630396597660e-11,
+                 p3 = 2.02226624879595063154e-21;  // pi/2 = p1 + p2 + p3 + O(1e-32)
+    const v2 r = ((x - n * p1) - n * p2) - n * p3;
+    const v2 z = r * r;
+    // fdlibm __kernel_sin(r, 0, 0): r + r^3 (S1 + z S2 + ... + z^5 S6).
+    const v2 ps = 8.33333333332248946124e-03 +
+                  z * (-1.98412698298579493134e-04 +
+                       z * (2.75573137070700676789e-06 + z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)));
+    const v2 s = r + (z * r) * (-1.66666666666666324348e-01 + z * ps);
+    // fdlibm __kernel_cos(r, 0): 1 - z/2 + z^2 (C1 + ... + z^5 C6), the
+    // rounding of 1 - z/2 recovered as (1 - w) - z/2.
+    const v2 pc = z * (4.16666666666666019037e-02 +
+                       z * (-1.38888888888741095749e-03 +
+                            z * (2.48015872894767294178e-05 +
+                                 z * (-2.75573143513906633035e-07 +
+                                      z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
+    const v2 hz = 0.5 * z, w = 1.0 - hz;
+    const v2 c = w + (((1.0 - w) - hz) + z * pc);
+    // The quadrant j = n mod 4 (floor(n/4) = round(n/4 - 3/8) for integer n).
+    const v2 f = ((n * 0.25 - 0.375) + magic) - magic;
+    const v2 j = n - 4.0 * f;
+    const m2 odd = (j == 1.0) | (j == 3.0);
+    return {negate_if(j >= 2.0, sel(odd, c, s)), negate_if((j == 1.0) | (j == 2.0), sel(odd, s, c))};
+}
+
+[[gnu::always_inline]] inline sin_cos<v2> sincos(v2 x) noexcept { return poly_sincos(x); }
+#endif
+
+template <class S>
+[[gnu::always_inline]] inline sin_cos<S> sincos(S x) noexcept {
+    return {std::sin(x), std::cos(x)};
+}
+
+// ----- series of the Jacobian coefficients (so3.hpp) -------------------------------
+
+/// Coefficients of z^m (z = theta^2), m = 0..15, of k2 = (theta - sin)/theta^3,
+/// K1 and K2 (so3::jacobian_coefficients): the same terms as its loop.
+struct jacobian_series {
+    double k2[16], K1[16], K2[16];
+};
+
+constexpr jacobian_series make_jacobian_series() {
+    jacobian_series s{};
+    double f[40]{};  // f[k] = k!
+    f[0] = 1;
+    for (int k = 1; k < 40; ++k) f[k] = f[k - 1] * k;
+    for (int m = 0; m < 16; ++m) {
+        const double sign = m % 2 == 0 ? 1 : -1;
+        s.k2[m] = sign / f[2 * m + 3];
+        s.K1[m] = sign * 2 * (m + 1) / f[2 * m + 4];
+        s.K2[m] = -sign * 2 * (m + 1) / f[2 * m + 5];
+    }
+    return s;
+}
+inline constexpr jacobian_series series = make_jacobian_series();
+
+template <class T, class V>
+[[gnu::always_inline]] inline V horner16(const double (&c)[16], V z) noexcept {
+    V p = V{} + T(c[15]);
+    for (int m = 14; m >= 0; --m) p = p * z + T(c[m]);
+    return p;
+}
+
+// ----- 3-vectors and quaternions of lanes ---------------------------------------------
+
+template <class V>
+struct v3l {
+    V x, y, z;
+};
+template <class V>
+struct ql {
+    V w, x, y, z;
+};
+
+template <class V>
+[[gnu::always_inline]] inline v3l<V> cross(const v3l<V>& a, const v3l<V>& b) noexcept {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+template <class V>
+[[gnu::always_inline]] inline V dot(const v3l<V>& a, const v3l<V>& b) noexcept {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+template <class V>
+[[gnu::always_inline]] inline ql<V> mul(const ql<V>& a, const ql<V>& b) noexcept {
+    return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+            a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
+}
+/// rotate(q, v) of quaternion.hpp: v + w t + u x t, t = 2 u x v.
+template <class V>
+[[gnu::always_inline]] inline v3l<V> rotate(const ql<V>& q, const v3l<V>& v) noexcept {
+    const v3l<V> u{q.x, q.y, q.z};
+    const v3l<V> c = cross(u, v);
+    const v3l<V> t{c.x + c.x, c.y + c.y, c.z + c.z};  // 2 u x v, exactly
+    const v3l<V> d = cross(u, t);
+    return {v.x + q.w * t.x + d.x, v.y + q.w * t.y + d.y, v.z + q.w * t.z + d.z};
+}
+
+// ----- output rows -------------------------------------------------------------------
+
+template <class S>
+[[gnu::always_inline]] inline S lane(S x, int) noexcept { return x; }
+#if CRSPLINE_ROTATION_LANES
+[[gnu::always_inline]] inline double lane(v2 x, int l) noexcept { return x[l]; }
+#endif
+
+template <class T, class V>
+[[gnu::always_inline]] inline void store(const rows<T>& out, std::size_t k, int valid, const ql<V>& q, const v3l<V>* w,
+                                         const v3l<V>* a) noexcept {
+    for (int l = 0; l < valid; ++l) {
+        const T qw = lane(q.w, l), qx = lane(q.x, l), qy = lane(q.y, l), qz = lane(q.z, l);
+        if (out.quats) {
+            out.quats[k + std::size_t(l)] = {qw, qx, qy, qz};
+        } else {
+            T* p = out.q + 4 * (k + std::size_t(l));
+            if (out.xyzw) p[0] = qx, p[1] = qy, p[2] = qz, p[3] = qw;
+            else p[0] = qw, p[1] = qx, p[2] = qy, p[3] = qz;
+        }
+        if (w) {
+            T* o = out.omega + 3 * (k + std::size_t(l));
+            o[0] = lane(w->x, l), o[1] = lane(w->y, l), o[2] = lane(w->z, l);
+        }
+        if (a) {
+            T* o = out.alpha + 3 * (k + std::size_t(l));
+            o[0] = lane(a->x, l), o[1] = lane(a->y, l), o[2] = lane(a->z, l);
+        }
+    }
+}
+
+/// Lane values from a function of the lane index.
+template <class V, class F>
+[[gnu::always_inline]] inline V make_lanes(F f) noexcept {
+    if constexpr (std::is_floating_point_v<V>) return f(0);
+#if CRSPLINE_ROTATION_LANES
+    else return V{f(0), f(1)};
+#endif
+}
+
+// ----- locating samples -----------------------------------------------------------------
+
+/// The segment of each sample: the one before (sorted input stays in a
+/// segment for many samples, so one well-predicted test usually settles
+/// it), else the knot index (O(1), knot_index.hpp), which random input
+/// takes every time (a well-predicted test too).
+template <class T>
+struct locator {
+    const T* g;
+    std::size_t nseg;
+    const detail::knot_index<T>* index;
+    std::size_t last = 0;
+
+    std::size_t operator()(T t) noexcept {
+        if (!(g[last] <= t && t < g[last + 1])) last = index->locate(t, g, nseg);
+        return last;
+    }
+};
+
+// ----- the C2 spline -------------------------------------------------------------------
+
+/// One segment of c2_rotation_spline, packed: R(t) = q Exp(theta(t - t0)),
+/// theta(tau) = ((c3 tau + c2) tau + c1) tau.
+template <class T>
+struct c2_packed {
+    T t0;
+    T c3[3], c2[3], c1[3];
+    T q[4];
+    T pad[2];
+};
+
+/// Samples k .. k + width - 1 of the C2 spline (segments seg[0..width-1]),
+/// the first `valid` of them written: the rotation, and with order >= 1 the
+/// angular velocity (and order 2 the acceleration) in frame f. Each step is
+/// c2_rotation_spline::evaluate_on's, on lanes.
+template <class T>
+[[gnu::always_inline]] inline void c2_block(const c2_packed<T>* segs, const std::size_t* seg, const T* t, std::size_t k,
+                                            int valid, int order, frame f, const rows<T>& out) noexcept {
+    using V = typename pack<T>::V;
+    auto g = [&](auto member) { return make_lanes<V>([&](int l) { return member(segs[seg[l]]); }); };
+    const V tau = make_lanes<V>([&](int l) { return t[l] - segs[seg[l]].t0; });
+    v3l<V> c3, c2, c1;
+    c3.x = g([](const c2_packed<T>& s) { return s.c3[0]; }), c3.y = g([](const c2_packed<T>& s) { return s.c3[1]; }),
+    c3.z = g([](const c2_packed<T>& s) { return s.c3[2]; });
+    c2.x = g([](const c2_packed<T>& s) { return s.c2[0]; }), c2.y = g([](const c2_packed<T>& s) { return s.c2[1]; }),
+    c2.z = g([](const c2_packed<T>& s) { return s.c2[2]; });
+    c1.x = g([](const c2_packed<T>& s) { return s.c1[0]; }), c1.y = g([](const c2_packed<T>& s) { return s.c1[1]; }),
+    c1.z = g([](const c2_packed<T>& s) { return s.c1[2]; });
+    const ql<V> key{g([](const c2_packed<T>& s) { return s.q[0]; }), g([](const c2_packed<T>& s) { return s.q[1]; }),
+                    g([](const c2_packed<T>& s) { return s.q[2]; }), g([](const c2_packed<T>& s) { return s.q[3]; })};
+    // theta = ((c3 tau + c2) tau + c1) tau; R = key Exp(theta) = key exp(theta/2).
+    const v3l<V> th{((c3.x * tau + c2.x) * tau + c1.x) * tau, ((c3.y * tau + c2.y) * tau + c1.y) * tau,
+                    ((c3.z * tau + c2.z) * tau + c1.z) * tau};
+    const v3l<V> h{th.x * T(0.5), th.y * T(0.5), th.z * T(0.5)};
+    const V a = vsqrt(dot(h, h));  // half the angle
+    const sin_cos<V> sc = sincos(a);
+    const V sinc = sel(a > T(0), sc.s / a, V{} + T(1));  // sin(a)/a
+    const ql<V> q = mul(key, ql<V>{sc.c, h.x * sinc, h.y * sinc, h.z * sinc});
+    if (order == 0) return store<T, V>(out, k, valid, q, nullptr, nullptr);
+    // Body frame: omega = J_r(theta) theta', alpha = J_r(theta) theta'' + N_r(theta, theta').
+    const v3l<V> d1{(T(3) * c3.x * tau + T(2) * c2.x) * tau + c1.x, (T(3) * c3.y * tau + T(2) * c2.y) * tau + c1.y,
+                    (T(3) * c3.z * tau + T(2) * c2.z) * tau + c1.z};
+    const V theta = T(2) * a, z = theta * theta;
+    const V k1 = sinc * sinc / T(2);
+    const typename pack<T>::M small = theta < T(2);
+    // theta >= 2: the closed forms, with sin theta = 2 s c, cos theta = c^2 - s^2.
+    const V sin_t = T(2) * sc.s * sc.c, cos_t = sc.c * sc.c - sc.s * sc.s;
+    const V big = sel(small, V{} + T(1), theta);  // keeps the unused closed forms finite at theta = 0
+    const V zb = big * big;
+    const V k2 = sel(small, horner16<T>(series.k2, z), (big - sin_t) / (zb * big));
+    auto jr = [&](const v3l<V>& v) {
+        const v3l<V> pv = cross(th, v), ppv = cross(th, pv);
+        return v3l<V>{v.x - k1 * pv.x + k2 * ppv.x, v.y - k1 * pv.y + k2 * ppv.y, v.z - k1 * pv.z + k2 * ppv.z};
+    };
+    v3l<V> w = jr(d1);
+    v3l<V> acc{};
+    if (order >= 2) {
+        const v3l<V> d2{T(6) * c3.x * tau + T(2) * c2.x, T(6) * c3.y * tau + T(2) * c2.y, T(6) * c3.z * tau + T(2) * c2.z};
+        const V K1 = sel(small, horner16<T>(series.K1, z), (T(2) * (T(1) - cos_t) - big * sin_t) / (zb * zb));
+        const V K2 = sel(small, horner16<T>(series.K2, z), (T(3) * sin_t - T(2) * big - big * cos_t) / (zb * zb * big));
+        const V dp = dot(th, d1);
+        const v3l<V> cp = cross(th, d1), ccp = cross(th, cp), dccp = cross(d1, cp);
+        const v3l<V> j2 = jr(d2);
+        acc = {j2.x + (dp * (K1 * cp.x + K2 * ccp.x) + k2 * dccp.x), j2.y + (dp * (K1 * cp.y + K2 * ccp.y) + k2 * dccp.y),
+               j2.z + (dp * (K1 * cp.z + K2 * ccp.z) + k2 * dccp.z)};
+    }
+    if (f == frame::world) {
+        w = rotate(q, w);
+        if (order >= 2) acc = rotate(q, acc);
+    }
+    store<T, V>(out, k, valid, q, &w, order >= 2 ? &acc : nullptr);
+}
+
+// ----- piecewise slerp --------------------------------------------------------------------
+
+/// One segment of a piecewise slerp, packed: q(t) = exp(u L) a with u = (t -
+/// t0) inv_h, L = log(b a*) = half_angle * axis; omega = 2 L inv_h (world).
+/// A zero-length segment has inv_h = 0: the curve rests at a.
+template <class T>
+struct slerp_packed {
+    T t0, inv_h, half_angle;
+    T axis[3];
+    T a[4];
+};
+
+template <class T>
+[[gnu::always_inline]] inline void slerp_block(const slerp_packed<T>* segs, const std::size_t* seg, const T* t,
+                                               std::size_t k, int valid, int order, frame f, const rows<T>& out) noexcept {
+    using V = typename pack<T>::V;
+    auto g = [&](auto member) { return make_lanes<V>([&](int l) { return member(segs[seg[l]]); }); };
+    const V u = make_lanes<V>([&](int l) { return (t[l] - segs[seg[l]].t0) * segs[seg[l]].inv_h; });
+    const V ang = u * g([](const slerp_packed<T>& s) { return s.half_angle; });
+    const v3l<V> n{g([](const slerp_packed<T>& s) { return s.axis[0]; }), g([](const slerp_packed<T>& s) { return s.axis[1]; }),
+                   g([](const slerp_packed<T>& s) { return s.axis[2]; })};
+    const ql<V> a{g([](const slerp_packed<T>& s) { return s.a[0]; }), g([](const slerp_packed<T>& s) { return s.a[1]; }),
+                  g([](const slerp_packed<T>& s) { return s.a[2]; }), g([](const slerp_packed<T>& s) { return s.a[3]; })};
+    const sin_cos<V> sc = sincos(ang);
+    const ql<V> q = mul(ql<V>{sc.c, n.x * sc.s, n.y * sc.s, n.z * sc.s}, a);
+    if (order == 0) return store<T, V>(out, k, valid, q, nullptr, nullptr);
+    // omega = 2 L / h, constant on the segment (world frame); alpha = 0.
+    const V r = T(2) * g([](const slerp_packed<T>& s) { return s.half_angle * s.inv_h; });
+    v3l<V> w{r * n.x, r * n.y, r * n.z};
+    const V zero{};
+    const v3l<V> acc{zero, zero, zero};
+    if (f == frame::body) w = rotate(ql<V>{q.w, -q.x, -q.y, -q.z}, w);
+    store<T, V>(out, k, valid, q, &w, order >= 2 ? &acc : nullptr);
+}
+
+// ----- the driver -------------------------------------------------------------------------
+
+/// Runs block(segs, seg, t, k, valid, order, f, out) over samples t[0..n) two
+/// (pack width) at a time; the segment of each from locate(k, t[k]). The
+/// last, partial block repeats its last sample in the unused lanes and
+/// writes only the valid ones.
+template <class T, class Locate, class Block>
+void run(std::span<const T> t, Locate&& locate, Block&& block) {
+    constexpr int W = pack<T>::width;
+    const std::size_t n = t.size();
+    std::size_t seg[W];
+    T tl[W];
+    for (std::size_t k = 0; k < n; k += W) {
+        const int valid = int(std::min<std::size_t>(W, n - k));
+        for (int l = 0; l < W; ++l) {
+            const std::size_t s = k + std::size_t(l < valid ? l : valid - 1);
+            tl[l] = t[s];
+            seg[l] = locate(s, t[s]);
+        }
+        block(seg, tl, k, valid);
+    }
+}
+
+}  // namespace crspline::rotation::detail_batch

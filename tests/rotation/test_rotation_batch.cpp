@@ -1,0 +1,333 @@
+// The batch kernels of the rotation curves (include/crspline/rotation/batch.hpp)
+// against the scalar evaluation, on seeded random curves and parameters (the
+// seed is printed on failure; CRSPLINE_SEED reruns one), and the polynomial
+// sine and cosine against std::sin and std::cos.
+#include <gtest/gtest.h>
+
+#include <crspline/rotation/batch.hpp>
+#include <crspline/rotation/c2.hpp>
+#include <crspline/rotation/catmull_rom.hpp>
+#include <crspline/rotation/pose.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "test_support.hpp"
+
+using namespace crspline::rotation;
+using quat = quaternion<double>;
+using v3 = vec3<double>;
+
+namespace {
+
+constexpr double eps = std::numeric_limits<double>::epsilon();
+
+v3 random_vec(std::mt19937_64& rng, double length) {
+    std::normal_distribution<double> g;
+    v3 v{{g(rng), g(rng), g(rng)}};
+    return v * (length / crspline::norm(v));
+}
+
+/// A walk of n keys, steps of lo..hi radians about random axes, random signs.
+std::vector<quat> random_keys(std::mt19937_64& rng, std::size_t n, double lo, double hi) {
+    std::uniform_real_distribution<double> a(lo, hi), coin(0, 1);
+    std::normal_distribution<double> g;
+    std::vector<quat> k{normalized(quat{g(rng), g(rng), g(rng), g(rng)})};
+    while (k.size() < n) {
+        const quat q = from_rotation_vector(random_vec(rng, a(rng))) * k.back();
+        k.push_back(coin(rng) < 0.5 ? q : -q);
+    }
+    return k;
+}
+
+std::vector<double> random_times(std::mt19937_64& rng, std::size_t n) {
+    std::uniform_real_distribution<double> d(0.2, 2.0);
+    std::vector<double> t{d(rng) - 1};
+    while (t.size() < n) t.push_back(t.back() + d(rng));
+    return t;
+}
+
+/// Parameters over [lo, hi]: random ones, every knot, both ends; sorted
+/// (the run the sorted walk takes) when asked.
+std::vector<double> sample_t(std::mt19937_64& rng, std::span<const double> knots, std::size_t n, bool sorted) {
+    std::uniform_real_distribution<double> u(knots.front(), knots.back());
+    std::vector<double> t;
+    for (std::size_t k = 0; k < n; ++k) t.push_back(u(rng));
+    t.insert(t.end(), knots.begin(), knots.end());
+    t.push_back(knots.front());
+    t.push_back(knots.back());
+    if (sorted) std::sort(t.begin(), t.end());
+    else std::shuffle(t.begin(), t.end(), rng);
+    return t;
+}
+
+struct batch_result {
+    std::vector<double> q, w, a;
+};
+
+template <class Curve, class... Extra>
+batch_result run_batch(const Curve& c, std::span<const double> t, int order, frame f, Extra... extra) {
+    batch_result r{std::vector<double>(4 * t.size()), std::vector<double>(3 * t.size()), std::vector<double>(3 * t.size())};
+    batch_rows<double> rows;
+    rows.q = r.q.data();
+    if (order >= 1) rows.omega = r.w.data();
+    if (order >= 2) rows.alpha = r.a.data();
+    c.evaluate(t, rows, order, f, extra...);
+    return r;
+}
+
+/// Compares a batch with evaluate_on(segment(t), t) sample by sample; returns
+/// the samples checked. Tolerances: the rotation, an O(1) quaternion, to 8
+/// eps (the kernel's sine and cosine and the scalar ones are each within 1
+/// ulp, and about ten more roundings follow in either); the rates to 64 eps
+/// of the largest rate in the batch (the same roundings through the
+/// Jacobian's two cross products and the frame's rotation, measured at 7 eps
+/// at most, so a factor of 9 of room and none for a wrong term).
+template <class Curve, class Locate>
+int compare(const Curve& c, std::span<const double> t, const batch_result& r, int order, frame f, Locate locate,
+            const std::string& what) {
+    std::vector<so3::jet<double>> ref;
+    double ws = 1, as = 1;
+    for (double x : t) {
+        ref.push_back(c.evaluate_on(locate(x), x, order, f));
+        ws = std::max(ws, crspline::max_abs(ref.back().omega));
+        as = std::max(as, crspline::max_abs(ref.back().alpha));
+    }
+    int checked = 0;
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        const quat& q = ref[k].q;
+        const double dq = std::max({std::abs(r.q[4 * k] - q.w), std::abs(r.q[4 * k + 1] - q.x), std::abs(r.q[4 * k + 2] - q.y),
+                                    std::abs(r.q[4 * k + 3] - q.z)});
+        EXPECT_LE(dq, 8 * eps) << what << " order " << order << " sample " << k << " t " << t[k];
+        for (std::size_t d = 0; d < 3 && order >= 1; ++d)
+            EXPECT_LE(std::abs(r.w[3 * k + d] - ref[k].omega[d]), 64 * eps * ws) << what << " omega, sample " << k;
+        for (std::size_t d = 0; d < 3 && order >= 2; ++d)
+            EXPECT_LE(std::abs(r.a[3 * k + d] - ref[k].alpha[d]), 64 * eps * as) << what << " alpha, sample " << k;
+        ++checked;
+    }
+    return checked;
+}
+
+}  // namespace
+
+// poly_sincos against std::sin and std::cos: within eps (one ulp of 1) in
+// absolute terms on |x| <= 1000 (the reduction is exact to 2^-70 |n|, the
+// kernels within 2^-58, so the error is the final rounding and std::'s own
+// half ulp), and within one ulp relative on |x| <= pi/4, where no reduction
+// happens and both are correctly rounded to within half an ulp. Beyond the
+// polynomial's range, and for NaN, it is std:: itself.
+#if CRSPLINE_ROTATION_LANES
+TEST(RotationBatch, PolySinCos) {
+    CRSPLINE_SEEDED(seed, 2840);
+    std::mt19937_64 rng(seed);
+    using detail_batch::v2;
+    int checked = 0;
+    auto ulp = [](double y) { return std::max(std::abs(y), std::numeric_limits<double>::min()) * eps; };
+    for (double range : {1e-300, 1e-8, 0.5, std::numbers::pi / 4, 4.0, 100.0, 1000.0}) {
+        std::uniform_real_distribution<double> u(-range, range);
+        for (int k = 0; k < 20000; ++k) {
+            const double a = u(rng), b = u(rng);
+            const auto sc = detail_batch::poly_sincos(v2{a, b});
+            const double x[2] = {a, b};
+            for (int l = 0; l < 2; ++l) {
+                const double s = std::sin(x[l]), c = std::cos(x[l]);
+                EXPECT_LE(std::abs(sc.s[l] - s), eps) << "sin(" << x[l] << ")";
+                EXPECT_LE(std::abs(sc.c[l] - c), eps) << "cos(" << x[l] << ")";
+                if (range <= std::numbers::pi / 4) {
+                    EXPECT_LE(std::abs(sc.s[l] - s), ulp(s)) << "sin(" << x[l] << "), relative";
+                    EXPECT_LE(std::abs(sc.c[l] - c), ulp(c)) << "cos(" << x[l] << "), relative";
+                }
+                ++checked;
+            }
+        }
+    }
+    EXPECT_EQ(checked, 7 * 20000 * 2);
+    // Multiples of pi/2 (the quadrant switch) and their neighbours.
+    for (int n = -40; n <= 40; ++n)
+        for (double x : {n * std::numbers::pi / 2, std::nextafter(n * std::numbers::pi / 2, 1e9),
+                         std::nextafter(n * std::numbers::pi / 2, -1e9)}) {
+            const auto sc = detail_batch::poly_sincos(v2{x, -x});
+            EXPECT_LE(std::abs(sc.s[0] - std::sin(x)), eps) << x;
+            EXPECT_LE(std::abs(sc.c[0] - std::cos(x)), eps) << x;
+            EXPECT_LE(std::abs(sc.s[1] + std::sin(x)), eps) << x;
+        }
+    const double big = 1e7;
+    const auto sc = detail_batch::poly_sincos(v2{big, std::numeric_limits<double>::quiet_NaN()});
+    EXPECT_EQ(sc.s[0], std::sin(big));
+    EXPECT_EQ(sc.c[0], std::cos(big));
+    EXPECT_TRUE(std::isnan(sc.s[1]) && std::isnan(sc.c[1]));
+}
+#endif
+
+// The C2 spline's batch against evaluate_on: every end condition, closed,
+// steps up to 170 degrees, and tiny ones (the series side of the Jacobian
+// coefficients), long-way steps (keep_signs, up to 2 pi), sorted and
+// shuffled parameters with every knot, orders 0-2, both frames; and with
+// extrapolate, t beyond both ends (SciPy's call).
+TEST(RotationBatch, C2MatchesScalar) {
+    CRSPLINE_SEEDED(seed, 2841);
+    std::mt19937_64 rng(seed);
+    int checked = 0, curves = 0;
+    for (int round = 0; round < 12; ++round) {
+        const std::size_t n = 2 + rng() % 12;
+        const double hi = round % 4 == 0 ? 1e-6 : round % 4 == 1 ? 0.5 : 170 * std::numbers::pi / 180;
+        const auto keys = random_keys(rng, n, hi / 10, hi);
+        c2_options<double> o;
+        o.closed = round % 3 == 2;
+        if (round % 3 == 1) o.start = c2_end<double>::natural(), o.end = c2_end<double>::velocity(random_vec(rng, 1.0));
+        o.keep_signs = round % 6 == 5;
+        const auto times = random_times(rng, o.closed ? n + 1 : n);
+        const c2_rotation_spline<double> c{std::span<const double>(times), std::span<const quat>(keys), o};
+        ++curves;
+        for (bool sorted : {false, true}) {
+            const auto t = sample_t(rng, times, 300, sorted);
+            for (int order = 0; order <= 2; ++order)
+                for (frame f : {frame::world, frame::body}) {
+                    const auto r = run_batch(c, std::span<const double>(t), order, f);
+                    checked += compare(c, t, r, order, f, [&](double x) { return c.locate(x); }, "c2");
+                }
+        }
+        // Extrapolation: t up to one domain length beyond either end.
+        const double span = times.back() - times.front();
+        std::uniform_real_distribution<double> u(times.front() - span, times.back() + span);
+        std::vector<double> t(200);
+        for (double& x : t) x = u(rng);
+        const auto r = run_batch(c, std::span<const double>(t), 2, frame::body, true);
+        checked += compare(c, t, r, 2, frame::body, [&](double x) { return c.locate(x); }, "c2 extrapolated");
+    }
+    EXPECT_EQ(curves, 12);
+    EXPECT_GT(checked, 12 * 2 * 6 * 300 + 12 * 200);
+}
+
+// Piecewise slerp's batch: alpha grids with a repeated key (a zero-length
+// segment, the curve resting there), closed, long-way steps under keep_signs.
+TEST(RotationBatch, SlerpMatchesScalar) {
+    CRSPLINE_SEEDED(seed, 2842);
+    std::mt19937_64 rng(seed);
+    int checked = 0;
+    for (int round = 0; round < 12; ++round) {
+        const std::size_t n = 2 + rng() % 12;
+        auto keys = random_keys(rng, n, 0.01, 3.0);
+        if (round % 2 == 1) keys.insert(keys.begin() + std::ptrdiff_t(rng() % keys.size()), keys[rng() % keys.size()]);
+        if (round % 4 == 3) keys.push_back(keys.back());  // a zero-length last segment
+        rotation_options<double> o;
+        o.kind = spline_kind::piecewise_slerp;
+        o.alpha = 0.5;
+        o.closed = round % 3 == 2;
+        o.keep_signs = round % 4 == 1;
+        const quaternion_spline<double> c(keys, o);
+        for (bool sorted : {false, true}) {
+            const auto t = sample_t(rng, c.grid(), 300, sorted);
+            for (int order = 0; order <= 2; ++order)
+                for (frame f : {frame::world, frame::body}) {
+                    const auto r = run_batch(c, std::span<const double>(t), order, f);
+                    checked += compare(c, t, r, order, f, [&](double x) { return c.locate(x); }, "slerp");
+                }
+        }
+    }
+    EXPECT_GT(checked, 12 * 2 * 6 * 300);
+}
+
+// The other kinds keep the scalar path inside the batch call: the same
+// values exactly; and the span<quat> overloads equal the rows ones.
+TEST(RotationBatch, OtherKindsAndQuaternionOutput) {
+    CRSPLINE_SEEDED(seed, 2843);
+    std::mt19937_64 rng(seed);
+    int checked = 0;
+    const auto keys = random_keys(rng, 7, 0.1, 2.5);
+    for (auto kind : {spline_kind::catmull_rom, spline_kind::squad, spline_kind::barry_goldman, spline_kind::piecewise_slerp}) {
+        rotation_options<double> o;
+        o.kind = kind;
+        o.alpha = 0.5;
+        const quaternion_spline<double> c(keys, o);
+        const auto t = sample_t(rng, c.grid(), 200, false);
+        const auto r = run_batch(c, std::span<const double>(t), 2, frame::body);
+        checked += compare(c, t, r, 2, frame::body, [&](double x) { return c.locate(x); }, "kind");
+        std::vector<quat> out(t.size());
+        c.evaluate(std::span<const double>(t), std::span<quat>(out));
+        for (std::size_t k = 0; k < t.size(); ++k)
+            EXPECT_EQ(out[k], (quat{r.q[4 * k], r.q[4 * k + 1], r.q[4 * k + 2], r.q[4 * k + 3]})) << k;
+    }
+    EXPECT_EQ(checked, 4 * (200 + 7 + 2));
+}
+
+// Bad input: t outside the domain names its index; a wrong order is refused.
+TEST(RotationBatch, BadInputIsNamed) {
+    std::mt19937_64 rng(2844);
+    const auto keys = random_keys(rng, 5, 0.1, 1.0);
+    const std::vector<double> times{0, 1, 2, 3, 4};
+    const c2_rotation_spline<double> c{std::span<const double>(times), std::span<const quat>(keys)};
+    std::vector<double> t{0.5, 1.5, 2.5, 9.0, 1.0};
+    std::vector<double> q(4 * t.size());
+    batch_rows<double> rows;
+    rows.q = q.data();
+    try {
+        c.evaluate(std::span<const double>(t), rows, 0);
+        ADD_FAILURE() << "no error";
+    } catch (const crspline::out_of_domain& e) {
+        EXPECT_NE(std::string(e.what()).find("(index 3)"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(c.evaluate(std::span<const double>(t), rows, 3), crspline::invalid_input);
+    t[3] = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(c.evaluate(std::span<const double>(t), rows, 0), crspline::out_of_domain);
+    rotation_options<double> o;
+    o.kind = spline_kind::piecewise_slerp;
+    const quaternion_spline<double> s(keys, o);
+    t[3] = -1;
+    try {
+        s.evaluate(std::span<const double>(t), rows, 0);
+        ADD_FAILURE() << "no error";
+    } catch (const crspline::out_of_domain& e) {
+        EXPECT_NE(std::string(e.what()).find("(index 3)"), std::string::npos) << e.what();
+    }
+}
+
+// The pose curve's batch (chunks of positions, velocities and rotations)
+// against its one-sample evaluate: C2 and Catmull-Rom rotations, both
+// frames, more samples than one chunk. Positions and velocities come from
+// the same segment arithmetic (16 eps of the path's scale); rotations and
+// angular velocities as in compare().
+TEST(RotationBatch, PoseMatchesScalar) {
+    CRSPLINE_SEEDED(seed, 2845);
+    std::mt19937_64 rng(seed);
+    int checked = 0;
+    std::normal_distribution<double> g;
+    for (int round = 0; round < 4; ++round) {
+        const std::size_t n = 3 + rng() % 10;
+        const auto keys = random_keys(rng, n, 0.1, 2.5);
+        std::vector<crspline::vec<3, double>> p{{{0, 0, 0}}};
+        while (p.size() < n) p.push_back(p.back() + crspline::vec<3, double>{{1 + std::abs(g(rng)), g(rng), g(rng)}});
+        pose_options<double> o;
+        o.c2_rotation = round % 2 == 0;
+        o.closed = round >= 2;
+        const pose_curve<double> c{std::span<const crspline::vec<3, double>>(p), std::span<const quat>(keys), o};
+        const auto t = sample_t(rng, c.grid(), 2500, round % 2 == 1);
+        double scale = 1;
+        for (const auto& x : p) scale = std::max(scale, crspline::max_abs(x));
+        for (frame f : {frame::world, frame::body}) {
+            const auto out = c.evaluate(std::span<const double>(t), f);
+            ASSERT_EQ(out.size(), t.size());
+            double vs = 1, ws = 1;
+            std::vector<pose_sample<double>> ref;
+            for (double x : t) {
+                ref.push_back(c.evaluate(x, f));
+                vs = std::max(vs, crspline::max_abs(ref.back().velocity));
+                ws = std::max(ws, crspline::max_abs(ref.back().omega));
+            }
+            for (std::size_t k = 0; k < t.size(); ++k) {
+                EXPECT_LE(crspline::max_abs(out[k].position - ref[k].position), 16 * eps * scale) << k;
+                EXPECT_LE(crspline::max_abs(out[k].velocity - ref[k].velocity), 64 * eps * vs) << k;
+                EXPECT_LE(crspline::max_abs(out[k].omega - ref[k].omega), 64 * eps * ws) << k;
+                const quat &a = out[k].orientation, &b = ref[k].orientation;
+                EXPECT_LE(std::max({std::abs(a.w - b.w), std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)}), 8 * eps) << k;
+                ++checked;
+            }
+        }
+    }
+    EXPECT_GT(checked, 4 * 2 * 2500);
+}
