@@ -11,8 +11,16 @@
 // with uniform knots (not certifiable: the decision proves it); and a set
 // of short centripetal walks on a grid, neighbours overlapping so that some
 // pairs cross. Each case reports items_per_second in segments and what it
-// decided as counters.
+// decided as counters. `decide_certify` is the baseline of the fast path:
+// the paper's certificate alone on the same spiral, in the same run (its
+// result held in an int: intersections_bench.cpp's `certify` hands a bool
+// to DoNotOptimize, which valgrind sees read uninitialised and which
+// sometimes reports "the spiral should be certified" when it is).
+// `decide_walk`: a 2-D random walk of unit normal steps, whose crossings
+// grow like n log n (about 2 per point at 10^5): the case that was
+// quadratic in the crossings.
 #include <crspline/catmull_rom.hpp>
+#include <crspline/certify.hpp>
 #include <crspline/decision.hpp>
 
 #include <benchmark/benchmark.h>
@@ -60,6 +68,44 @@ void run_decide(benchmark::State& state, const curve2& c, bool fast_path) {
     state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(c.segment_count()));
 }
 
+void decide_certify(benchmark::State& state) {
+    const curve2& c = spiral_of(std::size_t(state.range(0)), 0.5);
+    crspline::certify_options co;
+    co.search_on_failure = false;  // as decide's fast path runs it
+    int certified = 0;
+    for (auto _ : state) {
+        certified = crspline::certify_intersection_free(c, co).certified ? 1 : 0;
+        benchmark::DoNotOptimize(certified);
+    }
+    state.counters["certified"] = certified;
+    state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(c.segment_count()));
+}
+
+const curve2& walk_of(std::size_t points) {
+    static std::map<std::size_t, std::unique_ptr<curve2>> cache;
+    auto& c = cache[points];
+    if (!c) {
+        std::mt19937_64 rng(27);
+        std::normal_distribution<double> g(0.0, 1.0);
+        std::vector<P> p(points);
+        for (std::size_t i = 1; i < points; ++i) p[i] = p[i - 1] + P{{g(rng), g(rng)}};
+        c = std::make_unique<curve2>(p, crspline::options<2>{.alpha = 0.5});
+    }
+    return *c;
+}
+
+void decide_walk(benchmark::State& state) {
+    const curve2& c = walk_of(std::size_t(state.range(0)));
+    crspline::decision d;
+    for (auto _ : state) {
+        d = crspline::decide(c, {.record_pairs = false});
+        benchmark::DoNotOptimize(d.result);
+    }
+    state.counters["crossings"] = double(d.crossings.size());
+    state.counters["touches"] = double(d.touches.size());
+    state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(c.segment_count()));
+}
+
 void decide_fast(benchmark::State& state) { run_decide(state, spiral_of(std::size_t(state.range(0)), 0.5), true); }
 void decide_full(benchmark::State& state) { run_decide(state, spiral_of(std::size_t(state.range(0)), 0.5), false); }
 void decide_uniform(benchmark::State& state) { run_decide(state, spiral_of(std::size_t(state.range(0)), 0.0), true); }
@@ -96,6 +142,8 @@ void decide_set(benchmark::State& state) {
 
 }  // namespace
 
+BENCHMARK(decide_certify)->Name("decide_certify")->Arg(1000)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+BENCHMARK(decide_walk)->Name("decide_walk")->Arg(1000)->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond);
 BENCHMARK(decide_fast)->Name("decide")->Arg(1000)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 BENCHMARK(decide_full)->Name("decide_full")->Arg(1000)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 BENCHMARK(decide_uniform)

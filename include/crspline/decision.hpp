@@ -207,7 +207,6 @@ struct decision_engine {
 
     std::vector<std::span<const std::array<P, 4>>> curves;
     std::vector<bool> closed;
-    std::vector<std::vector<std::array<ipoint, 4>>> exact;  // enclosures of the relative control points
     P ref{};
     double M = 0, floor = 0;
     std::vector<piece> pieces;
@@ -363,16 +362,16 @@ struct decision_engine {
     // (F(x) - F(m) is the integral of the derivative along the segment from
     // m to x, an average of values in that enclosure).
     struct side {
-        const std::array<ipoint, 4>* f = nullptr;
-        const std::array<ipoint, 4>* g = nullptr;
+        std::array<ipoint, 4> f{}, g{};
+        bool has_g = false;
         // s - 1 is exact for s in [1, 2] (Sterbenz).
-        ipoint at(double s) const { return g && s >= 1 ? eval(*g, s - 1) : eval(*f, s); }
+        ipoint at(double s) const { return has_g && s >= 1 ? eval(g, s - 1) : eval(f, s); }
         ipoint slope(const interval& S) const {
-            const bool in_f = S.lo < 1 || !g, in_g = g && S.hi >= 1;
+            const bool in_f = S.lo < 1 || !has_g, in_g = has_g && S.hi >= 1;
             ipoint r{};
-            if (in_f) r = deriv(*f, g ? interval{S.lo, std::min(S.hi, 1.0)} : S);
+            if (in_f) r = deriv(f, has_g ? interval{S.lo, std::min(S.hi, 1.0)} : S);
             if (in_g) {
-                const ipoint q = deriv(*g, interval{std::max(S.lo, 1.0), S.hi} - interval::point(1));
+                const ipoint q = deriv(g, interval{std::max(S.lo, 1.0), S.hi} - interval::point(1));
                 r = in_f ? ipoint{hull(r[0], q[0]), hull(r[1], q[1])} : q;
             }
             return r;
@@ -427,14 +426,25 @@ struct decision_engine {
         std::size_t f_seg, g_seg;
     };
     side_of make_side(const piece& p, bool chain) const {
-        const auto& ex = exact[p.curve];
         const std::size_t nx = next_seg[p.curve][p.segment], pv = prev_seg[p.curve][p.segment];
         const double r = double(rank[p.curve][p.segment]);
+        const auto ex = [&](std::size_t s) { return enclosure(p.curve, s); };
         if (chain && p.u1 == 1 && nx != npos)
-            return {{&ex[p.segment], &ex[nx]}, p.u0, p.u1, 2, r, p.segment, nx};
+            return {{ex(p.segment), ex(nx), true}, p.u0, p.u1, 2, r, p.segment, nx};
         if (chain && p.u0 == 0 && pv != npos)
-            return {{&ex[pv], &ex[p.segment]}, p.u0 + 1, p.u1 + 1, 2, r - 1, pv, p.segment};
-        return {{&ex[p.segment], nullptr}, p.u0, p.u1, 1, r, p.segment, npos};
+            return {{ex(pv), ex(p.segment), true}, p.u0 + 1, p.u1 + 1, 2, r - 1, pv, p.segment};
+        return {{ex(p.segment), {}, false}, p.u0, p.u1, 1, r, p.segment, npos};
+    }
+    // An enclosure of segment s's control points relative to ref: the
+    // exact difference is within half an ulp of the rounded one.
+    std::array<ipoint, 4> enclosure(std::size_t curve, std::size_t s) const {
+        std::array<ipoint, 4> e;
+        for (std::size_t k = 0; k < 4; ++k)
+            for (std::size_t d = 0; d < 2; ++d) {
+                const double x = curves[curve][s][k][d] - ref[d];
+                e[k][d] = {down(x), up(x)};
+            }
+        return e;
     }
     // Do the curve ranges [x0, x1] and [y0, y1] (curve coordinates: rank +
     // u) overlap, around a closed curve of n non-point segments too?
@@ -618,13 +628,17 @@ struct decision_engine {
         if (record_pairs) pair_flags.push_back({key, f});
     }
 
+    struct task {
+        piece a, b;
+        bool corner;
+    };
+    std::vector<task> pair_stack;
+    std::vector<piece> cut_stack;
+
     // One pair of pieces; `corner`: a ends exactly where b starts.
     void decide_pair(const piece& a0, const piece& b0, bool corner) {
-        struct task {
-            piece a, b;
-            bool corner;
-        };
-        std::vector<task> stack{{a0, b0, corner}};
+        auto& stack = pair_stack;  // reused: one allocation for every pair
+        stack.assign(1, {a0, b0, corner});
         unsigned f = 0;
         std::size_t visits = 0;
         while (!stack.empty()) {
@@ -676,7 +690,8 @@ struct decision_engine {
 
     // Cut one segment into monotone pieces, in order.
     void cut(const piece& s) {
-        std::vector<piece> stack{s};
+        auto& stack = cut_stack;
+        stack.assign(1, s);
         while (!stack.empty()) {
             const piece p = stack.back();
             stack.pop_back();
@@ -699,20 +714,17 @@ struct decision_engine {
     }
 
     void build() {
-        // 1. The reference point, the enclosures and the bound M.
+        // 1. The reference point and the bound M (the enclosures of the
+        // relative control points are made when Krawczyk's test needs them).
         for (const auto& c : curves)
             if (!c.empty()) { ref = c[0][0]; break; }
-        exact.resize(curves.size());
-        for (std::size_t ci = 0; ci < curves.size(); ++ci) {
-            exact[ci].resize(curves[ci].size());
-            for (std::size_t s = 0; s < curves[ci].size(); ++s)
-                for (std::size_t k = 0; k < 4; ++k)
-                    for (std::size_t d = 0; d < 2; ++d) {
-                        const double x = curves[ci][s][k][d] - ref[d];
-                        exact[ci][s][k][d] = {down(x), up(x)};  // the exact difference is within half an ulp
-                        M = std::max(M, std::abs(x));
-                    }
+        std::size_t segments = 0;
+        for (const auto& c : curves) {
+            segments += c.size();
+            for (const auto& g : c)
+                for (const auto& x : g) M = std::max({M, std::abs(x[0] - ref[0]), std::abs(x[1] - ref[1])});
         }
+        pieces.reserve(segments);
         M = std::nextafter(M * (1 + 1e-12), std::numeric_limits<double>::infinity());
         for (std::size_t ci = 0; ci < curves.size(); ++ci) {
             const auto& c = curves[ci];
