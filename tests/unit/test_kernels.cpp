@@ -10,6 +10,7 @@
 #include "test_support.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 
 namespace {
@@ -111,8 +112,9 @@ TEST(Kernels, AvxAndPortableBatchesAgreeBitForBit) {
 }
 
 TEST(Kernels, FloatSortedBatchesAgreeBitForBit) {
-    // The 8-lane float kernel against the portable 4-lane one, positions and
-    // derivatives, with the output aligned and not, small and streaming.
+    // The float kernels (16-lane AVX-512 where the CPU has it, 8-lane AVX2)
+    // against the portable 4-lane one, positions and derivatives, with the
+    // output aligned and not, small and streaming. Which ran is printed.
     CRSPLINE_SEEDED(s, 74);
     std::mt19937_64 rng(s);
     using F3 = vec<3, float>;
@@ -128,14 +130,28 @@ TEST(Kernels, FloatSortedBatchesAgreeBitForBit) {
             t.back() = c.t_max();
             for (std::size_t shift : {0u, 1u, 3u}) {
                 for (int order : {0, 1}) {
-                    const auto [fast, portable] = both_paths([&] {
+                    auto run = [&] {
                         std::vector<F3> buf(n + shift);
                         c.evaluate(std::span<const float>(t), std::span<F3>(buf).subspan(shift), order);
                         return buf;
-                    });
+                    };
+                    const auto [fast, portable] = both_paths(run);
+#if CRSPLINE_X86_DISPATCH
+                    // And the 8-lane AVX2 loop where the 16-lane AVX-512 one
+                    // ran above (issue 30).
+                    bool& wide = detail::avx512_enabled();
+                    const bool had = wide;
+                    wide = false;
+                    const auto avx2 = run();
+                    wide = had;
+#else
+                    const auto& avx2 = fast;
+#endif
                     for (std::size_t k = 0; k < n; k += (n > 5000 ? 101 : 1)) {
                         ASSERT_EQ(std::memcmp(&fast[k + shift], &portable[k + shift], sizeof(F3)), 0)
                             << "n " << n << " order " << order << " shift " << shift << " k " << k;
+                        ASSERT_EQ(std::memcmp(&avx2[k + shift], &portable[k + shift], sizeof(F3)), 0)
+                            << "AVX2 loop: n " << n << " order " << order << " shift " << shift << " k " << k;
                         ++checked;
                     }
                 }
@@ -143,6 +159,11 @@ TEST(Kernels, FloatSortedBatchesAgreeBitForBit) {
         }
     }
     EXPECT_GT(checked, 4u * 3 * 2 * 1000u);
+#if CRSPLINE_X86_DISPATCH
+    std::printf("float kernels compared: %s\n", detail::avx512_enabled() ? "AVX-512, AVX2 and portable"
+                                                 : detail::avx2_enabled() ? "AVX2 and portable"
+                                                                          : "portable only");
+#endif
 }
 
 TEST(Kernels, NearlySortedInputFallsBackAndStillAgrees) {
@@ -168,6 +189,72 @@ TEST(Kernels, NearlySortedInputFallsBackAndStillAgrees) {
             ASSERT_TRUE(same_bits(portable[k], x)) << "k " << k << " (swapped at " << k0 << ")";
         }
     }
+}
+
+TEST(Kernels, ArcLengthRulesAgreeBitForBit) {
+    // The Gauss-Legendre rules compiled for AVX2 (gauss_length_rule_avx2,
+    // issue 30) against the portable ones: total lengths, per-segment
+    // lengths and the table's inverse, at two accuracies, 2-D and 3-D, on
+    // the storage cases of curves() and on uneven random walks.
+    CRSPLINE_SEEDED(s, 75);
+    std::mt19937_64 rng(s);
+    std::size_t checked = 0;
+    auto compare = [&](const auto& c) {
+        for (double acc : {1e-12, 1e-7}) {
+            const auto [fast, portable] = both_paths([&] {
+                std::vector<double> out{arc_length(c, acc)};
+                const arc_length_table tab(c, acc);
+                for (std::size_t i = 0; i < c.segment_count(); ++i) out.push_back(tab.segment_length(i));
+                for (int k = 0; k <= 16; ++k) out.push_back(tab.t_at(tab.total() * k / 16));
+                return out;
+            });
+            ASSERT_EQ(fast.size(), portable.size());
+            for (std::size_t k = 0; k < fast.size(); ++k) {
+                ASSERT_EQ(std::memcmp(&fast[k], &portable[k], sizeof(double)), 0) << "acc " << acc << " value " << k;
+                ++checked;
+            }
+        }
+    };
+    for (const auto& c : curves(rng)) compare(c);
+    std::lognormal_distribution<double> step(0.0, 1.0);
+    std::normal_distribution<double> g;
+    for (int rep = 0; rep < 4; ++rep) {
+        std::vector<vec<2>> p(40);
+        for (std::size_t i = 1; i < p.size(); ++i) {
+            vec<2> d{{g(rng), g(rng)}};
+            p[i] = p[i - 1] + (step(rng) / norm(d)) * d;
+        }
+        compare(catmull_rom<2>(p, {.alpha = rep % 2 ? 0.5 : 1.0, .closed = rep == 3}));
+    }
+    EXPECT_GT(checked, 2u * (6 + 4) * 20u);
+}
+
+TEST(Kernels, MagnitudeReductionMatchesALoop) {
+    // detail::max_abs_finite (SSE2, four accumulators; the construction's
+    // checks, issue 30) against a plain loop: the same maximum, and "not
+    // finite" exactly when the array holds a NaN or an infinity, at every
+    // length around the vector width and every position of the bad value.
+    CRSPLINE_SEEDED(s, 76);
+    std::mt19937_64 rng(s);
+    std::uniform_real_distribution<double> U(-1e3, 1e3);
+    std::size_t checked = 0;
+    for (std::size_t n = 0; n < 23; ++n) {
+        std::vector<double> x(n);
+        for (auto& v : x) v = U(rng);
+        double m = 0;
+        for (double v : x) m = std::max(m, std::abs(v));
+        const auto r = detail::max_abs_finite(x.data(), n);
+        ASSERT_TRUE(r.finite) << "n " << n;
+        ASSERT_EQ(r.max_abs, m) << "n " << n;
+        for (std::size_t at = 0; at < n; ++at)
+            for (double bad : {std::nan(""), HUGE_VAL, -HUGE_VAL}) {
+                std::vector<double> y = x;
+                y[at] = bad;
+                ASSERT_FALSE(detail::max_abs_finite(y.data(), n).finite) << "n " << n << " at " << at << " " << bad;
+                ++checked;
+            }
+    }
+    EXPECT_EQ(checked, 3u * (22 * 23 / 2));
 }
 
 TEST(Kernels, AvxBatchReportsTheFirstBadIndex) {

@@ -283,6 +283,10 @@ struct batch_kernels {
                                  bool stream, T t_end, bool& unsorted) noexcept {
         T o[3], a[3], b[3], c[3];
         run_coefficients<Order>(s, o, a, b, c);
+        if constexpr (std::is_same_v<T, float>)
+            if (detail::avx512_enabled())
+                return detail::sorted_run3_512<Order>(o, a, b, c, s.t0, s.inv_h, t, reinterpret_cast<T*>(out), n,
+                                                      previous, stream, t_end, unsorted);
         return detail::sorted_run3<Order>(o, a, b, c, s.t0, s.inv_h, t, reinterpret_cast<T*>(out), n, previous, stream,
                                           t_end, unsorted);
     }

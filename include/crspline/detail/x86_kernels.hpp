@@ -19,6 +19,14 @@
 #define CRSPLINE_X86_DISPATCH 1
 #include <immintrin.h>
 #define CRSPLINE_TARGET_AVX2 __attribute__((target("avx2")))
+// AVX-512F brings FMA with it, and GCC contracts a product and a sum into
+// one FMA by default (-ffp-contract=fast): a different rounding. Off for
+// these functions, so that they keep the portable code's bits.
+#if defined(__clang__)
+#define CRSPLINE_TARGET_AVX512 __attribute__((target("avx512f")))
+#else
+#define CRSPLINE_TARGET_AVX512 __attribute__((target("avx512f"), optimize("fp-contract=off")))
+#endif
 #else
 #define CRSPLINE_X86_DISPATCH 0
 #endif
@@ -31,6 +39,14 @@ namespace crspline::detail {
 /// tests can compare against the portable kernels.
 inline bool& avx2_enabled() noexcept {
     static bool on = __builtin_cpu_supports("avx2");
+    return on;
+}
+
+/// Whether the AVX-512 float kernel runs (sorted 3-D float evaluation): the
+/// CPU's answer (AVX-512F with the OS saving its registers), once; writable
+/// so that tests can compare it with the AVX2 and portable kernels.
+inline bool& avx512_enabled() noexcept {
+    static bool on = __builtin_cpu_supports("avx512f");
     return on;
 }
 
@@ -185,6 +201,124 @@ CRSPLINE_TARGET_AVX2 std::size_t sorted_run3(const T* o, const T* a, const T* b,
             k = sorted_loop3<T, Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, n, good);
         else
             k = sorted_loop3<T, Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, n, good);
+        prev = t[k - 1];
+        bad |= unsigned(L::mask(good) != L::all);
+    }
+    while (k < n && t[k] < t_end) one(k++);
+    previous = prev;
+    unsorted = unsorted || bad != 0;
+    return k;
+}
+
+/// Lanes of the 512-bit float loop: v[(16 r + j) % 3] in lane j, and the
+/// index (16 r + j) / 3 that spreads u over them.
+CRSPLINE_TARGET_AVX512 inline __m512 pattern512(const float* v, int r) noexcept {
+    float l[16];
+    for (int j = 0; j < 16; ++j) l[j] = v[(16 * r + j) % 3];
+    return _mm512_loadu_ps(l);
+}
+CRSPLINE_TARGET_AVX512 inline __m512i index512(int r) noexcept {
+    int l[16];
+    for (int j = 0; j < 16; ++j) l[j] = (16 * r + j) / 3;
+    return _mm512_loadu_si512(l);
+}
+
+/// The float loop of sorted_run3 in 512-bit lanes: 16 points per step, 48
+/// floats in 3 registers laid out as in memory (lane j of register r holds
+/// coordinate (16 r + j) % 3 of point (16 r + j) / 3), the same operations
+/// as sorted_loop3, so the same bits. From point k (out + 3 k 64-byte
+/// aligned when Stream) while 16 points remain below t_end; returns the new
+/// k. (Issue 30: on the AMD EPYC the 8-lane loop retired about 3.3
+/// instructions a cycle and reached 0.65 of the float store floor; half as
+/// many instructions per point leave it bound by memory.)
+template <int Order, bool Stream>
+CRSPLINE_TARGET_AVX512 std::size_t sorted_loop3_512(const float* o, const float* a, const float* b, const float* c,
+                                                     float t0, float ih, float t_end, const float* t, float* out,
+                                                     std::size_t k, std::size_t n, unsigned& good) noexcept {
+    using V = __m512;
+    const auto pattern = pattern512;
+    const auto index = index512;
+    const V vt0 = _mm512_set1_ps(t0), vih = _mm512_set1_ps(ih), vend = _mm512_set1_ps(t_end);
+    const V A0 = pattern(a, 0), A1 = pattern(a, 1), A2 = pattern(a, 2);
+    const V B0 = pattern(b, 0), B1 = pattern(b, 1), B2 = pattern(b, 2);
+    const V C0 = pattern(c, 0), C1 = pattern(c, 1), C2 = pattern(c, 2);
+    const float zero[3] = {0.0f, 0.0f, 0.0f};
+    const float* oo = Order == 0 ? o : zero;
+    const V O0 = pattern(oo, 0), O1 = pattern(oo, 1), O2 = pattern(oo, 2);
+    const __m512i I0 = index(0), I1 = index(1), I2 = index(2);
+    unsigned ok = good;
+    for (; k + 16 <= n; k += 16) {
+        const V x = _mm512_loadu_ps(t + k);
+        // Stop before a step with a point at or past the end knot (or NaN).
+        if (_mm512_cmp_ps_mask(x, vend, _CMP_LT_OQ) != 0xFFFF) break;
+        ok &= _mm512_cmp_ps_mask(_mm512_loadu_ps(t + k - 1), x, _CMP_LE_OQ);  // sorted; false for NaN too
+        const V u = _mm512_mul_ps(_mm512_sub_ps(x, vt0), vih);
+        const V U0 = _mm512_permutexvar_ps(I0, u), U1 = _mm512_permutexvar_ps(I1, u),
+                U2 = _mm512_permutexvar_ps(I2, u);
+        V r0 = _mm512_add_ps(A0, _mm512_mul_ps(U0, _mm512_add_ps(B0, _mm512_mul_ps(U0, C0))));
+        V r1 = _mm512_add_ps(A1, _mm512_mul_ps(U1, _mm512_add_ps(B1, _mm512_mul_ps(U1, C1))));
+        V r2 = _mm512_add_ps(A2, _mm512_mul_ps(U2, _mm512_add_ps(B2, _mm512_mul_ps(U2, C2))));
+        if constexpr (Order == 0) {
+            r0 = _mm512_add_ps(O0, _mm512_mul_ps(U0, r0));
+            r1 = _mm512_add_ps(O1, _mm512_mul_ps(U1, r1));
+            r2 = _mm512_add_ps(O2, _mm512_mul_ps(U2, r2));
+        }
+        float* dst = out + 3 * k;
+        if constexpr (Stream) {
+            _mm512_stream_ps(dst, r0), _mm512_stream_ps(dst + 16, r1), _mm512_stream_ps(dst + 32, r2);
+        } else {
+            _mm512_storeu_ps(dst, r0), _mm512_storeu_ps(dst + 16, r1), _mm512_storeu_ps(dst + 32, r2);
+        }
+    }
+    good = ok;
+    return k;
+}
+
+/// sorted_run3 for floats with the 512-bit loop: the same head (scalar
+/// points until the output is 32-byte aligned), one 8-lane step when that
+/// leaves it 64-byte aligned for streaming, the 16-lane loop, then the
+/// 8-lane loop and single points for the rest of the run. The same bits as
+/// sorted_run3.
+template <int Order>
+CRSPLINE_TARGET_AVX2 std::size_t sorted_run3_512(const float* o, const float* a, const float* b, const float* c,
+                                                 float t0, float ih, const float* t, float* out, std::size_t n,
+                                                 float& previous, bool stream, float t_end, bool& unsorted) noexcept {
+    using L = lanes256<float>;
+    constexpr std::size_t W = L::W;
+    unsigned bad = 0;
+    float prev = previous;
+    std::size_t k = 0;
+    auto one = [&](std::size_t q) {
+        const float x = t[q];
+        bad |= unsigned(!(prev <= x));
+        prev = x;
+        const float u = (x - t0) * ih;
+        for (int d = 0; d < 3; ++d) {
+            if constexpr (Order == 0) out[3 * q + d] = o[d] + u * (a[d] + u * (b[d] + u * c[d]));
+            else out[3 * q + d] = a[d] + u * (b[d] + u * c[d]);
+        }
+    };
+    auto at = [&](std::size_t q, std::size_t bytes) { return reinterpret_cast<std::uintptr_t>(out + 3 * q) % bytes; };
+    if (n > 0) one(k++);
+    while (k < n && k < W && t[k] < t_end && at(k, 32) != 0) one(k++);
+    if (k + W <= n) {
+        typename L::V good = L::ones();
+        const bool streaming = stream && at(k, 32) == 0;
+        std::size_t before = k;
+        // One 8-point step (96 bytes) turns 32-byte alignment into 64.
+        if (at(k, 64) != 0 && k + W <= n) {
+            before = k;
+            k = streaming ? sorted_loop3<float, Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, k + W, good)
+                          : sorted_loop3<float, Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, k + W, good);
+        }
+        if (k != before || at(k, 64) == 0) {
+            unsigned good16 = 0xFFFF;
+            k = streaming ? sorted_loop3_512<Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, n, good16)
+                          : sorted_loop3_512<Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, n, good16);
+            bad |= unsigned(good16 != 0xFFFF);
+        }
+        k = streaming ? sorted_loop3<float, Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, n, good)
+                      : sorted_loop3<float, Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, n, good);
         prev = t[k - 1];
         bad |= unsigned(L::mask(good) != L::all);
     }
