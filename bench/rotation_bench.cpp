@@ -1,7 +1,9 @@
 // Rotation splines (issue 28), Google Benchmark:
 //   rotation/eval/<kind>: batch evaluation of 10^6 samples of a rotation
 //       curve (100 random keys), per sample; the goal is at most 4x the
-//       time of euclid4/eval below.
+//       time of euclid4/eval below. c2_velocity: rotation and body-frame
+//       angular velocity (SciPy's (t, 1)); */scalar: the same samples one
+//       evaluate_on() call at a time, the kernels' baseline.
 //   rotation/euclid4/eval: crspline's own 4-D Euclidean Catmull-Rom through
 //       the same keys as points, batch-evaluated at the same t: the floor.
 //   rotation/c2/construct/<keys>: the C2 spline's Newton solve at 10^3 to
@@ -81,6 +83,48 @@ void eval_c2(benchmark::State& state) {
     state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(samples));
 }
 
+rot::c2_rotation_spline<double> c2_curve() {
+    const auto keys = random_keys(100);
+    std::vector<double> times(keys.size());
+    for (std::size_t k = 0; k < times.size(); ++k) times[k] = double(k);
+    return rot::c2_rotation_spline<double>{std::span<const double>(times), std::span<const quat>(keys)};
+}
+
+// Rotation and body-frame angular velocity, as SciPy's RotationSpline(t, 1) needs.
+void eval_c2_velocity(benchmark::State& state) {
+    const auto c = c2_curve();
+    const auto t = random_t(c.grid().front(), c.grid().back(), samples);
+    std::vector<double> q(4 * samples), w(3 * samples);
+    rot::batch_rows<double> rows;
+    rows.q = q.data(), rows.omega = w.data();
+    for (auto _ : state) {
+        c.evaluate(std::span<const double>(t), rows, 1, rot::frame::body);
+        benchmark::DoNotOptimize(q.data());
+        benchmark::DoNotOptimize(w.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(samples));
+}
+
+// The kernels' baseline: one located evaluate_on() per sample.
+template <class Curve>
+void eval_scalar_loop(benchmark::State& state, const Curve& c) {
+    const auto t = random_t(c.grid().front(), c.grid().back(), samples);
+    std::vector<quat> out(samples);
+    for (auto _ : state) {
+        for (std::size_t k = 0; k < samples; ++k) out[k] = c.evaluate_on(c.locate(t[k]), t[k], 0).q;
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(samples));
+}
+void eval_c2_scalar(benchmark::State& state) { eval_scalar_loop(state, c2_curve()); }
+void eval_slerp_scalar(benchmark::State& state) {
+    rot::rotation_options<double> o;
+    o.kind = rot::spline_kind::piecewise_slerp;
+    eval_scalar_loop(state, rot::quaternion_spline<double>(random_keys(100), o));
+}
+
 // The floor: the same keys as 4-D points on the uniform grid.
 void eval_euclid4(benchmark::State& state) {
     const auto keys = random_keys(100);
@@ -142,6 +186,9 @@ BENCHMARK_CAPTURE(eval_quaternion, slerp, rot::spline_kind::piecewise_slerp)
     ->Name("rotation/eval/slerp")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(eval_quaternion, squad, rot::spline_kind::squad)->Name("rotation/eval/squad")->Unit(benchmark::kMillisecond);
 BENCHMARK(eval_c2)->Name("rotation/eval/c2")->Unit(benchmark::kMillisecond);
+BENCHMARK(eval_c2_velocity)->Name("rotation/eval/c2_velocity")->Unit(benchmark::kMillisecond);
+BENCHMARK(eval_c2_scalar)->Name("rotation/eval/c2/scalar")->Unit(benchmark::kMillisecond);
+BENCHMARK(eval_slerp_scalar)->Name("rotation/eval/slerp/scalar")->Unit(benchmark::kMillisecond);
 BENCHMARK(construct_c2)->Name("rotation/c2/construct")->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(eval_pose)->Name("rotation/pose/eval")->Unit(benchmark::kMillisecond);
 

@@ -8,6 +8,12 @@ splines.quaternion where it is installed (goal: at least 1000x).
 
 Prints a table and, with --out, writes the medians as JSON. Timings on a
 loaded machine are not figures: BENCHMARKS.md records the run that made them.
+
+    python3 bench/rotation_bench.py --cpp RESULTS.json
+
+reads the C++ benchmark's JSON (crspline_rotation_bench --benchmark_out=...)
+instead and prints each class's time per sample against the 4-D Euclidean
+batch of the same run (goal: at most 4x); this mode needs no NumPy.
 """
 import argparse
 import json
@@ -15,11 +21,11 @@ import statistics
 import sys
 import time
 
-import numpy as np
-
 
 def random_keys(n, seed=28):
     """n unit quaternions [w, x, y, z], consecutive ones 0.2 to 1.2 rad apart (seeded)."""
+    import numpy as np
+
     rng = np.random.default_rng(seed)
     axes = rng.normal(size=(n, 3))
     axes /= np.linalg.norm(axes, axis=1)[:, None]
@@ -42,6 +48,32 @@ def best_of(reps, fn):
     return statistics.median(times)
 
 
+def cpp_ratios(path):
+    """The C++ rows of one run: ns per sample of each rotation batch and its
+    ratio to rotation/euclid4/eval (medians when the run has repetitions)."""
+    with open(path) as f:
+        rows = json.load(f)["benchmarks"]
+    ns = {}
+    for r in rows:
+        if r.get("run_type") == "aggregate" and r.get("aggregate_name") != "median":
+            continue
+        if "items_per_second" not in r:
+            continue
+        name = r.get("run_name", r["name"])
+        if name not in ns or r.get("aggregate_name") == "median":
+            ns[name] = 1e9 / r["items_per_second"]
+    floor = ns.get("rotation/euclid4/eval")
+    if floor is None:
+        print("no rotation/euclid4/eval row in " + path, file=sys.stderr)
+        return 1
+    print("| batch, 10^6 random t | ns per sample | / euclid4 | goal <= 4x |")
+    print("| --- | ---: | ---: | --- |")
+    for name, v in ns.items():
+        goal = "" if name == "rotation/euclid4/eval" or name.endswith("/scalar") else ("met" if v <= 4 * floor else "not met")
+        print(f"| {name} | {v:.1f} | {v / floor:.2f} | {goal} |")
+    return 0
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--samples", type=int, default=1_000_000)
@@ -49,7 +81,12 @@ def main(argv=None):
     ap.add_argument("--reps", type=int, default=3)
     ap.add_argument("--construct", default="1000,10000,100000", help="key counts for the C2 construction")
     ap.add_argument("--out")
+    ap.add_argument("--cpp", help="print the ratios of a C++ run's JSON instead (no NumPy needed)")
     args = ap.parse_args(argv)
+    if args.cpp:
+        return cpp_ratios(args.cpp)
+
+    import numpy as np
 
     from crspline import rotation
     from scipy.spatial.transform import Rotation
@@ -78,6 +115,13 @@ def main(argv=None):
         b = best_of(args.reps, lambda: theirs(t, order))
         results[f"eval{order}"] = {"crspline_s": a, "scipy_s": b, "ratio": b / a}
         rows.append((f"RotationSpline(t, {order}), {args.samples} samples", a, b))
+    # SciPy's own currency: a Rotation in and out (crspline writes x, y, z, w
+    # rows for it; Rotation.from_quat then normalizes them, SciPy's cost).
+    ours_r = rotation.RotationSpline(times, Rotation.from_quat(xyzw))
+    a = best_of(args.reps, lambda: ours_r(t))
+    b = best_of(args.reps, lambda: theirs(t))
+    results["eval0_rotation_objects"] = {"crspline_s": a, "scipy_s": b, "ratio": b / a}
+    rows.append((f"RotationSpline(t) -> Rotation, {args.samples} samples", a, b))
     try:
         from splines.quaternion import CatmullRom, UnitQuaternion
     except ImportError:

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The whole benchmark run (`./run bench`): Release build of bench/ (the
 # project's normal flags, no -march), the Google Benchmark suite with
-# repetitions, the three.js peer in node, the crspline command on 10^6
+# repetitions, the three.js peer in node, the rotation splines' batches
+# against the 4-D Euclidean one (issue 28), the crspline command on 10^6
 # points (time and peak memory), then the table of medians and ratios.
 #   apt: libbenchmark-dev libboost-math-dev libglm-dev nodejs npm
 #   npm: three (bench/js/package.json, installed with `npm ci`); crspline's
@@ -30,6 +31,11 @@ stamp="$(date -u +%Y%m%dT%H%M%SZ)"
     --benchmark_filter="${FILTER:-.}" \
     --benchmark_out="$results/cpp-$stamp.json" --benchmark_out_format=json
 node bench/js/threejs_bench.mjs "$results/walk1000.json" "$results/js-$stamp.json" "$reps"
+# Issue 28: rotation splines. Each class's batch and the 4-D Euclidean batch
+# in one run, back to back, so their ratio holds even on a loaded machine.
+"$build/crspline_rotation_bench" --benchmark_repetitions="$reps" --benchmark_min_time=0.2 \
+    --benchmark_out="$results/rotation-$stamp.json" --benchmark_out_format=json
+python3 bench/rotation_bench.py --cpp "$results/rotation-$stamp.json" | tee "$results/latest-rotation.md"
 # The crspline command on a 10^6-point CSV: time and peak memory of each
 # subcommand (getrusage of the child), against reading the file.
 cli_build="${CLI_BUILD:-build-bench/cli}"
@@ -42,9 +48,16 @@ cp "$results/cpp-$stamp.json" "$results/latest-cpp.json"
 cp "$results/js-$stamp.json" "$results/latest-js.json"
 cp "$results/cli-$stamp.json" "$results/latest-cli.json"
 cp "$results/table-$stamp.md" "$results/latest-table.md"
+# Each CPU's results kept beside the others' (issue 30): bench/results/cpu/
+# <model and widest kernel>/, so a regression on either machine shows.
+cpu="$(python3 -c 'import json,re,sys; c=json.load(open(sys.argv[1]))["context"]; m=c.get("cpu_model","unknown"); k=c.get("kernels",""); w="avx512" if "AVX-512" in k else "avx2" if "AVX2" in k else "sse2"; print(re.sub(r"[^a-z0-9]+","-",(m.split(" (")[0]+" "+w).lower()).strip("-"))' "$results/cpp-$stamp.json")"
+mkdir -p "$results/cpu/$cpu"
+cp "$results/table-$stamp.md" "$results/cpu/$cpu/table.md"
+cp "$results/cpp-$stamp.json" "$results/cpu/$cpu/cpp.json"
 # Construction at 10^6 points: user-mode vs kernel time and page faults.
 echo
 { "$build/crspline_construct_rusage"; "$build/crspline_construct_rusage_4k"; } | tee "$results/latest-construct.md"
+cp "$results/latest-construct.md" "$results/cpu/$cpu/construct.md"
 # Instruction counts (callgrind): stable where the times above are not.
 if [[ -x "$build/crspline_instructions" ]] && command -v valgrind >/dev/null; then
     echo

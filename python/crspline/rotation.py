@@ -231,12 +231,14 @@ def _from_rotations(rotations):
     return _quats(rotations, "rotations"), False
 
 
-def _to_rotations(wxyz, as_scipy, scalar):
+def _to_rotations(q, as_scipy, scalar, xyzw=False):
+    """q: rows [w, x, y, z], or [x, y, z, w] already with xyzw (only for a SciPy Rotation)."""
     if as_scipy:
         R = _scipy_rotation_class()
-        xyzw = wxyz[..., [1, 2, 3, 0]]
-        return R.from_quat(xyzw[0] if scalar else xyzw)
-    return wxyz[0] if scalar else wxyz
+        if not xyzw:
+            q = q[..., [1, 2, 3, 0]]
+        return R.from_quat(q[0] if scalar else q)
+    return q[0] if scalar else q
 
 
 def _check_times(times, n_rotations, what="rotations"):
@@ -275,10 +277,13 @@ class RotationSpline:
         if order not in (0, 1, 2):
             raise ValueError("`order` must be 0, 1 or 2.")
         ta, flat = _times(times)
-        seg = _np.clip(_np.searchsorted(self.times, flat, side="right") - 1, 0, len(self.times) - 2).astype(_np.int64)
-        out = self._c.evaluate_on(seg, flat, order, "body")[order]
+        # One call into the batch kernels (GIL released): the segment of each
+        # t found there (t before the first or after the last time takes the
+        # end segment, as SciPy's searchsorted does), the rotations written
+        # in SciPy's x, y, z, w order when a Rotation is to be made.
+        out = self._c.evaluate(flat, order, "body", True, order == 0 and self._scipy)[order]
         if order == 0:
-            return _to_rotations(out, self._scipy, ta.ndim == 0)
+            return _to_rotations(out, self._scipy, ta.ndim == 0, xyzw=self._scipy)
         return out[0] if ta.ndim == 0 else out
 
 
@@ -300,5 +305,5 @@ class Slerp:
         if _np.any(flat < self.times[0]) or _np.any(flat > self.times[-1]):
             raise ValueError("Interpolation times must be within the range "
                              f"[{self.times[0]}, {self.times[-1]}], both inclusive.")
-        q = self._c.evaluate(flat, 0, "world")[0]
-        return _to_rotations(q, self._scipy, ta.ndim == 0)
+        q = self._c.evaluate(flat, 0, "world", self._scipy)[0]
+        return _to_rotations(q, self._scipy, ta.ndim == 0, xyzw=self._scipy)

@@ -56,43 +56,65 @@ frame to_frame(const std::string& f) {
     throw invalid_input("frame must be 'world' or 'body', got '" + f + "'");
 }
 
-/// Evaluates a rotation curve at every t (segment chosen by t, or given per
-/// sample): (q (m, 4), omega (m, 3) or None, alpha (m, 3) or None).
+/// Evaluates a rotation curve at every t, each on the segment given for it
+/// (evaluate_on: one-sided at knots, extrapolating outside the segment):
+/// (q (m, 4), omega (m, 3) or None, alpha (m, 3) or None).
 template <class Curve>
-py::tuple evaluate_many(const Curve& c, const farray& t, std::optional<py::array_t<long long>> seg, int order,
-                        const std::string& frame_name) {
+py::tuple evaluate_on_many(const Curve& c, const farray& t, const py::array_t<long long>& seg, int order,
+                           const std::string& frame_name) {
     if (order < 0 || order > 2) throw invalid_input("derivative order must be 0, 1 or 2, got " + std::to_string(order));
     const frame f = to_frame(frame_name);
     const std::size_t m = std::size_t(t.size());
+    if (std::size_t(seg.size()) != m) throw invalid_input("segments and t differ in length");
+    const long long* sp = seg.data();
+    for (std::size_t k = 0; k < m; ++k)
+        if (sp[k] < 0 || std::size_t(sp[k]) >= c.segment_count())
+            throw invalid_input("segment index " + std::to_string(sp[k]) + " (index " + std::to_string(k) +
+                                ") is out of range (the curve has " + std::to_string(c.segment_count()) + " segments)");
     farray q({py::ssize_t(m), py::ssize_t(4)}), w({py::ssize_t(m), py::ssize_t(3)}), a({py::ssize_t(m), py::ssize_t(3)});
     const double* tp = t.data();
-    const long long* sp = nullptr;
-    if (seg) {
-        if (std::size_t(seg->size()) != m) throw invalid_input("segments and t differ in length");
-        sp = seg->data();
-        for (std::size_t k = 0; k < m; ++k)
-            if (sp[k] < 0 || std::size_t(sp[k]) >= c.segment_count())
-                throw invalid_input("segment index " + std::to_string(sp[k]) + " (index " + std::to_string(k) +
-                                    ") is out of range (the curve has " + std::to_string(c.segment_count()) + " segments)");
-    } else {
-        const auto g = c.grid();
-        for (std::size_t k = 0; k < m; ++k)
-            if (!(tp[k] >= g.front() && tp[k] <= g.back()))
-                throw out_of_domain("t = " + crspline::detail::num(tp[k]) + " (index " + std::to_string(k) +
-                                    ") is outside the curve's domain [" + crspline::detail::num(g.front()) + ", " +
-                                    crspline::detail::num(g.back()) + "]");
-    }
     double *qp = q.mutable_data(), *wp = w.mutable_data(), *ap = a.mutable_data();
     {
         py::gil_scoped_release release;
         for (std::size_t k = 0; k < m; ++k) {
-            const std::size_t i = sp ? std::size_t(sp[k]) : c.locate(tp[k]);
-            const auto j = c.evaluate_on(i, tp[k], order, f);
+            const auto j = c.evaluate_on(std::size_t(sp[k]), tp[k], order, f);
             qp[4 * k] = j.q.w, qp[4 * k + 1] = j.q.x, qp[4 * k + 2] = j.q.y, qp[4 * k + 3] = j.q.z;
             for (std::size_t d = 0; d < 3; ++d) wp[3 * k + d] = j.omega[d], ap[3 * k + d] = j.alpha[d];
         }
     }
     return py::make_tuple(q, order >= 1 ? py::object(w) : py::object(py::none()), order >= 2 ? py::object(a) : py::object(py::none()));
+}
+
+/// Evaluates a rotation curve at every t through its batch kernels
+/// (batch.hpp), the GIL released: (q (m, 4), omega (m, 3) or None, alpha
+/// (m, 3) or None); q as rows [x, y, z, w] with xyzw (SciPy's order).
+/// Only the arrays the order asks for are made.
+template <class Curve, class... Extra>
+py::tuple evaluate_many(const Curve& c, const farray& t, int order, const std::string& frame_name, bool xyzw,
+                        Extra... extra) {
+    if (order < 0 || order > 2) throw invalid_input("derivative order must be 0, 1 or 2, got " + std::to_string(order));
+    const frame f = to_frame(frame_name);
+    const auto m = py::ssize_t(t.size());
+    farray q({m, py::ssize_t(4)});
+    py::object w = py::none(), a = py::none();
+    batch_rows<double> rows;
+    rows.q = q.mutable_data(), rows.xyzw = xyzw;
+    if (order >= 1) {
+        farray x({m, py::ssize_t(3)});
+        rows.omega = x.mutable_data();
+        w = x;
+    }
+    if (order >= 2) {
+        farray x({m, py::ssize_t(3)});
+        rows.alpha = x.mutable_data();
+        a = x;
+    }
+    const std::span<const double> ts(t.data(), std::size_t(m));
+    {
+        py::gil_scoped_release release;
+        c.evaluate(ts, rows, order, f, extra...);
+    }
+    return py::make_tuple(q, w, a);
 }
 
 spline_kind to_kind(const std::string& k) {
@@ -188,11 +210,14 @@ void bind_rotation(py::module_& m) {
                                    for (const auto& s : c.control_quaternions()) l.append(from_quats(s));
                                    return l;
                                })
-        .def("evaluate", [](const QS& c, const farray& t, int order, const std::string& f) { return evaluate_many(c, t, std::nullopt, order, f); },
-             py::arg("t"), py::arg("order") = 0, py::arg("frame") = "world")
+        .def("evaluate",
+             [](const QS& c, const farray& t, int order, const std::string& f, bool xyzw) {
+                 return evaluate_many(c, t, order, f, xyzw);
+             },
+             py::arg("t"), py::arg("order") = 0, py::arg("frame") = "world", py::arg("xyzw") = false)
         .def("evaluate_on",
              [](const QS& c, const py::array_t<long long>& seg, const farray& t, int order, const std::string& f) {
-                 return evaluate_many(c, t, seg, order, f);
+                 return evaluate_on_many(c, t, seg, order, f);
              },
              py::arg("segment"), py::arg("t"), py::arg("order") = 0, py::arg("frame") = "world")
         .def("angle_length", [](const QS& c, double acc) { return angle_length(c, acc); }, py::arg("accuracy") = default_angle_accuracy)
@@ -229,11 +254,15 @@ void bind_rotation(py::module_& m) {
                                        for (std::size_t d = 0; d < 3; ++d) a.mutable_data()[3 * i + d] = r[i][d];
                                    return a;
                                })
-        .def("evaluate", [](const C2& c, const farray& t, int order, const std::string& f) { return evaluate_many(c, t, std::nullopt, order, f); },
-             py::arg("t"), py::arg("order") = 0, py::arg("frame") = "world")
+        .def("evaluate",
+             [](const C2& c, const farray& t, int order, const std::string& f, bool extrapolate, bool xyzw) {
+                 return evaluate_many(c, t, order, f, xyzw, extrapolate);
+             },
+             py::arg("t"), py::arg("order") = 0, py::arg("frame") = "world", py::arg("extrapolate") = false,
+             py::arg("xyzw") = false)
         .def("evaluate_on",
              [](const C2& c, const py::array_t<long long>& seg, const farray& t, int order, const std::string& f) {
-                 return evaluate_many(c, t, seg, order, f);
+                 return evaluate_on_many(c, t, seg, order, f);
              },
              py::arg("segment"), py::arg("t"), py::arg("order") = 0, py::arg("frame") = "world")
         .def("angle_length", [](const C2& c, double acc) { return angle_length(c, acc); }, py::arg("accuracy") = default_angle_accuracy)
