@@ -329,6 +329,30 @@ inline void tessellate_arc(arc_work& a, double tolerance) {
     }
 }
 
+// Arc length of the arc's curve: a linear segment's is its chord's, the
+// others' to arc_length's default accuracy, sixteen segments at a time
+// (arc_length.hpp's batch, the same pieces as arc_length(segment)); summed
+// in segment order.
+inline double arc_curve_length(const arc_work& a) {
+    const std::size_t segs = a.segments();
+    std::vector<double> len(segs, 0.0);
+    std::vector<std::size_t> curved;
+    curved.reserve(segs);
+    for (std::size_t s = 0; s < segs; ++s) {
+        if (a.linear(s)) len[s] = norm(a.pts[a.next(s)] - a.pts[s]);
+        else curved.push_back(s);
+    }
+    if (!curved.empty()) {
+        const auto segments = a.curve->segments();
+        crspline::detail::for_each_segment_length_piece(
+            curved.size(), [&](std::size_t k) { return segments[curved[k]]; }, default_accuracy,
+            [&](std::size_t k, double, double, double l, const crspline::detail::rule_choice&) { len[curved[k]] += l; });
+    }
+    double sum = 0;
+    for (double l : len) sum += l;
+    return sum;
+}
+
 // ---- The proof, segment by segment (see the file comment) ----------------
 
 // Bézier points of segment s of the arc's curve, the ends being the arc's
@@ -442,6 +466,24 @@ inline bool hulls_apart_at(const std::array<p2, 4>& p, const std::array<p2, 4>& 
     double s = std::fmod(b0 - a0, two_pi);
     if (s < 0) s += two_pi;
     return s > (a1 - a0) + margin && s + (b1 - b0) < two_pi - margin;
+}
+
+// hulls_apart_at's cheaper sufficient test: a line through v with every
+// point of p (other than v) strictly on one side and every point of q on
+// the other. The line tried is the one across the direction from p's
+// points to q's (their sums, seen from v): the usual case of two
+// consecutive segments of a curve turning less than a right angle.
+inline bool apart_by_line(const std::array<p2, 4>& p, const std::array<p2, 4>& q, const p2& v, double slack) {
+    auto near_v = [&](const p2& d) { return std::abs(d[0]) <= slack && std::abs(d[1]) <= slack; };
+    p2 dir{};
+    for (const p2& x : q) dir = dir + (x - v);
+    for (const p2& x : p) dir = dir - (x - v);
+    const double margin = slack * (std::abs(dir[0]) + std::abs(dir[1]));
+    for (const p2& x : p)
+        if (!near_v(x - v) && !(dot(x - v, dir) < -margin)) return false;
+    for (const p2& x : q)
+        if (!near_v(x - v) && !(dot(x - v, dir) > margin)) return false;
+    return true;
 }
 
 // The end point two point sets share (their first or last), if any.
@@ -567,7 +609,7 @@ struct proof {
         const auto& hb = b.hull[t];
         const p2* v = shared_end(ha, hb);
         // Segment level: hulls meeting only at a shared end.
-        if (v && hulls_apart_at(ha, hb, *v, slack)) return;
+        if (v && (apart_by_line(ha, hb, *v, slack) || hulls_apart_at(ha, hb, *v, slack))) return;
         const bool la = a.linear(s), lb = b.linear(t);
         if (la && lb) {
             // Two input segments: apart, or the input itself meets here
@@ -858,16 +900,8 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
     for (std::size_t i = 0; i < arcs.size(); ++i) {
         auto& a = arcs[i];
         for (auto l : a.level) res.stats.tensioned_vertices += l > 0 && !(a.pts.size() == 2 && !a.closed);
-        double len = 0;
-        for (std::size_t s = 0; s < a.segments(); ++s) {
-            if (a.linear(s)) {
-                ++res.stats.linear_segments;
-                len += norm(a.pts[a.next(s)] - a.pts[s]);
-            } else {
-                len += arc_length(a.curve->segment(s));
-            }
-        }
-        arc_length_of[i] = len;
+        for (std::size_t s = 0; s < a.segments(); ++s) res.stats.linear_segments += a.linear(s);
+        arc_length_of[i] = detail::arc_curve_length(a);
     }
     layer& out = res.output;
     out.extra_dims = E;
