@@ -322,6 +322,44 @@ TEST(GeoSmooth, DeviationIsBoundedAndMeasured) {
     EXPECT_GT(tightened, 0u);  // 0.05 is below what the free curves deviate: tension was needed
 }
 
+// Measures only (polylines = false): the same lengths, deviations,
+// verdicts and statuses as the full smoothing, bit for bit (the curves and
+// the proof are the same; the polylines are made only where the proof
+// needs pieces), and the input as output.
+TEST(GeoSmooth, MeasuresOnlyAgreeWithSmoothing) {
+    CRSPLINE_SEEDED(seed, 1729);
+    std::mt19937_64 rng(seed);
+    geo::layer l;
+    for (std::size_t k = 0; k < 12; ++k) {
+        // Walks in a small square: some cross themselves or each other.
+        const auto line = crspline::test::random_polygon<2>(rng, 8 + k, 1.0);
+        l.add_part(k, k % 3 == 2 ? part_kind::ring : part_kind::line, flat(line));
+    }
+    std::size_t compared = 0, crossing = 0;
+    for (bool preserve : {true, false}) {
+        const auto full = geo::smooth(l, {.tolerance = 1e-3, .preserve_topology = preserve});
+        geo::smooth_options o{.tolerance = 1e-3, .preserve_topology = preserve};
+        o.polylines = false;
+        const auto meas = geo::smooth(l, o);
+        ASSERT_EQ(meas.features.size(), full.features.size());
+        for (std::size_t f = 0; f < full.features.size(); ++f) {
+            EXPECT_EQ(meas.features[f].length, full.features[f].length) << "feature " << f;
+            EXPECT_EQ(meas.features[f].max_deviation, full.features[f].max_deviation) << "feature " << f;
+            EXPECT_EQ(meas.features[f].verdict, full.features[f].verdict) << "feature " << f;
+            EXPECT_EQ(meas.features[f].status, full.features[f].status) << "feature " << f;
+            crossing += full.features[f].verdict == geo::verdict::crosses;
+            ++compared;
+        }
+        EXPECT_EQ(meas.stats.rounds, full.stats.rounds);
+        EXPECT_EQ(meas.stats.input_crossings, full.stats.input_crossings);
+        EXPECT_EQ(meas.output.xy, l.xy);
+        EXPECT_EQ(meas.output.part_offsets, l.part_offsets);
+        EXPECT_LT(meas.stats.pieces, full.stats.pieces);
+    }
+    EXPECT_EQ(compared, 24u);
+    EXPECT_GT(crossing, 0u);  // not vacuous: the proof had crossings to find
+}
+
 TEST(GeoSmooth, StatusesNameTheProblemAndPassThrough) {
     geo::layer l;
     l.extra_dims = 1;

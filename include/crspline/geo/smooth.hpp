@@ -124,6 +124,10 @@ struct smooth_options {
     /// layer's frame keeps latitudes within the poles and longitudes within
     /// the antimeridian. Inputs outside it are left as they are there.
     std::optional<box<2>> domain{};
+    /// false: measures only (lengths, deviations, verdicts); the output
+    /// layer is the input, and the curves are tessellated only where the
+    /// proof needs their pieces.
+    bool polylines = true;
 };
 
 /// One feature's outcome. Lengths and deviations in the layer's units.
@@ -270,6 +274,7 @@ struct arc_work {
     std::vector<box<2>> hull_box;         // per segment: their box
     std::vector<std::size_t> first_piece; // per segment: its first polyline piece; one more: the piece count
     crspline::box<2> bounds{};            // of all the hulls
+    bool has_line = false;                // line, vseg, vu, first_piece are this curve's
 
     std::size_t segments() const noexcept { return closed ? pts.size() : pts.size() - 1; }
     std::size_t next(std::size_t i) const noexcept { return i + 1 == pts.size() ? 0 : i + 1; }
@@ -554,13 +559,11 @@ struct proof {
     void prepare(std::uint32_t i) {
         arc_work& a = arcs[i];
         build_arc_curve(a, opt.alpha);
-        tessellate_arc(a, opt.tolerance);
+        a.has_line = false;
+        if (opt.polylines) ensure_line(i);
         const std::size_t segs = a.segments();
         a.hull.resize(segs);
         a.hull_box.resize(segs);
-        a.first_piece.assign(segs + 1, 0);
-        for (std::size_t k = a.line.points.size() - 1; k-- > 0;) a.first_piece[a.vseg[k]] = k;
-        a.first_piece[segs] = a.line.points.size() - 1;
         a.max_dev = 0;
         for (std::size_t s = 0; s < segs; ++s) {
             auto& b = a.hull[s];
@@ -583,6 +586,7 @@ struct proof {
                 bool inside = true;
                 for (const p2& q : b) inside = inside && opt.domain->contains(q);
                 // The hull leaves the domain: the pieces' own hulls decide.
+                if (!inside) ensure_line(i);
                 for (std::size_t k = a.first_piece[s]; !inside && k < a.first_piece[s + 1]; ++k) {
                     const piece pc = piece_of(a, i, k, slack);
                     bool in = true;
@@ -594,6 +598,18 @@ struct proof {
                 }
             }
         }
+    }
+
+    // The arc's polyline (tessellated once per curve) and its pieces per segment.
+    void ensure_line(std::uint32_t i) {
+        arc_work& a = arcs[i];
+        if (a.has_line) return;
+        tessellate_arc(a, opt.tolerance);
+        const std::size_t segs = a.segments();
+        a.first_piece.assign(segs + 1, 0);
+        for (std::size_t k = a.line.points.size() - 1; k-- > 0;) a.first_piece[a.vseg[k]] = k;
+        a.first_piece[segs] = a.line.points.size() - 1;
+        a.has_line = true;
     }
 
     void fail(const piece& pc) {
@@ -626,6 +642,8 @@ struct proof {
             return;
         }
         // Piece level: each piece within its flatness margin of its chord.
+        ensure_line(i);
+        ensure_line(j);
         for (std::size_t k = a.first_piece[s]; k < a.first_piece[s + 1]; ++k) {
             const piece p = piece_of(a, i, k, slack);
             for (std::size_t m = b.first_piece[t]; m < b.first_piece[t + 1]; ++m) {
@@ -887,7 +905,7 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
     res.stats.pairs_checked = pr.pairs;
     res.stats.input_crossings = pr.crossings;
     res.stats.input_touches = pr.touches;
-    for (const auto& a : arcs) res.stats.pieces += a.line.points.size() - 1;
+    for (const auto& a : arcs) res.stats.pieces += a.has_line ? a.line.points.size() - 1 : 0;
     const std::vector<std::uint8_t>& arc_crossing = pr.crossing;
 
     // 4. Extras along the arcs, lengths, the output layer.
@@ -918,7 +936,14 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
     for (std::size_t p = 0; p < nparts; ++p) {
         const std::size_t f = in.part_features[p];
         auto& rep = res.features[f];
-        if (clean_of[p] == SIZE_MAX) {
+        if (clean_of[p] != SIZE_MAX && !opt.polylines) {
+            // Measures only: the curves' lengths and deviations, the input as output.
+            for (const auto& [ai, reversed] : topo.parts[clean_of[p]].arcs) {
+                rep.length += arc_length_of[ai];
+                rep.max_deviation = std::max(rep.max_deviation, arcs[ai].max_dev);
+            }
+        }
+        if (clean_of[p] == SIZE_MAX || !opt.polylines) {
             // Passed through unchanged.
             for (std::size_t v = in.part_offsets[p]; v < in.part_offsets[p + 1]; ++v)
                 emit(p2{{in.xy[2 * v], in.xy[2 * v + 1]}}, E ? &in.extra[v * E] : nullptr);
