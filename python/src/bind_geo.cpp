@@ -269,145 +269,35 @@ py::array_t<double> geo_arc_boxes(carray<double> xy, carray<std::int64_t> offset
 
 // Steps 3 and 4 of geo::smooth (the rounds of tension and proof, the arc
 // lengths) on a group of arcs that no arc outside can meet at any tension
-// (crspline.geo.dask groups them so, with boxes from geo_arc_boxes padded
-// by `bound` + slack), with the layer's rounding slack. Every piece's
-// flatness margin e is checked to be at most `bound` (the padding assumed):
-// otherwise invalid_input, rather than a proof that missed a pair.
+// (crspline.geo.dask groups them so, with boxes from geo_arc_boxes), with
+// the layer's rounding slack: the core's own proof (detail::proof), so the
+// numbers are the single-process ones.
 py::dict geo_smooth_arcs(carray<double> xy, carray<std::int64_t> offsets, carray<std::uint8_t> closed, double alpha,
                          double tolerance, std::optional<double> max_deviation, bool preserve_topology,
-                         std::optional<std::array<double, 4>> domain_box, double slack, double bound) {
-    using geo::detail::p2;
+                         std::optional<std::array<double, 4>> domain_box, double slack) {
+    if (!(alpha >= 0 && alpha <= 1))
+        throw crspline::invalid_input("alpha must be in [0, 1], got " + crspline::detail::num(alpha));
+    if (!(tolerance > 0 && std::isfinite(tolerance)))
+        throw crspline::invalid_input("tolerance must be positive and finite, got " + crspline::detail::num(tolerance));
+    if (!(slack >= 0 && std::isfinite(slack)))
+        throw crspline::invalid_input("slack must be non-negative and finite, got " + crspline::detail::num(slack));
     auto arcs = arcs_of(xy, offsets, closed);
-    std::optional<box<2>> domain;
+    geo::smooth_options opt;
+    opt.alpha = alpha;
+    opt.tolerance = tolerance;
+    opt.max_deviation = max_deviation;
+    opt.preserve_topology = preserve_topology;
     if (domain_box)
-        domain = box<2>{vec<2>{{(*domain_box)[0], (*domain_box)[1]}}, vec<2>{{(*domain_box)[2], (*domain_box)[3]}}};
-    const double tol = tolerance;
-    std::vector<std::uint8_t> arc_crossing(arcs.size(), 0);
+        opt.domain = box<2>{vec<2>{{(*domain_box)[0], (*domain_box)[1]}}, vec<2>{{(*domain_box)[2], (*domain_box)[3]}}};
+    std::vector<std::uint8_t> arc_crossing;
     std::size_t rounds = 0;
-    double worst_e = 0;
     {
         py::gil_scoped_release release;
-        std::vector<geo::detail::piece> pieces;
-        constexpr std::size_t max_rounds = 64;
-        for (std::size_t round = 1;; ++round) {
-            rounds = round;
-            bool failed = false;
-            for (std::size_t i = 0; i < arcs.size(); ++i) {
-                auto& a = arcs[i];
-                std::fill(a.raise.begin(), a.raise.end(), 0);
-                if (!a.dirty) continue;
-                geo::detail::build_arc_curve(a, alpha);
-                geo::detail::tessellate_arc(a, tol);
-                if (preserve_topology)
-                    for (std::size_t s = 0; s < a.segments(); ++s) {
-                        if (a.linear(s)) continue;
-                        const auto an = analyze_segment(a.curve->segment(s));
-                        if (an.has_self_intersection() || an.has_cusp()) a.raise[s] = 1;
-                    }
-            }
-            pieces.clear();
-            for (std::size_t i = 0; i < arcs.size(); ++i) {
-                auto& a = arcs[i];
-                a.max_dev = 0;
-                for (std::size_t k = 0; k + 1 < a.line.points.size(); ++k) {
-                    const std::size_t s = a.vseg[k];
-                    geo::detail::piece pc;
-                    pc.arc = std::uint32_t(i);
-                    pc.seg = std::uint32_t(s);
-                    pc.linear = a.linear(s);
-                    const p2 pa = a.line.points[k], pb = a.line.points[k + 1];
-                    pc.q[0] = pa;
-                    pc.q[3] = pb;
-                    if (pc.linear) {
-                        pc.q[1] = pa;
-                        pc.q[2] = pb;
-                    } else {
-                        const auto seg = a.curve->segment(s);
-                        const double u0 = a.vu[k], u1e = a.vseg[k + 1] == s ? a.vu[k + 1] : 1.0;
-                        const double w = u1e - u0;
-                        pc.q[1] = pa + (w / 3) * seg.du(u0, 1);
-                        pc.q[2] = pb - (w / 3) * seg.du(u1e, 1);
-                        pc.e = flatness_bound(seg, u0, u1e) + slack;
-                    }
-                    worst_e = std::max(worst_e, pc.e);
-                    pc.bounds = box<2>::of(pa);
-                    pc.bounds.expand(pb);
-                    const p2 sa = a.pts[s], sb = a.pts[a.next(s)];
-                    const double dev = pc.linear ? 0.0
-                                                 : std::max(geo::detail::point_segment_distance(pa, sa, sb),
-                                                            geo::detail::point_segment_distance(pb, sa, sb)) +
-                                                       pc.e;
-                    a.max_dev = std::max(a.max_dev, dev);
-                    if (max_deviation && dev > *max_deviation && !pc.linear) a.raise[s] = 1;
-                    if (domain && !pc.linear)
-                        for (const p2& q : pc.q)
-                            if (!domain->contains(q)) a.raise[s] = 1;
-                    pieces.push_back(pc);
-                }
-            }
-            std::fill(arc_crossing.begin(), arc_crossing.end(), 0);
-            if (preserve_topology) {
-                double emax = 0;
-                for (const auto& pc : pieces) emax = std::max(emax, pc.e);
-                const double pad = 2 * emax + slack;
-                std::vector<std::uint32_t> order(pieces.size());
-                for (std::size_t k = 0; k < order.size(); ++k) order[k] = std::uint32_t(k);
-                std::sort(order.begin(), order.end(),
-                          [&](auto x, auto y) { return pieces[x].bounds.lo[0] < pieces[y].bounds.lo[0]; });
-                auto fail = [&](const geo::detail::piece& pc) {
-                    if (!pc.linear) arcs[pc.arc].raise[pc.seg] = 1;
-                };
-                for (std::size_t oi = 0; oi < order.size(); ++oi) {
-                    const auto& p = pieces[order[oi]];
-                    for (std::size_t oj = oi + 1; oj < order.size(); ++oj) {
-                        const auto& q = pieces[order[oj]];
-                        if (q.bounds.lo[0] > p.bounds.hi[0] + pad) break;
-                        if (q.bounds.lo[1] > p.bounds.hi[1] + pad || p.bounds.lo[1] > q.bounds.hi[1] + pad) continue;
-                        if (p.arc == q.arc && p.seg == q.seg) continue;
-                        const p2* shared = nullptr;
-                        for (int i = 0; i < 2 && !shared; ++i)
-                            for (int j = 0; j < 2 && !shared; ++j)
-                                if (p.q[3 * i] == q.q[3 * j]) shared = &p.q[3 * i];
-                        bool proved;
-                        if (shared) {
-                            proved = geo::detail::wedges_apart(p, q, *shared, slack);
-                        } else {
-                            const double d = geo::detail::segment_distance(p.q[0], p.q[3], q.q[0], q.q[3]);
-                            proved = d > p.e + q.e + (p.linear && q.linear ? 0.0 : slack);
-                        }
-                        if (proved) continue;
-                        if (p.linear && q.linear) {
-                            const bool proper = geo::detail::segments_cross(p.q[0], p.q[3], q.q[0], q.q[3]);
-                            for (auto ai : {p.arc, q.arc})
-                                arc_crossing[ai] = std::max<std::uint8_t>(arc_crossing[ai], proper ? 2 : 1);
-                            continue;
-                        }
-                        fail(p);
-                        fail(q);
-                    }
-                }
-            }
-            for (auto& a : arcs) {
-                a.dirty = false;
-                for (std::size_t s = 0; s < a.segments(); ++s) {
-                    if (!a.raise[s]) continue;
-                    failed = true;
-                    a.dirty = true;
-                    for (std::size_t v : {s, a.next(s)}) {
-                        const std::uint8_t to = round >= max_rounds / 2 ? geo::detail::linear_level
-                                                                        : std::uint8_t(a.level[v] + 1);
-                        a.level[v] = std::min(geo::detail::linear_level, std::max(a.level[v], to));
-                    }
-                }
-            }
-            if (!failed) break;
-            if (round >= max_rounds) break;
-        }
+        geo::detail::proof pr{arcs, opt, slack};
+        pr.run();
+        arc_crossing = pr.crossing;
+        rounds = pr.rounds;
     }
-    if (preserve_topology && worst_e > bound)
-        throw crspline::invalid_input("a piece's flatness margin " + crspline::detail::num(worst_e) +
-                                      " exceeds the bound " + crspline::detail::num(bound) +
-                                      " the arcs were grouped by (tolerance below the rounding of the coordinates?)");
     // Lengths (step 4) and the polylines, knots exact.
     std::vector<double> length(arcs.size(), 0), dev(arcs.size(), 0), vu;
     std::vector<std::int64_t> line_offsets{0}, vseg;
@@ -460,7 +350,7 @@ void bind_geo(py::module_& m) {
           "Boxes holding every tension level's curve of each arc; private: used by crspline.geo.dask.");
     m.def("_geo_smooth_arcs", &geo_smooth_arcs, py::arg("xy"), py::arg("offsets"), py::arg("closed"),
           py::arg("alpha"), py::arg("tolerance"), py::arg("max_deviation"), py::arg("preserve_topology"),
-          py::arg("domain"), py::arg("slack"), py::arg("bound"),
+          py::arg("domain"), py::arg("slack"),
           "Steps 3-4 of geo::smooth on a closed group of arcs; private: used by crspline.geo.dask.");
     m.attr("_geo_statuses") = statuses;
     m.attr("_geo_verdicts") = verdicts;

@@ -100,33 +100,46 @@ def test_arcs_are_shuffled_and_smoothed_once(client, world):
     assert crossing > 20, crossing
 
 
-def contour_layer(seed):
-    """Seeded contour lines of a random field (nested, near each other: the
-    proof raises tension between lines), dealt round-robin to partitions so
-    that neighbours sit in different partitions."""
-    from test_geo import random_field_contours
+def stacked_lines(seed, reps=6, lines=6, vertices=40):
+    """Contour-like lines stacked 1 apart, each vertex jittered by up to
+    0.49 across on a shared x grid of short (0.01-0.05) and long (0.3-0.6)
+    steps, as tests/geo's ContourLinesNeverCross: the inputs never meet, the
+    free curves overshoot into their neighbours in places, so the proof
+    must raise tension between lines. `reps` stacks, 100 apart in x."""
+    from shapely.geometry import LineString
 
-    lines = random_field_contours(seed)
-    gdf = gpd.GeoDataFrame({"level": np.arange(len(lines))}, geometry=lines.values, crs=lines.crs)
-    return gdf
+    rng = np.random.default_rng(seed)
+    geoms, stack = [], []
+    for rep in range(reps):
+        short = rng.uniform(size=vertices - 1) < 0.5
+        steps = np.where(short, 0.01 + 0.04 * rng.uniform(size=vertices - 1), 0.3 + 0.3 * rng.uniform(size=vertices - 1))
+        xs = 100.0 * rep + np.concatenate(([0.0], np.cumsum(steps)))
+        for k in range(lines):
+            geoms.append(LineString(np.column_stack((xs, k + rng.uniform(-0.49, 0.49, vertices)))))
+            stack.append(rep)
+    return gpd.GeoDataFrame({"stack": stack}, geometry=geoms, crs="EPSG:3857")
 
 
-def test_contours_across_partitions(client, seed):
-    gdf = contour_layer(seed)
-    assert len(gdf) >= 10
+def test_tension_across_partitions(client, seed):
+    """Neighbouring lines dealt to different partitions (round robin): the
+    tension the proof raises between them is the single-process one."""
+    gdf = stacked_lines(seed)
+    assert len(gdf) == 36
     expected = cg.smooth(gdf, tolerance=1e-3)
     stats = expected.attrs["crspline_stats"]
+    # Not vacuous: tension was raised between lines (a wrong grouping of
+    # arcs would have left it out), and no input crossing or touch.
+    assert stats["tensioned_vertices"] > 0, seed
+    assert stats["input_crossings"] == 0 and (expected["verdict"] == "simple").all(), seed
     df = wkb_frame(gdf)
     df = df.iloc[np.argsort(np.arange(len(df)) % 3, kind="stable")]  # round robin, then in 3 partitions
     ddf = dd.from_pandas(df, npartitions=3, sort=False)
     assert ddf.npartitions == 3
     got = cgd.smooth(ddf, crs=gdf.crs, tolerance=1e-3, buckets=2).compute().sort_index()
-    assert rows_equal(got, expected) == len(gdf)
-    # The proof did work here: tension was raised somewhere (so a wrong
-    # grouping of arcs would have shown), and the groups were several.
-    assert stats["tensioned_vertices"] > 0, seed
+    assert rows_equal(got, expected) == 36
     counts = cgd.arc_counts(ddf, crs=gdf.crs, tolerance=1e-3, buckets=2)
-    assert counts["arcs"] == stats["arcs"]
+    assert counts["arcs"] == stats["arcs"] == 36
+    assert counts["groups"] >= 6  # the stacks, 100 apart, are separate groups
 
 
 def test_options_and_projected_layer(client, world):
@@ -151,6 +164,52 @@ def test_options_and_projected_layer(client, world):
     expected = cg.smooth(lines, tolerance=0.01)
     got = cgd.smooth(dd.from_pandas(wkb_frame(lines), npartitions=2), crs=lines.crs, tolerance=0.01).compute()
     assert rows_equal(got, expected) == 4
+
+
+def test_scheduler_and_workers_as_on_many_machines(world, tmp_path):
+    """The docs' multi-machine recipe, on this machine: `dask scheduler` and
+    two `dask worker` processes started from the command line (as on
+    separate machines), a Client to the scheduler's address; the same
+    rows as one process, both workers used."""
+    import json
+    import os
+    import shutil
+    import subprocess
+    import time
+
+    dask_cli = shutil.which("dask")
+    if dask_cli is None:
+        pytest.skip("the dask command (python3-distributed) is not installed")
+    sched_file = tmp_path / "scheduler.json"
+    procs = []
+    try:
+        common = dict(stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=dict(os.environ))
+        procs.append(subprocess.Popen([dask_cli, "scheduler", "--host", "127.0.0.1", "--port", "0",
+                                       "--no-dashboard", "--scheduler-file", str(sched_file)], **common))
+        for _ in range(2):
+            procs.append(subprocess.Popen([dask_cli, "worker", "--scheduler-file", str(sched_file), "--nthreads", "1",
+                                           "--no-dashboard", "--host", "127.0.0.1"], **common))
+        deadline = time.monotonic() + 120  # a start-up limit only, on a loaded machine
+        while not sched_file.exists() and time.monotonic() < deadline:
+            time.sleep(0.2)
+        address = json.loads(sched_file.read_text())["address"]
+        with distributed.Client(address) as c:
+            c.wait_for_workers(2, timeout=120)
+            sub = world[world["continent"] == "South America"]
+            expected = cg.smooth(sub, tolerance=50.0)
+            result = cgd.smooth(dd.from_pandas(wkb_frame(sub), npartitions=3), crs=sub.crs, tolerance=50.0)
+            with distributed.get_task_stream(c) as ts:
+                got = result.compute()
+            assert len({t["worker"] for t in ts.data}) == 2
+            assert rows_equal(got, expected) == len(sub) == 13
+    finally:
+        for p in reversed(procs):
+            p.terminate()
+        for p in reversed(procs):
+            try:
+                p.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                p.kill()
 
 
 def test_dask_errors(world):

@@ -21,18 +21,19 @@ task-based shuffle does):
    its vertex sequence in canonical direction; shuffle by arc key, so the
    copies of a boundary shared by features in different partitions meet in
    one task and the arc is smoothed once;
-4. the crossing proof pairs pieces of different arcs, so arcs that may meet
-   must be smoothed together. Each distinct arc's box holds its curve at
-   every tension level (the box of its untensioned Bezier points: tension
-   only pulls the inner points towards the ends), padded by the largest
-   flatness margin a piece can have (tolerance + 2 slack, checked by the
-   core after smoothing); arcs whose padded boxes overlap are linked, and
-   each connected group is smoothed in one task by the core's own rounds
-   (tension raised where a pair is not proved). A pair of pieces in two
-   groups is more than the sum of their margins apart at every tension, so
-   it is proved without being looked at: the proof is complete, and every
-   arc ends with the tension the single-process run gives it. Only the
-   boxes (four numbers per arc) meet in one task, to find the groups;
+4. the crossing proof pairs segments of different arcs, so arcs that may
+   meet must be smoothed together. Each distinct arc's box holds its curve
+   at every tension level (the box of its untensioned Bezier points:
+   tension only pulls the inner points towards the segment's ends), and the
+   core's proof looks at two segments only where the boxes of their Bezier
+   points come within the rounding slack. Boxes padded by tolerance + 3
+   slack link the arcs whose boxes overlap, and each connected group is
+   smoothed in one task by the core's own rounds (detail::proof: tension
+   raised where a pair is not proved). A pair of segments in two groups is
+   never looked at by the single-process proof either, at any tension: the
+   proof is complete, and every arc ends with the tension and the numbers
+   the single-process run gives it. Only the boxes (four numbers per arc)
+   meet in one task, to find the groups;
 5. shuffle back: each partition gets the smoothed arcs its parts use, and
    rebuilds its rings and measures as crspline.geo.smooth does.
 
@@ -121,7 +122,6 @@ def _clean(a, info, index, buckets, preserve):
     keys = _vertex_keys(pts)
     offs = c["offsets"]
     n = len(verts)
-    part_of = np.repeat(np.arange(len(offs) - 1), np.diff(offs))
     ring = c["rings"].astype(bool)
     # Each vertex's neighbours along its part (both ways; a ring closes).
     nxt = np.arange(1, n + 1)
@@ -315,10 +315,12 @@ def _groups(slack, tolerance, buckets, *distinct):
     """Arcs linked when their boxes, padded by the largest flatness margin
     a piece may have, overlap; per distinct-arc bucket, the group task of
     each arc (groups spread over `buckets` tasks) and its group."""
-    # A piece's margin e is its flatness bound (at most the tolerance, up to
-    # rounding) plus the slack: at most `bound`, which the core checks.
-    bound = float(tolerance) + 2 * slack
-    pad = bound + slack  # two padded boxes apart: more than 2 bound + slack between the pieces
+    # The core's proof looks at two segments only where the boxes of their
+    # Bezier points come within the slack; those points are inside the
+    # arcs' boxes up to rounding (far below the slack). The tolerance is
+    # added as a margin in case a proof ever looks farther (by its pieces'
+    # flatness margins, at most the tolerance plus the slack).
+    pad = float(tolerance) + 3 * slack
     boxes = np.concatenate([d["boxes"] for d in distinct]) if distinct else np.zeros((0, 4))
     n = len(boxes)
     lo = boxes[:, :2] - pad
@@ -351,7 +353,7 @@ def _groups(slack, tolerance, buckets, *distinct):
         g = group[k:k + m]
         out.append({"group": g, "task": g % buckets})
         k += m
-    return {"assign": out, "bound": bound, "groups": int(len(np.unique(group)))}
+    return {"assign": out, "groups": int(len(np.unique(group)))}
 
 
 def _to_group_task(d, groups, d_index, task):
@@ -377,8 +379,7 @@ def _smooth_groups(options, frame_domain, slack, groups, partitions, *pieces):
         arcs = [m[1] for m in members]
         xy, offs, closed = _flat(arcs)
         r = _crspline._geo_smooth_arcs(xy, offs, closed, float(options["alpha"]), float(options["tolerance"]),
-                                       None if max_dev is None else float(max_dev), True, frame_domain, slack,
-                                       groups["bound"])
+                                       None if max_dev is None else float(max_dev), True, frame_domain, slack)
         # Verdicts: an arc touches when several features use it or one of
         # its ends (a junction) is shared by several features' arcs: all
         # arcs ending at a vertex are in its group (their boxes meet there).
@@ -491,8 +492,7 @@ def _assemble_alone(df, b, info, geometry, options, slack):
     closed = np.asarray(c["rings"], dtype=np.uint8)
     max_dev = options["max_deviation"]
     r = _crspline._geo_smooth_arcs(pts, offs, closed, float(options["alpha"]), float(options["tolerance"]),
-                                   None if max_dev is None else float(max_dev), False, info["frame"].domain, slack,
-                                   float("inf"))
+                                   None if max_dev is None else float(max_dev), False, info["frame"].domain, slack)
     prep = b["prep"]
     extra = prep.z[c["vertices"]] if prep.layer.has_z else None
     arc_of, parts = {}, []
