@@ -360,6 +360,26 @@ TEST(GeoSmooth, MeasuresOnlyAgreeWithSmoothing) {
     EXPECT_GT(crossing, 0u);  // not vacuous: the proof had crossings to find
 }
 
+// The progress callback: called from the calling thread with fractions
+// that never go back, ending at 1; the result is the same without it.
+TEST(GeoSmooth, ProgressIsReportedInOrder) {
+    geo::layer l;
+    for (std::size_t k = 0; k < 5000; ++k) {
+        const double x = 10.0 * double(k);
+        l.add_part(k, part_kind::line, std::vector<double>{x, 0, x + 1, 0.5, x + 2, 0, x + 3, 0.7});
+    }
+    std::vector<double> seen;
+    geo::smooth_options o{.tolerance = 1e-2};
+    o.progress = [&](double f) { seen.push_back(f); };
+    const auto r = geo::smooth(l, o);
+    ASSERT_EQ(seen.size(), 5u);  // 5000 arcs: at 0 and 4096 in each of two steps, and the end
+    EXPECT_EQ(seen.front(), 0.0);
+    EXPECT_EQ(seen.back(), 1.0);
+    for (std::size_t i = 1; i < seen.size(); ++i) EXPECT_GE(seen[i], seen[i - 1]) << "call " << i;
+    const auto plain = geo::smooth(l, {.tolerance = 1e-2});
+    EXPECT_EQ(r.output.xy, plain.output.xy);
+}
+
 TEST(GeoSmooth, StatusesNameTheProblemAndPassThrough) {
     geo::layer l;
     l.extra_dims = 1;

@@ -60,6 +60,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -128,6 +129,9 @@ struct smooth_options {
     /// layer is the input, and the curves are tessellated only where the
     /// proof needs their pieces.
     bool polylines = true;
+    /// If set, called now and then from the calling thread with the
+    /// fraction of the work done, in [0, 1] (a terminal's progress line).
+    std::function<void(double)> progress{};
 };
 
 /// One feature's outcome. Lengths and deviations in the layer's units.
@@ -708,6 +712,8 @@ struct proof {
         for (std::size_t round = 1;; ++round) {
             rounds = round;
             for (std::uint32_t i = 0; i < n; ++i) {
+                // The first round does nearly all the work: 80% of it.
+                if (opt.progress && round == 1 && i % 4096 == 0) opt.progress(0.8 * double(i) / double(n));
                 auto& a = arcs[i];
                 dirty[i] = a.dirty;
                 std::fill(a.raise.begin(), a.raise.end(), 0);
@@ -916,6 +922,7 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
     for (std::size_t v = 0; v < topo.junction.size(); ++v) res.stats.junctions += topo.junction[v];
     std::vector<double> arc_length_of(arcs.size(), 0);
     for (std::size_t i = 0; i < arcs.size(); ++i) {
+        if (opt.progress && i % 4096 == 0) opt.progress(0.8 + 0.2 * double(i) / double(arcs.size()));
         auto& a = arcs[i];
         for (auto l : a.level) res.stats.tensioned_vertices += l > 0 && !(a.pts.size() == 2 && !a.closed);
         for (std::size_t s = 0; s < a.segments(); ++s) res.stats.linear_segments += a.linear(s);
@@ -1004,6 +1011,7 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
             else if ((touches || arc_crossing[i] == 1) && rep.verdict == verdict::simple) rep.verdict = verdict::touches;
         }
     }
+    if (opt.progress) opt.progress(1.0);
     return res;
 }
 
