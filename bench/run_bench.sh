@@ -4,11 +4,12 @@
 # repetitions, the three.js peer in node, the rotation splines' batches
 # against the 4-D Euclidean one (issue 28), the crspline command on 10^6
 # points (time and peak memory), then the table of medians and ratios.
-#   apt: libbenchmark-dev libboost-math-dev libglm-dev nodejs npm
+#   apt: libbenchmark-dev libboost-math-dev libglm-dev nodejs npm; for bench/geo_bench.py
+#        the Python packages of ./run (python3-geopandas, python3-dask, ...)
 #   npm: three (bench/js/package.json, installed with `npm ci`); crspline's
 #        own npm package (js/build.sh) for its three.js adapter
 # Environment: BUILD (default build-bench/bench), REPS (default 5),
-# FILTER (a --benchmark_filter regex, default all).
+# FILTER (a --benchmark_filter regex, default all), GEO_SIZES (bench/geo_bench.py).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
@@ -58,6 +59,16 @@ cp "$results/cpp-$stamp.json" "$results/cpu/$cpu/cpp.json"
 echo
 { "$build/crspline_construct_rusage"; "$build/crspline_construct_rusage_4k"; } | tee "$results/latest-construct.md"
 cp "$results/latest-construct.md" "$results/cpu/$cpu/construct.md"
+# GIS (issue 29): crspline.geo's lines per second per core at 10^4, 10^5
+# and 10^6 lines (bench/geo_bench.py; the Python module in the tree that
+# ./run bench's Python step uses too). GEO_SIZES overrides the sizes.
+py_build="${PY_BUILD:-build/bench-python}"
+cmake -S . -B "$py_build" -DCMAKE_BUILD_TYPE=Release -DCRSPLINE_BUILD_PYTHON=ON -DCRSPLINE_BUILD_TESTS=OFF \
+    -DCRSPLINE_BUILD_EXAMPLES=OFF -DPython_EXECUTABLE=/usr/bin/python3 >/dev/null
+cmake --build "$py_build" -j2 --target _crspline
+echo
+PYTHONPATH="$py_build/python" /usr/bin/python3 bench/geo_bench.py --sizes "${GEO_SIZES:-10000,100000,1000000}" \
+    --out "$results/geo-$stamp.json" | tee "$results/latest-geo.txt"
 # Instruction counts (callgrind): stable where the times above are not.
 if [[ -x "$build/crspline_instructions" ]] && command -v valgrind >/dev/null; then
     echo
