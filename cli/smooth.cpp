@@ -35,6 +35,8 @@
 
 #include <crspline/geo/smooth.hpp>
 
+#include "progress.hpp"
+
 namespace crspline::cli {
 
 namespace {
@@ -239,6 +241,9 @@ int run(int argc, char** argv) {
     }
     opt.domain = box<2>{vec<2>{{std::min(-180.0, lon_min) * sx, std::min(-90.0, lat_min) * sy}},
                         vec<2>{{std::max(180.0, lon_max) * sx, std::max(90.0, lat_max) * sy}}};
+    // Progress on a terminal for large layers (stderr, only when it is a TTY).
+    progress shown("crspline smooth");
+    opt.progress = [&shown](double fraction) { shown.update(fraction); };
     const geo::smooth_result res = geo::smooth(framed, opt);
     // Back to longitude and latitude: input vertices exactly, the others through the frame.
     const geo::layer& o = res.output;
