@@ -17,6 +17,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "memory_policy.hpp"
 #include "walk.hpp"
 
 #include <boost/math/interpolators/catmull_rom.hpp>
@@ -31,6 +32,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <string>
 #include <string_view>
 #include <map>
@@ -366,7 +368,11 @@ void eval_sorted_float_boost(benchmark::State& state) {
 // Construction, per control point. Boost takes its points by rvalue: the
 // copy into its container is timed, as crspline's constructor copies too.
 
+// Memory: bench/memory_policy.hpp's policy (every block of 128 KiB or more
+// fresh from the kernel), set here and kept for the rest of the run, the
+// same as crspline_construct_rusage's.
 void construct_crspline(benchmark::State& state) {
+    crspline_bench::fresh_memory();
     const std::size_t n = std::size_t(state.range(0));
     const auto p = walk(n);
     for (auto _ : state) {
@@ -377,6 +383,7 @@ void construct_crspline(benchmark::State& state) {
 }
 
 void construct_boost(benchmark::State& state) {
+    crspline_bench::fresh_memory();
     const std::size_t n = std::size_t(state.range(0));
     const auto p = to_boost(walk(n));
     for (auto _ : state) {
@@ -755,6 +762,39 @@ BENCHMARK(nearest)->Name("nearest_scaling")->Arg(1000)->Arg(10'000)->Arg(100'000
 BENCHMARK(threejs_getPoint_crspline)->Name("threejs_getPoint/crspline")->Unit(benchmark::kMillisecond);
 BENCHMARK(threejs_getPointAt_crspline)->Name("threejs_getPointAt/crspline")->Unit(benchmark::kMillisecond);
 
+namespace crspline_bench {
+/// The processor's name (/proc/cpuinfo's "model name", with its family,
+/// model and stepping: a VM may call an EPYC only "AMD EPYC").
+std::string cpu_model() {
+    std::ifstream f("/proc/cpuinfo");
+    std::string line, name = "unknown", family, model, stepping;
+    auto value = [](const std::string& l) {
+        const auto k = l.find(':');
+        return k == std::string::npos ? std::string() : l.substr(std::min(l.size(), k + 2));
+    };
+    while (std::getline(f, line)) {
+        if (line.rfind("model name", 0) == 0) name = value(line);
+        else if (line.rfind("cpu family", 0) == 0) family = value(line);
+        else if (line.rfind("model", 0) == 0 && model.empty()) model = value(line);
+        else if (line.rfind("stepping", 0) == 0) stepping = value(line);
+        else if (line.empty() && name != "unknown") break;
+    }
+    if (!family.empty()) name += " (family " + family + ", model " + model + ", stepping " + stepping + ")";
+    return name;
+}
+/// Which kernels the dispatch chose on this CPU.
+std::string kernels() {
+#if CRSPLINE_X86_DISPATCH
+    const bool avx2 = crspline::detail::avx2_enabled(), avx512 = crspline::detail::avx512_enabled();
+    return std::string("evaluation double: ") + (avx2 ? "AVX2" : "SSE2") +
+           "; evaluation float: " + (avx2 && avx512 ? "AVX-512" : avx2 ? "AVX2" : "SSE2") +
+           "; arc length rules and first pass: " + (avx2 ? "AVX2" : "SSE2") + "; construction: SSE2";
+#else
+    return "portable (no x86 dispatch)";
+#endif
+}
+}  // namespace crspline_bench
+
 // --dump-points=FILE writes the 1000-point walk as JSON (for the three.js
 // script, so both languages time the same curve) and exits.
 int main(int argc, char** argv) {
@@ -772,6 +812,10 @@ int main(int argc, char** argv) {
     }
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    // The processor and the kernels that ran, for the report (issue 30): a
+    // number means little without them.
+    benchmark::AddCustomContext("cpu_model", crspline_bench::cpu_model());
+    benchmark::AddCustomContext("kernels", crspline_bench::kernels());
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     return 0;

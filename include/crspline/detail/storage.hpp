@@ -1,7 +1,12 @@
 #pragma once
 // The allocator behind a curve's per-point arrays. Small arrays come from
-// std::allocator. Large ones (at least large_array_bytes) are aligned to
-// 2 MiB and, on Linux, advised for transparent huge pages: a 10^6-point
+// std::allocator. Large ones (at least large_array_bytes) are, on Linux,
+// mappings of their own, aligned to 2 MiB and advised for transparent huge
+// pages, unmapped when freed (issue 30: taken from malloc with 2 MiB
+// alignment, freed blocks were not reused for the next aligned request, so
+// a program rebuilding a large curve grew its heap by the curve's size
+// each time, and a construction's cost depended on the heap's history). A
+// 10^6-point
 // curve then takes ~900 page faults for its ~68 MB instead of
 // ~17000 (first touch of fresh memory, not arithmetic, was most of its
 // construction time: 49 ms against 23 ms on the bench machine, see
@@ -20,6 +25,7 @@
 
 #if defined(__linux__) && !defined(__EMSCRIPTEN__) && !defined(CRSPLINE_NO_HUGE_PAGES)
 #include <sys/mman.h>
+#include <cstdint>
 #define CRSPLINE_HUGE_PAGES 1
 #endif
 
@@ -40,11 +46,20 @@ struct storage_allocator {
 #ifdef CRSPLINE_HUGE_PAGES
         const std::size_t bytes = n * sizeof(T);
         if (bytes >= large_array_bytes) {
-            void* p = ::operator new(bytes, std::align_val_t(huge_page_bytes));
+            // Map one huge page more than needed and unmap what lies outside
+            // the aligned range.
+            const std::size_t len = mapped_bytes(n);
+            void* raw = ::mmap(nullptr, len + huge_page_bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS,
+                               -1, 0);
+            if (raw == MAP_FAILED) throw std::bad_alloc();
+            const std::uintptr_t r = reinterpret_cast<std::uintptr_t>(raw);
+            const std::uintptr_t a = (r + huge_page_bytes - 1) / huge_page_bytes * huge_page_bytes;
+            if (a > r) ::munmap(raw, a - r);
+            if (r + huge_page_bytes > a) ::munmap(reinterpret_cast<void*>(a + len), r + huge_page_bytes - a);
             // Advice only: where the kernel has no huge page to give, or THP
-            // is off, the range stays in 4 KiB pages. Whole huge pages only.
-            ::madvise(p, bytes / huge_page_bytes * huge_page_bytes, MADV_HUGEPAGE);
-            return static_cast<T*>(p);
+            // is off, the range stays in 4 KiB pages.
+            ::madvise(reinterpret_cast<void*>(a), len, MADV_HUGEPAGE);
+            return reinterpret_cast<T*>(a);
         }
 #endif
         return std::allocator<T>{}.allocate(n);
@@ -52,7 +67,7 @@ struct storage_allocator {
     void deallocate(T* p, std::size_t n) noexcept {
 #ifdef CRSPLINE_HUGE_PAGES
         if (n * sizeof(T) >= large_array_bytes) {
-            ::operator delete(p, std::align_val_t(huge_page_bytes));
+            ::munmap(static_cast<void*>(p), mapped_bytes(n));
             return;
         }
 #endif
@@ -79,6 +94,12 @@ struct storage_allocator {
     }
     template <class U>
     bool operator==(const storage_allocator<U>&) const noexcept { return true; }
+
+private:
+    // A large array's mapping: its bytes rounded up to whole huge pages.
+    static std::size_t mapped_bytes(std::size_t n) noexcept {
+        return (n * sizeof(T) + huge_page_bytes - 1) / huge_page_bytes * huge_page_bytes;
+    }
 };
 
 template <class T>
