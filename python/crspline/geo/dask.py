@@ -333,15 +333,16 @@ def _groups(slack, tolerance, buckets, *distinct):
             i = parent[i]
         return i
 
+    # A sweep along x: box k (in order of low x) meets the boxes after it
+    # that start before it ends and overlap it in y.
     order = np.argsort(lo[:, 0], kind="stable")
-    lo_sorted = lo[order, 0]
-    for i in range(n):
-        # Candidates: boxes starting (in x) before this one ends.
-        j_end = np.searchsorted(lo_sorted, hi[i, 0], side="right")
-        cand = order[:j_end]
-        cand = cand[(hi[cand, 0] >= lo[i, 0]) & (lo[cand, 1] <= hi[i, 1]) & (hi[cand, 1] >= lo[i, 1])]
-        ri = root(i)
-        for j in cand:
+    lo_s, hi_s = lo[order], hi[order]
+    ends = np.searchsorted(lo_s[:, 0], hi_s[:, 0], side="right")
+    for k in range(n):
+        cand = np.arange(k + 1, max(k + 1, ends[k]))
+        cand = cand[(lo_s[cand, 1] <= hi_s[k, 1]) & (hi_s[cand, 1] >= lo_s[k, 1])]
+        ri = root(order[k])
+        for j in order[cand]:
             rj = root(j)
             if rj != ri:
                 parent[max(ri, rj)] = min(ri, rj)
