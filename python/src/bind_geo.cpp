@@ -37,7 +37,7 @@ py::array_t<T> to_numpy(const std::vector<T>& v) {
 py::dict geo_smooth(carray<double> xy, carray<double> extra, carray<std::int64_t> part_offsets,
                     carray<std::uint8_t> part_kinds, carray<std::int64_t> part_features, std::size_t feature_count,
                     double alpha, double tolerance, std::optional<double> max_deviation, bool preserve_topology,
-                    std::optional<std::array<double, 4>> domain) {
+                    std::optional<std::array<double, 4>> domain, bool polylines) {
     if (xy.ndim() != 2 || xy.shape(1) != 2)
         throw crspline::invalid_input("xy must have shape (n, 2), got ndim " + std::to_string(xy.ndim()));
     const std::size_t n = std::size_t(xy.shape(0));
@@ -65,6 +65,7 @@ py::dict geo_smooth(carray<double> xy, carray<double> extra, carray<std::int64_t
     opt.tolerance = tolerance;
     opt.max_deviation = max_deviation;
     opt.preserve_topology = preserve_topology;
+    opt.polylines = polylines;
     if (domain) opt.domain = box<2>{vec<2>{{(*domain)[0], (*domain)[1]}}, vec<2>{{(*domain)[2], (*domain)[3]}}};
     geo::smooth_result r;
     {
@@ -334,7 +335,9 @@ void bind_geo(py::module_& m) {
     m.def("_geo_smooth", &geo_smooth, py::arg("xy"), py::arg("extra"), py::arg("part_offsets"),
           py::arg("part_kinds"), py::arg("part_features"), py::arg("feature_count"), py::arg("alpha"),
           py::arg("tolerance"), py::arg("max_deviation"), py::arg("preserve_topology"), py::arg("domain") = py::none(),
-          "Smooths a layer given as flat arrays (crspline/geo/smooth.hpp); private: use crspline.geo.smooth.");
+          py::arg("polylines") = true,
+          "Smooths a layer given as flat arrays (crspline/geo/smooth.hpp); private: use crspline.geo.smooth. "
+          "polylines=False: the measures only, the input as output (smooth_options::polylines).");
     py::list statuses, verdicts;
     for (auto s : {geo::feature_status::ok, geo::feature_status::empty, geo::feature_status::degenerate,
                    geo::feature_status::invalid})
