@@ -266,9 +266,9 @@ struct arc_work {
     std::vector<p2> pts;
     std::vector<std::uint8_t> level;  // tension level per vertex
     bool closed = false;
-    std::optional<catmull_rom<2>> base;   // alpha curve, no tension
-    std::optional<catmull_rom<2>> curve;  // the one used
-    polyline<2> line;                     // knot vertices exact input points
+    std::optional<catmull_rom<2>> base;   // the untensioned curve, once tension is used
+    std::optional<catmull_rom<2>> curve;  // the one used (the untensioned one until then)
+    polyline<2> line;                     // knot vertices exact input points; t given back (vseg, vu)
     std::vector<std::uint32_t> vseg;      // segment of each polyline vertex (the piece it starts)
     std::vector<double> vu;               // local u of each vertex in that segment (1 at a segment's end)
     std::vector<std::uint8_t> raise;      // per segment: raise its vertices' tension
@@ -278,6 +278,7 @@ struct arc_work {
     std::vector<box<2>> hull_box;         // per segment: their box
     std::vector<std::size_t> first_piece; // per segment: its first polyline piece; one more: the piece count
     crspline::box<2> bounds{};            // of all the hulls
+    double length = 0;                    // set where the curve is released early (no topology)
     bool has_line = false;                // line, vseg, vu, first_piece are this curve's
 
     std::size_t segments() const noexcept { return closed ? pts.size() : pts.size() - 1; }
@@ -287,19 +288,26 @@ struct arc_work {
     }
 };
 
+// The arc's curve at its tension levels. Levels only grow: an arc without
+// tension is built once, as `curve`; the first tension moves it to `base`
+// (one copy of the untensioned curve, never two).
 inline void build_arc_curve(arc_work& a, double alpha) {
     using curve_t = catmull_rom<2>;
-    if (!a.base) {
+    auto untensioned = [&] {
         options<2> opt;
         opt.alpha = alpha;
         opt.closed = a.closed;
-        a.base.emplace(std::span<const p2>(a.pts), opt);
-    }
+        return curve_t(std::span<const p2>(a.pts), opt);
+    };
     bool plain = true;
     for (auto l : a.level) plain = plain && l == 0;
     if (plain) {
-        a.curve = a.base;
+        if (!a.curve) a.curve.emplace(untensioned());
         return;
+    }
+    if (!a.base) {
+        if (a.curve) a.base.emplace(std::move(*a.curve));
+        else a.base.emplace(untensioned());
     }
     const std::size_t n = a.pts.size();
     std::vector<p2> out(n), in(n);
@@ -336,6 +344,10 @@ inline void tessellate_arc(arc_work& a, double tolerance) {
             a.vu[k] = a.curve->segment(s).local(t);
         }
     }
+    // The parameters are in vseg and vu now; the room tessellate() reserved
+    // (for the most vertices there could be) is given back.
+    std::vector<double>().swap(a.line.t);
+    a.line.points.shrink_to_fit();
 }
 
 // Arc length of the arc's curve: a linear segment's is its chord's, the
@@ -343,6 +355,7 @@ inline void tessellate_arc(arc_work& a, double tolerance) {
 // (arc_length.hpp's batch, the same pieces as arc_length(segment)); summed
 // in segment order.
 inline double arc_curve_length(const arc_work& a) {
+    if (!a.curve) return a.length;  // measured and released by proof::run (no topology)
     const std::size_t segs = a.segments();
     std::vector<double> len(segs, 0.0);
     std::vector<std::size_t> curved;
@@ -699,12 +712,50 @@ struct proof {
         return rec;
     }
 
+    // Without topology no pair is proved: each arc's rounds (deviation,
+    // domain) are its own, run to the end one arc at a time, its length
+    // taken and its curve and hulls released (memory stays that of the
+    // output). The same levels, round by round, as the rounds of run().
+    void run_alone() {
+        constexpr std::size_t max_rounds = 64;
+        crossing.assign(arcs.size(), 0);
+        for (std::uint32_t i = 0; i < arcs.size(); ++i) {
+            if (opt.progress && i % 4096 == 0) opt.progress(0.8 * double(i) / double(arcs.size()));
+            arc_work& a = arcs[i];
+            for (std::size_t round = 1;; ++round) {
+                rounds = std::max(rounds, round);
+                std::fill(a.raise.begin(), a.raise.end(), 0);
+                prepare(i);
+                bool failed = false;
+                for (std::size_t s = 0; s < a.segments(); ++s) {
+                    if (!a.raise[s]) continue;
+                    failed = true;
+                    for (std::size_t v : {s, a.next(s)}) {
+                        const std::uint8_t to = round >= max_rounds / 2 ? linear_level : std::uint8_t(a.level[v] + 1);
+                        a.level[v] = std::min(linear_level, std::max(a.level[v], to));
+                    }
+                }
+                a.dirty = false;
+                if (!failed || round >= max_rounds) break;
+            }
+            a.length = arc_curve_length(a);
+            a.curve.reset();
+            a.base.reset();
+            std::vector<std::array<p2, 4>>().swap(a.hull);
+            std::vector<crspline::box<2>>().swap(a.hull_box);
+        }
+    }
+
     // Rounds: rebuild the dirty arcs, prove the pairs that involve one,
     // raise tension where a proof failed; until every pair is proved.
     // Pairs of clean arcs keep the record of the round that proved them.
     void run() {
         const std::size_t n = arcs.size();
         self.assign(n, {});
+        if (!opt.preserve_topology) {
+            run_alone();
+            return;
+        }
         std::vector<std::pair<std::uint64_t, proof_record>> previous;
         std::vector<std::uint32_t> order(n);
         std::vector<std::uint8_t> dirty(n);
