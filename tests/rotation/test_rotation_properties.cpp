@@ -694,7 +694,10 @@ double reversal_defect(const A& a, const B& b, double t0, double t1, double b0, 
 // mirrored t, for SciPy's end (its chord rates are symmetric), the natural
 // end, given angular velocities (start w_s, end w_e reversed to -w_e, -w_s,
 // along the axis) and closed. Tolerance: rounding through the Newton solve
-// and the cubic's exp, 1e-13 of O(1) quaternions (measured: a few 1e-16).
+// and the cubic's exp on O(1) quaternions. Usually a few 1e-16, but the
+// solve's conditioning with up to 11 keys of 170 degrees amplifies the
+// rates' rounding (2e-13 seen once in 180 seeds): 1e-12, ten orders below
+// what non-commuting keys of such steps give (about 1e-2).
 TEST(RotationProperties, C2TimeReversalCommutingKeys) {
     CRSPLINE_SEEDED(seed, 2850);
     std::mt19937_64 rng(seed);
@@ -722,7 +725,7 @@ TEST(RotationProperties, C2TimeReversalCommutingKeys) {
             const auto rev = reverse_keys(keys, times, o.closed);
             const c2_rotation_spline<double> a{std::span<const double>(times), std::span<const quat>(keys), o};
             const c2_rotation_spline<double> b{std::span<const double>(rev.times), std::span<const quat>(rev.keys), r};
-            EXPECT_LE(reversal_defect(a, b, times.front(), times.back(), rev.times.front(), rev.times.back()), 1e-13) << "end " << end << ", " << n << " keys";
+            EXPECT_LE(reversal_defect(a, b, times.front(), times.back(), rev.times.front(), rev.times.back()), 1e-12) << "end " << end << ", " << n << " keys";
             ++checked;
         }
     }

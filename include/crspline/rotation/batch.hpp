@@ -53,6 +53,11 @@ struct batch_rows {
 
 }  // namespace crspline::rotation
 
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
 namespace crspline::rotation::detail_batch {
 
 template <class T>
@@ -62,24 +67,68 @@ using rows = batch_rows<T>;
 
 #if defined(__GNUC__) || defined(__clang__)
 #define CRSPLINE_ROTATION_LANES 1
-/// Two doubles side by side (one SSE2 register), and a mask of two lanes.
+/// Two doubles in one 16-byte vector (one SSE2 register on the x86-64
+/// baseline, NEON on AArch64; plain code elsewhere) and its mask.
 typedef double v2 __attribute__((vector_size(16)));
 typedef long long m2 __attribute__((vector_size(16)));
 
+/// Four lanes as two such vectors. Each operation is two independent
+/// instructions side by side, so two chains of the long sine, cosine and
+/// product computation are in flight at once for the out-of-order core to
+/// overlap (one chain alone waits on each step's latency). A struct of two
+/// 16-byte vectors, not a 32-byte vector: passing that by value without AVX
+/// changes the ABI, which GCC warns about at every use.
+struct vm {
+    m2 lo, hi;
+    friend vm operator|(vm a, vm b) noexcept { return {a.lo | b.lo, a.hi | b.hi}; }
+    friend vm operator&(vm a, vm b) noexcept { return {a.lo & b.lo, a.hi & b.hi}; }
+};
+struct vd {
+    v2 lo, hi;
+    vd() = default;
+    constexpr vd(v2 l, v2 h) noexcept : lo(l), hi(h) {}
+    constexpr vd(double a, double b, double c, double d) noexcept : lo{a, b}, hi{c, d} {}
+    double operator[](int l) const noexcept { return l < 2 ? lo[l] : hi[l - 2]; }
+    void set(int l, double x) noexcept {
+        if (l < 2) lo[l] = x;
+        else hi[l - 2] = x;
+    }
+#define CRSPLINE_VD_OP(op)                                                                                       \
+    friend vd operator op(vd a, vd b) noexcept { return {a.lo op b.lo, a.hi op b.hi}; }                          \
+    friend vd operator op(vd a, double b) noexcept { return {a.lo op b, a.hi op b}; }                            \
+    friend vd operator op(double a, vd b) noexcept { return {a op b.lo, a op b.hi}; }
+    CRSPLINE_VD_OP(+)
+    CRSPLINE_VD_OP(-)
+    CRSPLINE_VD_OP(*)
+    CRSPLINE_VD_OP(/)
+#undef CRSPLINE_VD_OP
+#define CRSPLINE_VD_CMP(op)                                                                                      \
+    friend vm operator op(vd a, vd b) noexcept { return {a.lo op b.lo, a.hi op b.hi}; }                          \
+    friend vm operator op(vd a, double b) noexcept { return {a.lo op b, a.hi op b}; }
+    CRSPLINE_VD_CMP(<)
+    CRSPLINE_VD_CMP(>)
+    CRSPLINE_VD_CMP(>=)
+    CRSPLINE_VD_CMP(==)
+#undef CRSPLINE_VD_CMP
+    friend vd operator-(vd a) noexcept { return {-a.lo, -a.hi}; }
+};
+inline constexpr int vd_width = 4;
+
 [[gnu::always_inline]] inline v2 sel(m2 m, v2 a, v2 b) noexcept { return (v2)((m & (m2)a) | (~m & (m2)b)); }
-[[gnu::always_inline]] inline v2 vabs(v2 x) noexcept { return (v2)((m2)x & 0x7fffffffffffffffLL); }
+[[gnu::always_inline]] inline vd sel(vm m, vd a, vd b) noexcept { return {sel(m.lo, a.lo, b.lo), sel(m.hi, a.hi, b.hi)}; }
 /// -x in the lanes where m holds (a sign flip: exact).
 [[gnu::always_inline]] inline v2 negate_if(m2 m, v2 x) noexcept {
     return (v2)((m2)x ^ (m & static_cast<long long>(0x8000000000000000ULL)));
 }
+[[gnu::always_inline]] inline vd negate_if(vm m, vd x) noexcept { return {negate_if(m.lo, x.lo), negate_if(m.hi, x.hi)}; }
 [[gnu::always_inline]] inline v2 vsqrt(v2 x) noexcept {
 #if defined(__SSE2__)
-    return (v2)_mm_sqrt_pd((__m128d)x);
+    return (v2)_mm_sqrt_pd((__m128d)x);  // correctly rounded: the bits of std::sqrt
 #else
     return v2{std::sqrt(x[0]), std::sqrt(x[1])};
 #endif
 }
-[[gnu::always_inline]] inline bool any(m2 m) noexcept { return (m[0] | m[1]) != 0; }
+[[gnu::always_inline]] inline vd vsqrt(vd x) noexcept { return {vsqrt(x.lo), vsqrt(x.hi)}; }
 #else
 #define CRSPLINE_ROTATION_LANES 0
 #endif
@@ -91,7 +140,6 @@ template <class S>
 [[gnu::always_inline]] inline S negate_if(bool m, S x) noexcept { return m ? -x : x; }
 template <class S>
 [[gnu::always_inline]] inline S vsqrt(S x) noexcept { return std::sqrt(x); }
-inline bool any(bool m) noexcept { return m; }
 
 /// The lanes a sample type T is computed in: two doubles, or one T.
 template <class T>
@@ -103,9 +151,9 @@ struct pack {
 #if CRSPLINE_ROTATION_LANES
 template <>
 struct pack<double> {
-    using V = v2;
-    using M = m2;
-    static constexpr int width = 2;
+    using V = vd;
+    using M = vm;
+    static constexpr int width = vd_width;
 };
 #endif
 
@@ -121,7 +169,7 @@ struct sin_cos {
 /// exact there); larger ones, and NaN, go to std::sin and std::cos.
 inline constexpr double poly_sincos_limit = 1 << 19;
 
-/// sin x and cos x, two lanes. Cody-Waite reduction x = n pi/2 + r with
+/// sin x and cos x, lane by lane. Cody-Waite reduction x = n pi/2 + r with
 /// |r| <= pi/4 (n by the 1.5 * 2^52 rounding trick, exact in the default
 /// rounding mode for |x| < 2^51), pi/2 split in three parts of which the
 /// first two have 33 significant bits, so n p1 and n p2 are exact for
@@ -129,37 +177,42 @@ inline constexpr double poly_sincos_limit = 1 << 19;
 /// fdlibm's kernels (k_sin.c, k_cos.c), whose polynomials are within 2^-58
 /// of sin and cos on [-pi/4, pi/4], so the result is within 1 ulp of the
 /// true value (tested against std:: at random, tests/rotation/).
-[[gnu::always_inline]] inline sin_cos<v2> poly_sincos(v2 x) noexcept {
-    if (!(std::abs(x[0]) <= poly_sincos_limit && std::abs(x[1]) <= poly_sincos_limit)) [[unlikely]]
-        return {v2{std::sin(x[0]), std::sin(x[1])}, v2{std::cos(x[0]), std::cos(x[1])}};
+[[gnu::always_inline]] inline sin_cos<vd> poly_sincos(vd x) noexcept {
+    bool in_range = true;
+    for (int l = 0; l < vd_width; ++l) in_range &= std::abs(x[l]) <= poly_sincos_limit;
+    if (!in_range) [[unlikely]] {
+        sin_cos<vd> r{x, x};
+        for (int l = 0; l < vd_width; ++l) r.s.set(l, std::sin(x[l])), r.c.set(l, std::cos(x[l]));
+        return r;
+    }
     const double magic = 6755399441055744.0;  // 1.5 * 2^52
-    const v2 n = (x * 6.36619772367581382433e-01 + magic) - magic;  // round(x 2/pi)
+    const vd n = (x * 6.36619772367581382433e-01 + magic) - magic;  // round(x 2/pi)
     const double p1 = 1.57079632673412561417e+00, p2 = 6.07710050630396597660e-11,
                  p3 = 2.02226624879595063154e-21;  // pi/2 = p1 + p2 + p3 + O(1e-32)
-    const v2 r = ((x - n * p1) - n * p2) - n * p3;
-    const v2 z = r * r;
+    const vd r = ((x - n * p1) - n * p2) - n * p3;
+    const vd z = r * r;
     // fdlibm __kernel_sin(r, 0, 0): r + r^3 (S1 + z S2 + ... + z^5 S6).
-    const v2 ps = 8.33333333332248946124e-03 +
+    const vd ps = 8.33333333332248946124e-03 +
                   z * (-1.98412698298579493134e-04 +
                        z * (2.75573137070700676789e-06 + z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)));
-    const v2 s = r + (z * r) * (-1.66666666666666324348e-01 + z * ps);
+    const vd s = r + (z * r) * (-1.66666666666666324348e-01 + z * ps);
     // fdlibm __kernel_cos(r, 0): 1 - z/2 + z^2 (C1 + ... + z^5 C6), the
     // rounding of 1 - z/2 recovered as (1 - w) - z/2.
-    const v2 pc = z * (4.16666666666666019037e-02 +
+    const vd pc = z * (4.16666666666666019037e-02 +
                        z * (-1.38888888888741095749e-03 +
                             z * (2.48015872894767294178e-05 +
                                  z * (-2.75573143513906633035e-07 +
                                       z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
-    const v2 hz = 0.5 * z, w = 1.0 - hz;
-    const v2 c = w + (((1.0 - w) - hz) + z * pc);
+    const vd hz = 0.5 * z, w = 1.0 - hz;
+    const vd c = w + (((1.0 - w) - hz) + z * pc);
     // The quadrant j = n mod 4 (floor(n/4) = round(n/4 - 3/8) for integer n).
-    const v2 f = ((n * 0.25 - 0.375) + magic) - magic;
-    const v2 j = n - 4.0 * f;
-    const m2 odd = (j == 1.0) | (j == 3.0);
+    const vd f = ((n * 0.25 - 0.375) + magic) - magic;
+    const vd j = n - 4.0 * f;
+    const vm odd = (j == 1.0) | (j == 3.0);
     return {negate_if(j >= 2.0, sel(odd, c, s)), negate_if((j == 1.0) | (j == 2.0), sel(odd, s, c))};
 }
 
-[[gnu::always_inline]] inline sin_cos<v2> sincos(v2 x) noexcept { return poly_sincos(x); }
+[[gnu::always_inline]] inline sin_cos<vd> sincos(vd x) noexcept { return poly_sincos(x); }
 #endif
 
 template <class S>
@@ -236,7 +289,7 @@ template <class V>
 template <class S>
 [[gnu::always_inline]] inline S lane(S x, int) noexcept { return x; }
 #if CRSPLINE_ROTATION_LANES
-[[gnu::always_inline]] inline double lane(v2 x, int l) noexcept { return x[l]; }
+[[gnu::always_inline]] inline double lane(vd x, int l) noexcept { return x[l]; }
 #endif
 
 template <class T, class V>
@@ -267,7 +320,7 @@ template <class V, class F>
 [[gnu::always_inline]] inline V make_lanes(F f) noexcept {
     if constexpr (std::is_floating_point_v<V>) return f(0);
 #if CRSPLINE_ROTATION_LANES
-    else return V{f(0), f(1)};
+    else return V{f(0), f(1), f(2), f(3)};
 #endif
 }
 
@@ -285,7 +338,9 @@ struct locator {
     std::size_t last = 0;
 
     std::size_t operator()(T t) noexcept {
-        if (!(g[last] <= t && t < g[last + 1])) last = index->locate(t, g, nseg);
+        // One branch on both tests (& not &&: random t passes the first half
+        // the time, which a branch of its own would mispredict).
+        if (!(int(g[last] <= t) & int(t < g[last + 1]))) last = index->locate(t, g, nseg);
         return last;
     }
 };
@@ -302,16 +357,13 @@ struct c2_packed {
     T pad[2];
 };
 
-/// Samples k .. k + width - 1 of the C2 spline (segments seg[0..width-1]),
-/// the first `valid` of them written: the rotation, and with order >= 1 the
-/// angular velocity (and order 2 the acceleration) in frame f. Each step is
+/// The C2 spline's rotation (and with order >= 1 its angular velocity,
+/// order 2 its acceleration, in frame f) on lanes: tau = t - t0 per lane,
+/// seg(l) the packed segment of lane l. Each step is
 /// c2_rotation_spline::evaluate_on's, on lanes.
-template <class T>
-[[gnu::always_inline]] inline void c2_block(const c2_packed<T>* segs, const std::size_t* seg, const T* t, std::size_t k,
-                                            int valid, int order, frame f, const rows<T>& out) noexcept {
-    using V = typename pack<T>::V;
-    auto g = [&](auto member) { return make_lanes<V>([&](int l) { return member(segs[seg[l]]); }); };
-    const V tau = make_lanes<V>([&](int l) { return t[l] - segs[seg[l]].t0; });
+template <class T, class V, class Seg>
+[[gnu::always_inline]] inline void c2_lanes(Seg seg, V tau, int order, frame f, ql<V>& q, v3l<V>& w, v3l<V>& acc) noexcept {
+    auto g = [&](auto member) { return make_lanes<V>([&](int l) { return member(seg(l)); }); };
     v3l<V> c3, c2, c1;
     c3.x = g([](const c2_packed<T>& s) { return s.c3[0]; }), c3.y = g([](const c2_packed<T>& s) { return s.c3[1]; }),
     c3.z = g([](const c2_packed<T>& s) { return s.c3[2]; });
@@ -328,8 +380,8 @@ template <class T>
     const V a = vsqrt(dot(h, h));  // half the angle
     const sin_cos<V> sc = sincos(a);
     const V sinc = sel(a > T(0), sc.s / a, V{} + T(1));  // sin(a)/a
-    const ql<V> q = mul(key, ql<V>{sc.c, h.x * sinc, h.y * sinc, h.z * sinc});
-    if (order == 0) return store<T, V>(out, k, valid, q, nullptr, nullptr);
+    q = mul(key, ql<V>{sc.c, h.x * sinc, h.y * sinc, h.z * sinc});
+    if (order == 0) return;
     // Body frame: omega = J_r(theta) theta', alpha = J_r(theta) theta'' + N_r(theta, theta').
     const v3l<V> d1{(T(3) * c3.x * tau + T(2) * c2.x) * tau + c1.x, (T(3) * c3.y * tau + T(2) * c2.y) * tau + c1.y,
                     (T(3) * c3.z * tau + T(2) * c2.z) * tau + c1.z};
@@ -345,8 +397,7 @@ template <class T>
         const v3l<V> pv = cross(th, v), ppv = cross(th, pv);
         return v3l<V>{v.x - k1 * pv.x + k2 * ppv.x, v.y - k1 * pv.y + k2 * ppv.y, v.z - k1 * pv.z + k2 * ppv.z};
     };
-    v3l<V> w = jr(d1);
-    v3l<V> acc{};
+    w = jr(d1);
     if (order >= 2) {
         const v3l<V> d2{T(6) * c3.x * tau + T(2) * c2.x, T(6) * c3.y * tau + T(2) * c2.y, T(6) * c3.z * tau + T(2) * c2.z};
         const V K1 = sel(small, horner16<T>(series.K1, z), (T(2) * (T(1) - cos_t) - big * sin_t) / (zb * zb));
@@ -361,8 +412,66 @@ template <class T>
         w = rotate(q, w);
         if (order >= 2) acc = rotate(q, acc);
     }
-    store<T, V>(out, k, valid, q, &w, order >= 2 ? &acc : nullptr);
 }
+
+/// Samples k .. k + width - 1 of the C2 spline (segments seg[0..width-1]),
+/// the first `valid` of them written.
+template <class T>
+[[gnu::always_inline]] inline void c2_block(const c2_packed<T>* segs, const std::size_t* seg, const T* t, std::size_t k,
+                                            int valid, int order, frame f, const rows<T>& out) noexcept {
+    using V = typename pack<T>::V;
+    const V tau = make_lanes<V>([&](int l) { return t[l] - segs[seg[l]].t0; });
+    ql<V> q;
+    v3l<V> w, acc;
+    c2_lanes<T>([&](int l) -> const c2_packed<T>& { return segs[seg[l]]; }, tau, order, f, q, w, acc);
+    store<T, V>(out, k, valid, q, order >= 1 ? &w : nullptr, order >= 2 ? &acc : nullptr);
+}
+
+/// One segment of a pose curve with a C2 rotation, packed: the position's
+/// cubic in local u = (t - t0) inv_h (origin + u (c1 + u (c2 + u c3)), as
+/// cubic_segment) and the rotation's segment.
+template <class T>
+struct pose_packed {
+    c2_packed<T> rot;
+    T origin[3], c1[3], c2[3], c3[3];
+    T inv_h;
+};
+
+/// Samples k .. k + width - 1 of a pose curve: position, velocity (dx/dt),
+/// rotation and angular velocity, velocities in frame f; the position and
+/// velocity by cubic_segment's arithmetic (at(u), dt(u, 1); at t_end the
+/// last point exactly, as catmull_rom gives it), the rotation by c2_lanes.
+/// out[k + l] for the first `valid` lanes.
+template <class T, class Sample>
+[[gnu::always_inline]] inline void pose_block(const pose_packed<T>* segs, const std::size_t* seg, const T* t, std::size_t k,
+                                              int valid, frame f, T t_end, const T* end_point, Sample* out) noexcept {
+    using V = typename pack<T>::V;
+    auto g = [&](auto member) { return make_lanes<V>([&](int l) { return member(segs[seg[l]]); }); };
+    const V u = make_lanes<V>([&](int l) { return (t[l] - segs[seg[l]].rot.t0) * segs[seg[l]].inv_h; });
+    const V tau = make_lanes<V>([&](int l) { return t[l] - segs[seg[l]].rot.t0; });
+    const V inv_h = g([](const pose_packed<T>& s) { return s.inv_h; });
+    V pos[3], vel[3];
+    for (int d = 0; d < 3; ++d) {
+        const V o = g([d](const pose_packed<T>& s) { return s.origin[d]; }), c1 = g([d](const pose_packed<T>& s) { return s.c1[d]; }),
+                c2 = g([d](const pose_packed<T>& s) { return s.c2[d]; }), c3 = g([d](const pose_packed<T>& s) { return s.c3[d]; });
+        pos[d] = o + u * (c1 + u * (c2 + u * c3));
+        vel[d] = (c1 + u * (T(2) * c2 + T(3) * u * c3)) * inv_h;
+    }
+    ql<V> q;
+    v3l<V> w, acc;
+    c2_lanes<T>([&](int l) -> const c2_packed<T>& { return segs[seg[l]].rot; }, tau, 1, f, q, w, acc);
+    v3l<V> v{vel[0], vel[1], vel[2]};
+    if (f == frame::body) v = rotate(ql<V>{q.w, -q.x, -q.y, -q.z}, v);
+    for (int l = 0; l < valid; ++l) {
+        Sample& s = out[k + std::size_t(l)];
+        s.position[0] = lane(pos[0], l), s.position[1] = lane(pos[1], l), s.position[2] = lane(pos[2], l);
+        if (t[l] == t_end) s.position[0] = end_point[0], s.position[1] = end_point[1], s.position[2] = end_point[2];  // exactly
+        s.orientation = {lane(q.w, l), lane(q.x, l), lane(q.y, l), lane(q.z, l)};
+        s.velocity[0] = lane(v.x, l), s.velocity[1] = lane(v.y, l), s.velocity[2] = lane(v.z, l);
+        s.omega[0] = lane(w.x, l), s.omega[1] = lane(w.y, l), s.omega[2] = lane(w.z, l);
+    }
+}
+
 
 // ----- piecewise slerp --------------------------------------------------------------------
 
@@ -423,3 +532,7 @@ void run(std::span<const T> t, Locate&& locate, Block&& block) {
 }
 
 }  // namespace crspline::rotation::detail_batch
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif

@@ -199,6 +199,9 @@ public:
     vec3<T> angular_velocity(T t, frame f = frame::world) const { return evaluate(t, 1, f).omega; }
     vec3<T> angular_acceleration(T t, frame f = frame::world) const { return evaluate(t, 2, f).alpha; }
 
+    /// The batch kernels' packed segments (batch.hpp), for pose_curve's batch.
+    std::span<const detail_batch::c2_packed<T>> batch_segments() const noexcept { return packed_; }
+
     /// On segment i (t anywhere: extrapolation outside it).
     so3::jet<T> evaluate_on(std::size_t i, T t, int order = 0, frame f = frame::world) const noexcept {
         const T tau = t - t_[i];

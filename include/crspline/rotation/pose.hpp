@@ -56,7 +56,21 @@ public:
     using quat = quaternion<T>;
 
     pose_curve(std::span<const point> positions, std::span<const quat> rotations, const pose_options<T>& opt = {})
-        : position_(positions, position_options(opt)), rotation_(build_rotation(positions.size(), rotations, opt)) {}
+        : position_(positions, position_options(opt)), rotation_(build_rotation(positions.size(), rotations, opt)) {
+        // The batch kernel's table: each segment's position cubic beside its rotation's.
+        if (const auto* r = std::get_if<c2_rotation_spline<T>>(&rotation_)) {
+            const auto rot = r->batch_segments();
+            for (std::size_t i = 0; i < rot.size(); ++i) {
+                const auto seg = position_.segment(i);
+                detail_batch::pose_packed<T> p{};
+                p.rot = rot[i];
+                for (std::size_t d = 0; d < 3; ++d)
+                    p.origin[d] = seg.origin[d], p.c1[d] = seg.c1[d], p.c2[d] = seg.c2[d], p.c3[d] = seg.c3[d];
+                p.inv_h = seg.inv_h;
+                packed_.push_back(p);
+            }
+        }
+    }
 
     const catmull_rom<3, T>& position_curve() const noexcept { return position_; }
     std::span<const T> grid() const noexcept { return position_.grid(); }
@@ -69,25 +83,45 @@ public:
         return at(t, f);
     }
 
-    /// Batch evaluation (any order of t), in chunks: positions and velocities
-    /// through the position curve's batch kernels, rotations and angular
-    /// velocities through the rotation curve's (batch.hpp); the same values
-    /// as evaluate(t) to a few ulps.
+    /// Batch evaluation (any order of t). With the C2 rotation, one kernel
+    /// (batch.hpp's pose_block) does the position, velocity, rotation and
+    /// angular velocity of each sample from one segment search; with a
+    /// quaternion Catmull-Rom, chunks go through the position curve's batch
+    /// and the rotation curve's. The same values as evaluate(t) to a few ulps.
     void evaluate(std::span<const T> t, std::span<pose_sample<T>> out, frame f = frame::world) const {
         check_batch_size(out.size(), t.size(), "poses");
+        const T lo = grid().front(), hi = grid().back();
+        auto domain = [&](std::size_t k, T x) {
+            if (!(x >= lo && x <= hi)) [[unlikely]]
+                throw out_of_domain("t = " + detail::num(double(x)) + " (index " + std::to_string(k) +
+                                    ") is outside the pose curve's domain [" + detail::num(double(lo)) + ", " +
+                                    detail::num(double(hi)) + "]");
+        };
+        if (!packed_.empty()) {
+            // C2 rotation: one pass, each sample's segment found once for both curves.
+            const point last = position_.evaluate_unchecked(hi, 0);
+            const T* g = grid().data();
+            std::size_t hint = 0;
+            detail_batch::run<T>(
+                t,
+                [&](std::size_t k, T x) {
+                    domain(k, x);
+                    if (!(int(g[hint] <= x) & int(x < g[hint + 1]))) hint = position_.locate(x);
+                    return hint;
+                },
+                [&](const std::size_t* seg, const T* tl, std::size_t k, int valid) {
+                    detail_batch::pose_block<T>(packed_.data(), seg, tl, k, valid, f, hi, &last[0], out.data());
+                });
+            return;
+        }
         constexpr std::size_t chunk = 1024;  // the chunk's arrays stay in the L1/L2 cache
         const std::size_t m = std::min(chunk, t.size());
         std::vector<point> pos(m), vel(m);
         std::vector<T> q(4 * m), w(3 * m);
-        const T lo = grid().front(), hi = grid().back();
         for (std::size_t k0 = 0; k0 < t.size(); k0 += chunk) {
             const std::size_t n = std::min(chunk, t.size() - k0);
             const std::span<const T> sub = t.subspan(k0, n);
-            for (std::size_t k = 0; k < n; ++k)
-                if (!(sub[k] >= lo && sub[k] <= hi)) [[unlikely]]
-                    throw out_of_domain("t = " + detail::num(double(sub[k])) + " (index " + std::to_string(k0 + k) +
-                                        ") is outside the pose curve's domain [" + detail::num(double(lo)) + ", " +
-                                        detail::num(double(hi)) + "]");
+            for (std::size_t k = 0; k < n; ++k) domain(k0 + k, sub[k]);
             position_.evaluate(sub, std::span<point>(pos.data(), n), 0);
             position_.evaluate(sub, std::span<point>(vel.data(), n), 1);
             batch_rows<T> rows;
@@ -137,6 +171,7 @@ public:
 private:
     catmull_rom<3, T> position_;
     std::variant<c2_rotation_spline<T>, quaternion_spline<T>> rotation_;
+    std::vector<detail_batch::pose_packed<T>> packed_;  // batch, C2 rotation: position and rotation per segment
 
     static options<3, T> position_options(const pose_options<T>& opt) {
         options<3, T> o;
