@@ -17,7 +17,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <map>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -134,8 +133,15 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
         for (std::size_t q = 0; q < parts.size(); ++q)
             if (!parts[q].ring) topo.junction[part_ids[q].front()] = topo.junction[part_ids[q].back()] = 1;
     }
-    // Arcs, each vertex sequence once (in a canonical direction).
-    std::map<std::pair<std::vector<std::size_t>, bool>, std::size_t> seen;
+    // Arcs, each vertex sequence once (in a canonical direction): found by
+    // a hash of the sequence, then compared. Without sharing every part's
+    // ids are its own, so no two sequences can be equal: no lookup.
+    std::unordered_multimap<std::uint64_t, std::size_t> seen;
+    auto hash_of = [](const std::vector<std::size_t>& seq, bool closed) {
+        std::uint64_t h = closed ? 0x9E3779B97F4A7C15ull : 0x632BE59BD9B4E019ull;
+        for (std::size_t v : seq) h = (h ^ std::uint64_t(v)) * 0x100000001B3ull + (h >> 29);
+        return h;
+    };
     topo.parts.resize(parts.size());
     auto add_arc = [&](std::size_t q, std::vector<std::size_t> seq, std::vector<std::size_t> src, bool closed) {
         bool reversed = false;
@@ -158,13 +164,23 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
                 reversed = true;
             }
         }
-        auto [it, fresh] = seen.try_emplace({seq, closed}, topo.arcs.size());
-        if (fresh) topo.arcs.push_back({std::move(seq), closed, std::move(src), 0, {}});
-        arc& a = topo.arcs[it->second];
+        std::size_t index = topo.arcs.size();
+        if (share) {
+            const std::uint64_t h = hash_of(seq, closed);
+            auto [lo, hi] = seen.equal_range(h);
+            for (auto it = lo; it != hi; ++it)
+                if (topo.arcs[it->second].closed == closed && topo.arcs[it->second].vertices == seq) {
+                    index = it->second;
+                    break;
+                }
+            if (index == topo.arcs.size()) seen.emplace(h, index);
+        }
+        if (index == topo.arcs.size()) topo.arcs.push_back({std::move(seq), closed, std::move(src), 0, {}});
+        arc& a = topo.arcs[index];
         ++a.uses;
         auto pos = std::lower_bound(a.features.begin(), a.features.end(), parts[q].feature);
         if (pos == a.features.end() || *pos != parts[q].feature) a.features.insert(pos, parts[q].feature);
-        topo.parts[q].arcs.push_back({it->second, reversed});
+        topo.parts[q].arcs.push_back({index, reversed});
     };
     for (std::size_t q = 0; q < parts.size(); ++q) {
         const auto& s = part_ids[q];
