@@ -211,17 +211,43 @@ int run(int argc, char** argv) {
         recipes.push_back(add_geometry(layer, i, geometries[i] ? *geometries[i] : null_json, where));
     }
     layer.feature_count = geometries.size();
-    // The frame (as crspline.geo's: the same arithmetic, so the same numbers).
+    // Lines and rings across the antimeridian (a step of more than 180
+    // degrees between neighbours) are unwrapped: longitudes continuous along
+    // the part, back into [-180, 180] on output. A ring round a pole (its
+    // steps add up to a turn) is left as it is. As crspline.geo's _unwrap.
+    std::vector<double> lon_of(layer.vertex_count());
+    for (std::size_t v = 0; v < layer.vertex_count(); ++v) lon_of[v] = layer.xy[2 * v];
+    for (std::size_t p = 0; p < layer.part_count(); ++p) {
+        const std::size_t a = layer.part_offsets[p], b = layer.part_offsets[p + 1];
+        std::vector<double> shift(b - a, 0.0);
+        bool moved = false;
+        for (std::size_t v = a + 1; v < b; ++v) {
+            const double step = layer.xy[2 * v] - layer.xy[2 * v - 2];
+            shift[v - a] = shift[v - a - 1] + (step > 180 ? -360.0 : step < -180 ? 360.0 : 0.0);
+            moved = moved || shift[v - a] != 0;
+        }
+        if (!moved) continue;
+        if (layer.part_kinds[p] == geo::part_kind::ring &&
+            !(std::abs(layer.xy[2 * a] - (layer.xy[2 * (b - 1)] + shift[b - 1 - a])) <= 180))
+            continue;
+        for (std::size_t v = a; v < b; ++v) lon_of[v] = layer.xy[2 * v] + shift[v - a];
+    }
+    // The frame (as crspline.geo's: the same arithmetic, so the same numbers):
+    // the domain holds the unwrapped input, the clip box the input as given.
     double phi0 = 90, lat_min = 90, lat_max = -90, lon_min = -180, lon_max = 180;
+    double clip_lon_min = -180, clip_lon_max = 180;
     for (std::size_t v = 0; v < layer.vertex_count(); ++v) {
-        const double lon = layer.xy[2 * v], lat = layer.xy[2 * v + 1];
+        const double lon = lon_of[v], lat = layer.xy[2 * v + 1];
         if (!std::isfinite(lat) || !std::isfinite(lon)) continue;
         lat_min = std::min(lat_min, lat);
         lat_max = std::max(lat_max, lat);
         lon_min = std::min(lon_min, lon);
         lon_max = std::max(lon_max, lon);
+        clip_lon_min = std::min(clip_lon_min, layer.xy[2 * v]);
+        clip_lon_max = std::max(clip_lon_max, layer.xy[2 * v]);
         phi0 = std::min(phi0, std::abs(lat));
     }
+    const bool wrapped = lon_min < clip_lon_min || lon_max > clip_lon_max;
     if (lat_min <= 0 && lat_max >= 0) phi0 = 0;
     if (layer.vertex_count() == 0) phi0 = 0;
     const double k = r_max * std::numbers::pi / 180;
@@ -235,7 +261,7 @@ int run(int argc, char** argv) {
         return s;
     };
     for (std::size_t v = 0; v < layer.vertex_count(); ++v) {
-        framed.xy[2 * v] *= sx;
+        framed.xy[2 * v] = lon_of[v] * sx;
         framed.xy[2 * v + 1] *= sy;
         original.emplace(key(framed.xy[2 * v], framed.xy[2 * v + 1]), v);
     }
@@ -255,7 +281,9 @@ int run(int argc, char** argv) {
             lonlat[2 * v] = layer.xy[2 * it->second];
             lonlat[2 * v + 1] = layer.xy[2 * it->second + 1];
         } else {
-            lonlat[2 * v] = std::clamp(x / sx, std::min(-180.0, lon_min), std::max(180.0, lon_max));
+            double lon = x / sx;
+            if (wrapped) lon = lon > clip_lon_max ? lon - 360 : lon < clip_lon_min ? lon + 360 : lon;
+            lonlat[2 * v] = std::clamp(lon, clip_lon_min, clip_lon_max);
             lonlat[2 * v + 1] = std::clamp(y / sy, std::min(-90.0, lat_min), std::max(90.0, lat_max));
         }
     }

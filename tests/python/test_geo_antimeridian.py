@@ -115,3 +115,61 @@ def test_ring_round_the_pole_is_not_unwrapped():
     c = np.asarray(out.geometry.iloc[0].exterior.coords)
     assert out["status"].iloc[0] == "ok"
     assert c[:, 0].min() >= -180 and c[:, 0].max() <= 180
+
+
+def test_cli_unwraps_as_python(tmp_path):
+    """crspline smooth (the command) unwraps the same way: the same
+    coordinates as crspline.geo.smooth, to the bit, on Vanua Levu and a
+    line across 180 degrees."""
+    import json
+    import os
+    import subprocess
+
+    binary = os.environ.get("CRSPLINE_BIN")
+    if not binary:
+        pytest.skip("CRSPLINE_BIN not set (the CLI is not built)")
+    ring = vanua_levu()
+    line = np.array([[179.2, -17.5], [179.8, -17.2], [-179.7, -17.4], [-179.1, -17.0], [-178.8, -17.3]])
+    features = [{"type": "Feature", "properties": {"k": 0},
+                 "geometry": {"type": "Polygon", "coordinates": [np.vstack((ring, ring[:1])).tolist()]}},
+                {"type": "Feature", "properties": {"k": 1},
+                 "geometry": {"type": "LineString", "coordinates": line.tolist()}}]
+    src = tmp_path / "in.geojson"
+    src.write_text(json.dumps({"type": "FeatureCollection", "features": features}))
+    out = tmp_path / "out.geojson"
+    r = subprocess.run([binary, "smooth", "--tolerance", "50", str(src), "-o", str(out)], capture_output=True,
+                       text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    doc = json.loads(out.read_text())
+    got = [np.asarray(doc["features"][0]["geometry"]["coordinates"][0]),
+           np.asarray(doc["features"][1]["geometry"]["coordinates"])]
+    py = cg.smooth(gpd.GeoSeries([Polygon(ring), LineString(line)], crs="EPSG:4326"), tolerance=50.0)
+    want = [np.asarray(py.geometry.iloc[0].exterior.coords), np.asarray(py.geometry.iloc[1].coords)]
+    for g, w in zip(got, want):
+        assert g.shape == w.shape and np.array_equal(g, w)
+        assert g[:, 0].min() >= -180 and g[:, 0].max() <= 180
+        assert (np.abs(np.diff(g[:, 0])) > 180).sum() >= 1  # it crosses, the short way
+
+
+def test_dask_path_unwraps_the_same():
+    """crspline.geo.dask on a layer with Vanua Levu across 180 degrees, in
+    two partitions (synchronous scheduler): the rows of one process."""
+    dd = pytest.importorskip("dask.dataframe")
+    dask = pytest.importorskip("dask")
+    import pandas as pd
+
+    import crspline.geo.dask as cgd
+
+    world = gpd.read_file(gpd.datasets.get_path("naturalearth_lowres"))
+    oceania = world[(world["continent"] == "Oceania") & (world["name"] != "Fiji")].geometry.tolist()
+    layer = gpd.GeoSeries(oceania + [Polygon(vanua_levu())], crs="EPSG:4326")
+    expected = cg.smooth(layer, tolerance=50.0)
+    df = pd.DataFrame({"geometry": [g.wkb for g in layer]})
+    with dask.config.set(scheduler="sync"):
+        got = cgd.smooth(dd.from_pandas(df, npartitions=2), crs=layer.crs, tolerance=50.0).compute()
+    assert len(got) == len(expected) == len(oceania) + 1 > 5
+    for (_, a), (_, b) in zip(got.iterrows(), expected.iterrows()):
+        assert a["geometry"] == b.geometry.wkb
+        assert np.float64(a["length"]).tobytes() == np.float64(b["length"]).tobytes()
+        assert np.float64(a["max_deviation"]).tobytes() == np.float64(b["max_deviation"]).tobytes()
+        assert (a["verdict"], a["status"]) == (b["verdict"], b["status"])
