@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 #if (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__)) && \
     !defined(CRSPLINE_NO_X86_DISPATCH)
@@ -163,53 +164,13 @@ CRSPLINE_TARGET_AVX2 std::size_t sorted_loop3(const T* o, const T* a, const T* b
     return k;
 }
 
-/// One sorted run of a 3-D segment (double or float), as catmull_rom's
-/// portable run_kernel: out[k] = o + u (a + u (b + u c)) (Order 0) or
-/// a + u (b + u c) (Order 1, o unused) with u = (t[k] - t0) ih, for t[0] and
-/// the points after it while they are below t_end (at most n); returns how
-/// many. Sets unsorted when t is not sorted there (or holds a NaN). out
-/// holds 3 n scalars. Large outputs (stream) use non-temporal stores once
-/// out is 32-byte aligned.
-template <int Order, class T>
-CRSPLINE_TARGET_AVX2 std::size_t sorted_run3(const T* o, const T* a, const T* b, const T* c, T t0, T ih,
-                                             const T* t, T* out, std::size_t n, T& previous, bool stream, T t_end,
-                                             bool& unsorted) noexcept {
-    using L = lanes256<T>;
-    constexpr std::size_t W = L::W;
-    unsigned bad = 0;
-    T prev = previous;
-    std::size_t k = 0;
-    // One point, scalar: the same expression as the portable kernel.
-    auto one = [&](std::size_t q) {
-        const T x = t[q];
-        bad |= unsigned(!(prev <= x));
-        prev = x;
-        const T u = (x - t0) * ih;
-        for (int d = 0; d < 3; ++d) {
-            if constexpr (Order == 0) out[3 * q + d] = o[d] + u * (a[d] + u * (b[d] + u * c[d]));
-            else out[3 * q + d] = a[d] + u * (b[d] + u * c[d]);
-        }
-    };
-    // Head: at least one point (t[k - 1] is read below), then up to W - 1
-    // more until the output is 32-byte aligned (a point is 3 scalars, so W
-    // steps visit every scalar-aligned offset).
-    if (n > 0) one(k++);
-    while (k < n && k < W && t[k] < t_end && reinterpret_cast<std::uintptr_t>(out + 3 * k) % 32 != 0) one(k++);
-    if (k + W <= n) {
-        typename L::V good = L::ones();
-        if (stream && reinterpret_cast<std::uintptr_t>(out + 3 * k) % 32 == 0)
-            k = sorted_loop3<T, Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, n, good);
-        else
-            k = sorted_loop3<T, Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, n, good);
-        prev = t[k - 1];
-        bad |= unsigned(L::mask(good) != L::all);
-    }
-    while (k < n && t[k] < t_end) one(k++);
-    previous = prev;
-    unsorted = unsorted || bad != 0;
-    return k;
-}
-
+// (GCC 12 warns that the permutes' inputs "may be used uninitialized":
+// its own _mm512_undefined_ps in _mm512_permutexvar_ps, a known false
+// positive; every lane is written.)
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 /// Lanes of the 512-bit float loop: v[(16 r + j) % 3] in lane j, and the
 /// index (16 r + j) / 3 that spreads u over them.
 CRSPLINE_TARGET_AVX512 inline __m512 pattern512(const float* v, int r) noexcept {
@@ -274,51 +235,65 @@ CRSPLINE_TARGET_AVX512 std::size_t sorted_loop3_512(const float* o, const float*
     return k;
 }
 
-/// sorted_run3 for floats with the 512-bit loop: the same head (scalar
-/// points until the output is 32-byte aligned), one 8-lane step when that
-/// leaves it 64-byte aligned for streaming, the 16-lane loop, then the
-/// 8-lane loop and single points for the rest of the run. The same bits as
-/// sorted_run3.
-template <int Order>
-CRSPLINE_TARGET_AVX2 std::size_t sorted_run3_512(const float* o, const float* a, const float* b, const float* c,
-                                                 float t0, float ih, const float* t, float* out, std::size_t n,
-                                                 float& previous, bool stream, float t_end, bool& unsorted) noexcept {
-    using L = lanes256<float>;
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
+
+/// One sorted run of a 3-D segment (double or float), as catmull_rom's
+/// portable run_kernel: out[k] = o + u (a + u (b + u c)) (Order 0) or
+/// a + u (b + u c) (Order 1, o unused) with u = (t[k] - t0) ih, for t[0] and
+/// the points after it while they are below t_end (at most n); returns how
+/// many. Sets unsorted when t is not sorted there (or holds a NaN). out
+/// holds 3 n scalars. Large outputs (stream) use non-temporal stores once
+/// out is 32-byte aligned. Wide (floats, on a CPU with AVX-512F): after the
+/// head, one 8-point step leaves the output 64-byte aligned and the 16-lane
+/// loop (sorted_loop3_512) runs the run's bulk; the 8-lane loop and single
+/// points do the rest. The same bits either way.
+template <int Order, class T, bool Wide = false>
+CRSPLINE_TARGET_AVX2 std::size_t sorted_run3(const T* o, const T* a, const T* b, const T* c, T t0, T ih,
+                                             const T* t, T* out, std::size_t n, T& previous, bool stream, T t_end,
+                                             bool& unsorted) noexcept {
+    using L = lanes256<T>;
     constexpr std::size_t W = L::W;
     unsigned bad = 0;
-    float prev = previous;
+    T prev = previous;
     std::size_t k = 0;
+    // One point, scalar: the same expression as the portable kernel.
     auto one = [&](std::size_t q) {
-        const float x = t[q];
+        const T x = t[q];
         bad |= unsigned(!(prev <= x));
         prev = x;
-        const float u = (x - t0) * ih;
+        const T u = (x - t0) * ih;
         for (int d = 0; d < 3; ++d) {
             if constexpr (Order == 0) out[3 * q + d] = o[d] + u * (a[d] + u * (b[d] + u * c[d]));
             else out[3 * q + d] = a[d] + u * (b[d] + u * c[d]);
         }
     };
-    auto at = [&](std::size_t q, std::size_t bytes) { return reinterpret_cast<std::uintptr_t>(out + 3 * q) % bytes; };
+    // Head: at least one point (t[k - 1] is read below), then up to W - 1
+    // more until the output is 32-byte aligned (a point is 3 scalars, so W
+    // steps visit every scalar-aligned offset).
     if (n > 0) one(k++);
-    while (k < n && k < W && t[k] < t_end && at(k, 32) != 0) one(k++);
+    while (k < n && k < W && t[k] < t_end && reinterpret_cast<std::uintptr_t>(out + 3 * k) % 32 != 0) one(k++);
     if (k + W <= n) {
         typename L::V good = L::ones();
-        const bool streaming = stream && at(k, 32) == 0;
-        std::size_t before = k;
-        // One 8-point step (96 bytes) turns 32-byte alignment into 64.
-        if (at(k, 64) != 0 && k + W <= n) {
-            before = k;
-            k = streaming ? sorted_loop3<float, Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, k + W, good)
-                          : sorted_loop3<float, Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, k + W, good);
+        const bool streaming = stream && reinterpret_cast<std::uintptr_t>(out + 3 * k) % 32 == 0;
+        auto lanes8 = [&](std::size_t end) {
+            return streaming ? sorted_loop3<T, Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, end, good)
+                             : sorted_loop3<T, Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, end, good);
+        };
+        if constexpr (Wide) {
+            static_assert(std::is_same_v<T, float>);
+            const auto at64 = [&] { return reinterpret_cast<std::uintptr_t>(out + 3 * k) % 64; };
+            const std::size_t before = k;
+            if (at64() != 0) k = lanes8(k + W);  // 96 bytes: 32-byte alignment becomes 64
+            if (k != before || at64() == 0) {
+                unsigned good16 = 0xFFFF;
+                k = streaming ? sorted_loop3_512<Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, n, good16)
+                              : sorted_loop3_512<Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, n, good16);
+                bad |= unsigned(good16 != 0xFFFF);
+            }
         }
-        if (k != before || at(k, 64) == 0) {
-            unsigned good16 = 0xFFFF;
-            k = streaming ? sorted_loop3_512<Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, n, good16)
-                          : sorted_loop3_512<Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, n, good16);
-            bad |= unsigned(good16 != 0xFFFF);
-        }
-        k = streaming ? sorted_loop3<float, Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, n, good)
-                      : sorted_loop3<float, Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, n, good);
+        k = lanes8(n);
         prev = t[k - 1];
         bad |= unsigned(L::mask(good) != L::all);
     }
