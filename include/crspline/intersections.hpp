@@ -1,13 +1,15 @@
 // crspline: intersections of a Catmull-Rom curve with itself.
 //
-// Between different segments: Bézier subdivision with bounding-box
-// rejection down to a tolerance, then a Gauss-Newton polish of
-// C_i(u) = C_j(v). In 2-D crossings are found exactly (the polish converges
-// to the crossing to rounding); in 3-D and higher, curves generically miss
-// each other, and what is reported are closest approaches closer than the
-// tolerance. Adjacent segments always share their joint: that trivial
-// meeting is excluded (near the joint the two pieces are checked to be
-// monotone along the joint tangent, so they cannot meet there again).
+// Between different segments: Bézier subdivision with rejection by boxes
+// and by the pieces' chords down to a tolerance, then a Gauss-Newton polish
+// of C_i(u) = C_j(v); two pieces that are nearly straight and at an angle
+// meet at most once, and are polished at once instead of subdivided on.
+// In 2-D crossings are found exactly (the polish converges to the crossing
+// to rounding); in 3-D and higher, curves generically miss each other, and
+// what is reported are closest approaches closer than the tolerance.
+// Adjacent segments always share their joint: that trivial meeting is
+// excluded (near the joint the two pieces are checked to be monotone along
+// the joint tangent, so they cannot meet there again).
 // Within a segment: the exact loops of analyze_segment (segments {i, i}).
 // Where two segments overlap (collinear pieces, or any stretch within the
 // tolerance of each other) the meetings found along it are merged into one
@@ -158,17 +160,160 @@ enum class pair_joint {
     wrap,   ///< A(0) = B(1): the first and last segments of a closed curve
 };
 
-/// Meetings of segments A and B closer than tol (the per-pair step of
-/// find_intersections): Bézier subdivision with box rejection, then a
-/// polish. Everything is relative to A's origin, so a curve far from the
-/// origin of coordinates is searched as precisely as one near it. Excludes
-/// the shared joint of adjacent segments. Returns {u, v, distance} per
-/// meeting; sets complete = false when the budget of sub-pair visits runs
-/// out (overlapping collinear pieces meet in a continuum).
+// The largest angle between the chord b[3] - b[0] of a Bézier piece and its
+// hodograph's control points (so every tangent of the piece), as {cos, sin};
+// {-1, 0} when some hodograph point is not strictly ahead along the chord
+// (the piece is not a graph over its chord, or has no chord).
 template <std::size_t D, class T>
-std::vector<std::array<T, 3>> segment_pair_meetings(const cubic_segment<D, T>& A, const cubic_segment<D, T>& B,
-                                                    pair_joint joint, T tol, bool& complete,
-                                                    std::size_t budget = 200000) {
+std::array<T, 2> tangent_cone(const std::array<vec<D, T>, 4>& b) {
+    const vec<D, T> d = b[3] - b[0];
+    const T nd = norm(d);
+    T c = 1;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const vec<D, T> h = b[k + 1] - b[k];
+        const T dh = dot(h, d), nh = norm(h);
+        if (!(dh > 0) || !(nd > 0)) return {T(-1), T(0)};
+        c = std::min(c, dh / (nh * nd));
+    }
+    return {c, std::sqrt(std::max(T(0), 1 - c * c))};
+}
+
+// Whether every tangent of piece a meets every tangent of piece b (either
+// way round) at an angle of at least half that between their chords' lines,
+// and of at least about half a degree, each piece's tangents being within
+// 30 degrees of its chord. Then A(u) - B(v) is a well-conditioned, nearly
+// affine map of the pair's cell, and the pieces meet at most once there
+// (two meetings P != Q would make Q - P a positive combination of a's
+// tangents and, up to sign, of b's, which share no direction). A shallow
+// crossing passes once the pieces are short enough to be nearly straight;
+// parallel pieces (an overlap) never do.
+template <std::size_t D, class T>
+bool transversal(const std::array<vec<D, T>, 4>& a, const std::array<vec<D, T>, 4>& b) {
+    constexpr T cos_narrow = T(0.86602540378443865);  // cos 30 degrees: a piece's tangents about its chord
+    constexpr T cos_least = T(0.99984769515639124);   // cos 1 degree: the chords' lines at least this far apart
+    const auto ca = tangent_cone(a);
+    if (!(ca[0] >= cos_narrow)) return false;
+    const auto cb = tangent_cone(b);
+    if (!(cb[0] >= cos_narrow)) return false;
+    const vec<D, T> da = a[3] - a[0], db = b[3] - b[0];
+    // cos of the angle theta between the chords' lines, in [0, 1].
+    const T c = std::abs(dot(da, db)) / (norm(da) * norm(db));
+    if (!(c <= cos_least)) return false;
+    // cos(2 (alpha_a + alpha_b)) >= cos theta: the cones together take at
+    // most half of theta.
+    const T cs = ca[0] * cb[0] - ca[1] * cb[1], sn = ca[1] * cb[0] + ca[0] * cb[1];
+    return cs * cs - sn * sn >= c;
+}
+
+// Whether pieces a and b are more than tol apart across a's chord: the
+// direction n across a's chord towards b (in 2-D the chord's normal; in
+// more dimensions the part of the step between the pieces' centres that is
+// across the chord), and the control points of each piece, which hold it
+// in their convex hull, projected on n with a gap above tol between them.
+// Tighter than the boxes for pieces at an angle to the axes.
+template <std::size_t D, class T>
+bool apart_across(const std::array<vec<D, T>, 4>& a, const std::array<vec<D, T>, 4>& b, T tol) {
+    const vec<D, T> d = a[3] - a[0];
+    const T dd = dot(d, d);
+    if (!(dd > 0)) return false;
+    vec<D, T> n;
+    if constexpr (D == 2) {
+        n = vec<D, T>{{-d[1], d[0]}};
+    } else {
+        const vec<D, T> step = (b[0] + b[1] + b[2] + b[3]) - (a[0] + a[1] + a[2] + a[3]);
+        n = step - (dot(step, d) / dd) * d;
+    }
+    // Projections on n unnormalised: the gap is |n| times the distance.
+    const T gap = tol * norm(n);
+    if (!(gap > 0)) return false;
+    T alo = 0, ahi = 0, blo = dot(b[0] - a[0], n), bhi = blo;
+    for (std::size_t k = 1; k < 4; ++k) {
+        const T x = dot(a[k] - a[0], n), y = dot(b[k] - a[0], n);
+        alo = std::min(alo, x), ahi = std::max(ahi, x);
+        blo = std::min(blo, y), bhi = std::max(bhi, y);
+    }
+    return blo - ahi > gap || alo - bhi > gap;
+}
+
+// Where the chords of pieces a and b come closest, as parameters of A and B:
+// the start of the polish in a transversal cell.
+template <std::size_t D, class T>
+std::array<T, 2> chord_meeting(const sub_bezier<D, T>& a, const sub_bezier<D, T>& b) {
+    const vec<D, T> da = a.b[3] - a.b[0], db = b.b[3] - b.b[0], r = b.b[0] - a.b[0];
+    // Least squares for s da - t db = r.
+    const T a11 = dot(da, da), a12 = -dot(da, db), a22 = dot(db, db), r1 = dot(da, r), r2 = -dot(db, r);
+    const T det = a11 * a22 - a12 * a12;
+    T s = T(0.5), t = T(0.5);
+    if (det > 0) {
+        s = std::clamp((r1 * a22 - a12 * r2) / det, T(0), T(1));
+        t = std::clamp((a11 * r2 - a12 * r1) / det, T(0), T(1));
+    }
+    return {a.u0 + s * (a.u1 - a.u0), b.u0 + t * (b.u1 - b.u0)};
+}
+
+// Whether every hodograph control point of s (B1 - B0, B2 - B1, B3 - B2) is
+// within 75 degrees of one direction d (the chord, or the bisector of the
+// end tangents) and ahead along it by more than 1e-6 of their total
+// length. Then C'(u) . d > 0 on [0, 1], so C is one to one: no loop and no
+// fold. The margins keep analyze_segment's rounding-level decisions from
+// seeing one either: its fold test needs the speed along the segment's line
+// below zero by more than its threshold (here C' . d >= |C'| / 4 along d),
+// and its loop test a divided difference (C(t) - C(s)) / (t - s) below 1e-8
+// of |c1| + |c2| + |c3| (here at least 3e-6 / 7 of it).
+template <std::size_t D, class T>
+bool monotone_segment(const cubic_segment<D, T>& s) {
+    const std::array<vec<D, T>, 3> h{s.c1 / T(3), (s.c1 + s.c2) / T(3), (s.c1 + T(2) * s.c2 + T(3) * s.c3) / T(3)};
+    const std::array<T, 3> nh{norm(h[0]), norm(h[1]), norm(h[2])};
+    const T total = nh[0] + nh[1] + nh[2];
+    const auto ahead = [&](const vec<D, T>& d) {
+        const T nd = norm(d);
+        if (!(nd > 0)) return false;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const T along = dot(h[k], d) / nd;
+            if (!(along >= nh[k] / 4) || !(along > T(1e-6) * total)) return false;
+        }
+        return true;
+    };
+    return ahead(s.c1 + s.c2 + s.c3) || (nh[0] > 0 && nh[2] > 0 && ahead(h[0] / nh[0] + h[2] / nh[2]));
+}
+
+/// What segment_pair_meetings uses and returns, kept across the pairs of a
+/// whole-curve search so that no pair allocates: the subdivision's stack
+/// and the meetings found; and the choice of the transversal shortcut (a
+/// seam for the tests, which compare the search with it and without it)
+/// with the count of cells it closed.
+template <std::size_t D, class T>
+struct pair_workspace {
+    struct cell {
+        sub_bezier<D, T> a, b;
+        T try_below;  // attempt the transversal shortcut only at cells smaller than this
+    };
+    std::vector<cell> stack;
+    std::vector<std::array<T, 3>> found;
+    bool shortcut = true;
+    std::size_t shortcuts = 0;  // cells closed by the shortcut, over every pair searched with this workspace
+};
+
+/// Meetings of segments A and B closer than tol (the per-pair step of
+/// find_intersections), into work.found: Bézier subdivision with
+/// rejection by boxes and across chords, then a polish. Everything is relative to A's origin, so a
+/// curve far from the origin of coordinates is searched as precisely as one
+/// near it. Excludes the shared joint of adjacent segments. Each meeting is
+/// {u, v, distance}; sets complete = false when the budget of sub-pair
+/// visits runs out (overlapping collinear pieces meet in a continuum).
+///
+/// The common crossing is found without subdividing down to the tolerance:
+/// a cell whose pieces are transversal (above) meets at most once, so one
+/// polish from where the chords meet finds that meeting; when it lands in
+/// the cell, within tol and off the joint, the cell is done (a leaf of the
+/// cell that the subdivision would have reached holds points within about
+/// tol of each other, so near that one meeting, and its polish would
+/// converge to it: a duplicate).
+/// Otherwise the cell is split as before, the shortcut tried again only
+/// three levels further down.
+template <std::size_t D, class T>
+void segment_pair_meetings(const cubic_segment<D, T>& A, const cubic_segment<D, T>& B, pair_joint joint, T tol,
+                           bool& complete, pair_workspace<D, T>& work, std::size_t budget = 200000) {
     using point = vec<D, T>;
     using sub = sub_bezier<D, T>;
     const bool adjacent = joint != pair_joint::none, next = joint == pair_joint::next;
@@ -182,12 +327,26 @@ std::vector<std::array<T, 3>> segment_pair_meetings(const cubic_segment<D, T>& A
         if (!(norm(tangent) > 0)) tangent = S.du(T(0), 2);  // zero speed at the joint
         if (!(norm(tangent) > 0)) tangent = b[3] - b[0];
     }
-    std::vector<std::pair<sub, sub>> stack{{sub{ba0, T(0), T(1)}, sub{bb0, T(0), T(1)}}};
-    std::vector<std::array<T, 3>> found;
+    auto& stack = work.stack;
+    auto& found = work.found;
+    stack.clear();
+    found.clear();
+    stack.push_back({sub{ba0, T(0), T(1)}, sub{bb0, T(0), T(1)}, std::numeric_limits<T>::infinity()});
+    // Keeps r unless it repeats a meeting already found.
+    const auto keep = [&](const std::array<T, 3>& r) {
+        for (const auto& f : found)
+            if ((std::abs(f[0] - r[0]) < T(1e-7) && std::abs(f[1] - r[1]) < T(1e-7)) ||
+                norm(relative_at(A, f[0]) - relative_at(A, r[0])) <= 2 * tol)
+                return;
+        found.push_back(r);
+    };
+    const auto at_joint = [&](const std::array<T, 3>& r) {
+        return adjacent && std::abs(r[0] - ju) < T(1e-6) && std::abs(r[1] - jv) < T(1e-6);
+    };
     std::size_t visits = 0;
     while (!stack.empty()) {
         if (++visits > budget) { complete = false; break; }
-        auto [a, b] = stack.back();
+        const auto [a, b, try_below] = stack.back();
         stack.pop_back();
         const auto ba = box_of(a.b), bb = box_of(b.b);
         if (!boxes_meet(ba, bb, tol)) continue;
@@ -198,6 +357,8 @@ std::vector<std::array<T, 3>> segment_pair_meetings(const cubic_segment<D, T>& A
             const point d = next ? tangent : -tangent;  // direction of travel i -> j through the joint
             if (monotone_along(a.b, d) && monotone_along(b.b, d)) continue;
             if (!next && monotone_along(a.b, tangent) && monotone_along(b.b, tangent)) continue;
+        } else if (apart_across(a.b, b.b, tol) || apart_across(b.b, a.b, tol)) {
+            continue;  // more than tol apart across one of the chords
         }
         const T sa = norm(ba[1] - ba[0]), sb = norm(bb[1] - bb[0]);
         const bool leaf = (sa <= tol && sb <= tol) || (a.u1 - a.u0 < T(1e-12) && b.u1 - b.u0 < T(1e-12));
@@ -205,28 +366,51 @@ std::vector<std::array<T, 3>> segment_pair_meetings(const cubic_segment<D, T>& A
             if (corner) continue;  // the joint itself
             const auto r = polish(A, B, (a.u0 + a.u1) / 2, (b.u0 + b.u1) / 2);
             if (!(r[2] <= tol)) continue;
-            // Not the joint (polish can slide into it).
-            if (adjacent && std::abs(r[0] - ju) < T(1e-6) && std::abs(r[1] - jv) < T(1e-6)) continue;
-            bool dup = false;
-            for (const auto& f : found)
-                if ((std::abs(f[0] - r[0]) < T(1e-7) && std::abs(f[1] - r[1]) < T(1e-7)) ||
-                    norm(relative_at(A, f[0]) - relative_at(A, r[0])) <= 2 * tol)
-                    dup = true;
-            if (!dup) found.push_back(r);
+            if (at_joint(r)) continue;  // not the joint (polish can slide into it)
+            keep(r);
             continue;
+        }
+        T below = try_below;
+        if (work.shortcut && !corner && sa + sb < try_below) {
+            if (transversal(a.b, b.b)) {
+                const auto s = chord_meeting(a, b);
+                const auto r = polish(A, B, s[0], s[1]);
+                // In the cell, and inside both segments: a meeting at a
+                // segment's end (the polish held at u or v = 0 or 1, as
+                // where a crossing lies just past it, on the next segment)
+                // is left to the leaves, as before.
+                const bool inside = a.u0 <= r[0] && r[0] <= a.u1 && b.u0 <= r[1] && r[1] <= b.u1 && r[0] > 0 &&
+                                    r[0] < 1 && r[1] > 0 && r[1] < 1;
+                if (r[2] <= tol && inside && !at_joint(r)) {
+                    ++work.shortcuts;
+                    keep(r);
+                    continue;
+                }
+            }
+            below = (sa + sb) / 8;
         }
         // Split the larger piece (both when similar).
         if (sa >= sb) {
             const auto h = split_half(a);
-            stack.push_back({h[0], b});
-            stack.push_back({h[1], b});
+            stack.push_back({h[0], b, below});
+            stack.push_back({h[1], b, below});
         } else {
             const auto h = split_half(b);
-            stack.push_back({a, h[0]});
-            stack.push_back({a, h[1]});
+            stack.push_back({a, h[0], below});
+            stack.push_back({a, h[1], below});
         }
     }
-    return found;
+}
+
+/// segment_pair_meetings with a workspace of its own: the meetings,
+/// {u, v, distance} each.
+template <std::size_t D, class T>
+std::vector<std::array<T, 3>> segment_pair_meetings(const cubic_segment<D, T>& A, const cubic_segment<D, T>& B,
+                                                    pair_joint joint, T tol, bool& complete,
+                                                    std::size_t budget = 200000) {
+    pair_workspace<D, T> work;
+    segment_pair_meetings(A, B, joint, tol, complete, work, budget);
+    return std::move(work.found);
 }
 
 // Distance from A(u) to B near B(v): Newton on |A(u) - B(v)|^2 in v from
@@ -377,8 +561,10 @@ bool visit_intersections_among(const catmull_rom<D, T>& c, T tolerance, const Pa
     const T tol = tolerance > 0 ? tolerance : T(default_intersection_tolerance) * scale;
     if (!(scale > 0)) return complete;
 
-    // Within segments: exact.
+    // Within segments: exact (a segment monotone along a direction has
+    // neither a loop nor a fold, and is not analysed).
     for (std::size_t i = 0; i < n; ++i) {
+        if (detail::monotone_segment(c.segment(i))) continue;
         const auto a = analyze_segment(c.segment(i));
         if (a.fold) visit.fold(i);
         for (const auto& [u, v] : a.self_intersection)
@@ -390,6 +576,7 @@ bool visit_intersections_among(const catmull_rom<D, T>& c, T tolerance, const Pa
     // per-pair search below is relative and exact to the tolerance).
     const T pad = tol + T(8) * std::numeric_limits<T>::epsilon() * std::max(max_abs(lo), max_abs(hi));
     const pair_rows candidates = candidate_pairs(boxes, pad);
+    detail::pair_workspace<D, T> work;
     for (std::size_t i = 0; i < n; ++i)
         for (const std::size_t j : candidates.row(i)) {
             if (!detail::boxes_meet(boxes[i], boxes[j], pad)) continue;
@@ -404,7 +591,8 @@ bool visit_intersections_among(const catmull_rom<D, T>& c, T tolerance, const Pa
             const auto joint = next ? detail::pair_joint::next : wrap ? detail::pair_joint::wrap : detail::pair_joint::none;
             const auto& A = c.segment(i);
             const auto& B = c.segment(j);
-            auto found = detail::segment_pair_meetings(A, B, joint, tol, complete);
+            detail::segment_pair_meetings(A, B, joint, tol, complete, work);
+            auto& found = work.found;
             for (const auto& r : detail::take_overlaps(A, B, tol, found))
                 visit(curve_overlap<D, T>{{i, j}, {r[0], r[1]}, {r[2], r[3]}});
             for (const auto& f : found) visit(curve_intersection<D, T>{{i, j}, {f[0], f[1]}, A.at(f[0]), f[2]});
