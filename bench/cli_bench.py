@@ -10,6 +10,12 @@ os.wait4 (getrusage of the child): wall time, user and system CPU time, and
 peak resident memory (ru_maxrss). The baseline is reading the file
 (`cat FILE > /dev/null`, same measurement). Standard library only.
 Output goes to a temporary file (-o), as a user's would.
+
+Then the ratio of issue 26: `analyze --summary` (the intersection search,
+counts only) against `analyze --no-intersections` (the same analysis and
+certificate without the search), run back to back RATIO_RUNS times so that
+both sides of each ratio see the same load; the ratios of wall and of CPU
+time go to "ratios" and to stderr, with the goal (<= 2) and the median.
 """
 import json
 import math
@@ -35,6 +41,11 @@ CASES = [
 PER_POINT_OUTPUT = {"eval --t 0", "sample --tolerance 0.1", "analyze"}
 GOAL_BYTES_PER_POINT = 150
 TIMEOUT_S = float(os.environ.get("CLI_BENCH_TIMEOUT", 300))  # seconds per command
+# The search's cost: --summary over --no-intersections, each pair back to back.
+RATIO_CASES = (("analyze --summary", ["analyze", "--summary"]),
+               ("analyze --no-intersections", ["analyze", "--no-intersections"]))
+RATIO_RUNS = 3
+RATIO_GOAL = 2.0
 
 
 def write_walk(path, n, seed=20240601):
@@ -81,6 +92,33 @@ def measure(argv):
     }
 
 
+def search_ratios(exe, csv, sink):
+    """RATIO_RUNS pairs of RATIO_CASES, back to back: each pair's ratio of
+    wall time and of user + sys CPU time, and their medians."""
+    (num_name, num_args), (den_name, den_args) = RATIO_CASES
+    runs = []
+    for k in range(RATIO_RUNS):
+        num = measure([exe] + num_args + [csv, "-o", sink])
+        den = measure([exe] + den_args + [csv, "-o", sink])
+        if num.get("timed_out") or den.get("timed_out") or num["exit"] or den["exit"]:
+            runs.append({num_name: num, den_name: den, "ratio_wall": None, "ratio_cpu": None})
+            print(f"ratio run {k}: not measured ({num_name}: {num}, {den_name}: {den})", file=sys.stderr)
+            continue
+        wall = num["wall_s"] / den["wall_s"]
+        cpu = (num["user_s"] + num["sys_s"]) / (den["user_s"] + den["sys_s"])
+        runs.append({num_name: num, den_name: den, "ratio_wall": wall, "ratio_cpu": cpu})
+        print(f"ratio run {k}: {num_name} {num['wall_s']:.2f} s, {den_name} {den['wall_s']:.2f} s wall: "
+              f"{wall:.2f}x wall, {cpu:.2f}x CPU (goal <= {RATIO_GOAL})", file=sys.stderr)
+    walls = sorted(r["ratio_wall"] for r in runs if r["ratio_wall"] is not None)
+    cpus = sorted(r["ratio_cpu"] for r in runs if r["ratio_cpu"] is not None)
+    median = (lambda v: v[len(v) // 2] if v else None)
+    out = {"of": [num_name, den_name], "goal": RATIO_GOAL, "runs": runs,
+           "median_wall": median(walls), "median_cpu": median(cpus)}
+    print(f"{num_name} / {den_name}: median {out['median_wall']} wall, {out['median_cpu']} CPU over "
+          f"{len(walls)} of {RATIO_RUNS} runs (goal <= {RATIO_GOAL})", file=sys.stderr)
+    return out
+
+
 def main():
     exe = os.path.abspath(sys.argv[1])
     out_json = sys.argv[2]
@@ -99,6 +137,7 @@ def main():
             r["output_bytes"] = os.path.getsize(sink) if os.path.exists(sink) else 0
             results["cases"][name] = r
             print(f"{name}: {json.dumps(r)}", file=sys.stderr)
+        results["ratios"] = search_ratios(exe, csv, sink)
     with open(out_json, "w") as f:
         json.dump(results, f, indent=1)
 
