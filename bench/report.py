@@ -147,6 +147,12 @@ def cli_table(path, p):
         goal_text = ", ".join(goals) if goals else "(info: prints per-point output)"
         p(f"| `{name}` | {r['wall_s']:.2f} s | {cpu:.2f} s | {r['peak_rss_bytes'] / 1e6:.0f} MB | {bpp:.0f} B "
           f"| {goal_text} | {status} |")
+    ratios = cli.get("ratios")  # issue 26: the search's cost, pairs run back to back
+    if ratios and ratios.get("median_wall") is not None:
+        each = ", ".join(f"{r['ratio_wall']:.2f}" for r in ratios["runs"] if r["ratio_wall"] is not None)
+        met = "met" if ratios["median_wall"] <= ratios["goal"] else "MISSED"
+        p(f"\n`{ratios['of'][0]}` / `{ratios['of'][1]}`, back to back: {each} (wall; median "
+          f"{ratios['median_wall']:.2f}, CPU {ratios['median_cpu']:.2f}); goal <= {ratios['goal']}: {met}.")
 
 
 GOAL_BPP = 150
