@@ -5,8 +5,9 @@
 // Inputs: a 2-D Archimedean spiral (chords of about 1, 4 apart between
 // turns, starting at radius 10), which is intersection-free and certified,
 // so the certificate runs all three rules to the end and the search finds
-// nothing (k = 0); a 2-D zigzag and the 3-D random walk of the other cases
-// (bench/walk.hpp) for find_intersections at 10^5 points. Each case reports
+// nothing (k = 0); a 2-D zigzag, the 3-D random walk of the other cases
+// (bench/walk.hpp) and its 2-D projection for find_intersections at 10^5
+// points. Each case reports
 // items_per_second in segments, and what it found as counters.
 #include <crspline/catmull_rom.hpp>
 #include <crspline/certify.hpp>
@@ -96,6 +97,16 @@ void find_walk(benchmark::State& state) {
     run_find(state, c);
 }
 
+/// The walk seen from above (x, y): about one crossing per segment, most of
+/// them transversal (issue 26: the case of crspline analyze --summary).
+void find_walk2d(benchmark::State& state) {
+    const auto w = crspline_bench::walk(std::size_t(state.range(0)) + 1);
+    std::vector<crspline::vec<2, double>> p(w.size());
+    for (std::size_t i = 0; i < w.size(); ++i) p[i] = {{w[i][0], w[i][1]}};
+    const curve2 c(p);
+    run_find(state, c);
+}
+
 }  // namespace
 
 BENCHMARK(certify)->Name("certify")->Arg(1000)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
@@ -108,3 +119,4 @@ BENCHMARK(find_spiral)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(find_zigzag)->Name("find_intersections_zigzag")->Arg(100'000)->Unit(benchmark::kMillisecond);
 BENCHMARK(find_walk)->Name("find_intersections_walk")->Arg(100'000)->Unit(benchmark::kMillisecond);
+BENCHMARK(find_walk2d)->Name("find_intersections_walk2d")->Arg(100'000)->Unit(benchmark::kMillisecond);
