@@ -6,8 +6,9 @@ splines.quaternion where it is installed (goal: at least 1000x).
 
     PYTHONPATH=build/release/python /usr/bin/python3 bench/rotation_bench.py [--samples N] [--reps R] [--out FILE.json]
 
-Prints a table and, with --out, writes the medians as JSON. Timings on a
-loaded machine are not figures: BENCHMARKS.md records the run that made them.
+Prints a table and, with --out, writes the medians (process CPU time) as
+JSON. Timings on a loaded machine are not figures: BENCHMARKS.md records the
+run that made them.
 
     python3 bench/rotation_bench.py --cpp RESULTS.json
 
@@ -40,11 +41,14 @@ def random_keys(n, seed=28):
 
 
 def best_of(reps, fn):
+    """Median over reps of the process's CPU time (user + system) for fn():
+    on a machine loaded by others, wall time counts their turns too. Both
+    sides run on one thread (crspline releases the GIL but does not fan out)."""
     times = []
     for _ in range(reps):
-        t0 = time.perf_counter()
+        t0 = time.process_time()
         fn()
-        times.append(time.perf_counter() - t0)
+        times.append(time.process_time() - t0)
     return statistics.median(times)
 
 
