@@ -380,6 +380,37 @@ TEST(GeoSmooth, ProgressIsReportedInOrder) {
     EXPECT_EQ(r.output.xy, plain.output.xy);
 }
 
+// The proof's candidate pairs of arcs (a grid of cells) are exactly the
+// pairs whose padded boxes meet, against the brute force: seeded boxes,
+// some large (tested against every arc), some points, some on cell edges.
+TEST(GeoSmooth, ArcPairsAreEveryPairWhoseBoxesMeet) {
+    CRSPLINE_SEEDED(seed, 31);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::size_t pairs = 0;
+    for (int rep = 0; rep < 60; ++rep) {
+        std::vector<geo::detail::arc_work> arcs(2 + rng() % 150);
+        for (auto& a : arcs) {
+            double x = 100 * u(rng), y = 100 * u(rng);
+            if (rep % 3 == 0) x = std::round(x), y = std::round(y);
+            const double w = rng() % 10 == 0 ? 80 * u(rng) : rng() % 5 == 0 ? 0.0 : 5 * u(rng);
+            const double h = rng() % 7 == 0 ? 0.0 : 2 * w * u(rng);
+            a.bounds = box<2>{P{{x, y}}, P{{x + w, y + h}}};
+        }
+        const geo::smooth_options opt{.tolerance = 1};
+        const double slack = rep % 2 ? 0.0 : 0.01;
+        const geo::detail::proof pr(arcs, opt, slack);
+        std::vector<std::uint64_t> want;
+        for (std::uint32_t i = 0; i < arcs.size(); ++i)
+            for (std::uint32_t j = i + 1; j < arcs.size(); ++j)
+                if (geo::detail::boxes_meet(arcs[i].bounds, arcs[j].bounds, slack))
+                    want.push_back((std::uint64_t(i) << 32) | j);
+        EXPECT_EQ(pr.arc_pairs(), want) << "rep " << rep;
+        pairs += want.size();
+    }
+    EXPECT_GT(pairs, 5000u);
+}
+
 TEST(GeoSmooth, StatusesNameTheProblemAndPassThrough) {
     geo::layer l;
     l.extra_dims = 1;

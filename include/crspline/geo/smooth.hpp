@@ -746,6 +746,69 @@ struct proof {
         }
     }
 
+    // The pairs of arcs (i < j, as (i << 32) | j, sorted) whose boxes come
+    // within the slack: each arc in the cells of a uniform grid its padded
+    // box covers (cells the size of the mean box), a pair reported by the
+    // cell holding the low corner of the two boxes' overlap; arcs covering
+    // more than 16 cells each way are tested against every arc instead.
+    // (A sweep along x alone looked at every pair in a column of a grid
+    // layout: n sqrt(n).)
+    std::vector<std::uint64_t> arc_pairs() const {
+        const std::size_t n = arcs.size();
+        std::vector<std::uint64_t> out;
+        if (n < 2) return out;
+        double w = 0, h = 0, x0 = INFINITY, y0 = INFINITY;
+        for (const auto& a : arcs) {
+            w += a.bounds.hi[0] - a.bounds.lo[0];
+            h += a.bounds.hi[1] - a.bounds.lo[1];
+            x0 = std::min(x0, a.bounds.lo[0]);
+            y0 = std::min(y0, a.bounds.lo[1]);
+        }
+        const double cell = std::max({w / double(n), h / double(n), 64 * slack, 1e-300});
+        auto index = [&](double v, double origin) { return std::int64_t(std::floor((v - origin) / cell)); };
+        constexpr std::int64_t big = 16;
+        std::vector<std::pair<std::uint64_t, std::uint32_t>> cells;  // (cell key, arc)
+        std::vector<std::uint32_t> large;
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const auto& b = arcs[i].bounds;
+            const std::int64_t cx0 = index(b.lo[0] - slack, x0), cx1 = index(b.hi[0] + slack, x0);
+            const std::int64_t cy0 = index(b.lo[1] - slack, y0), cy1 = index(b.hi[1] + slack, y0);
+            if (cx1 - cx0 >= big || cy1 - cy0 >= big) {
+                large.push_back(i);
+                continue;
+            }
+            for (std::int64_t cx = cx0; cx <= cx1; ++cx)
+                for (std::int64_t cy = cy0; cy <= cy1; ++cy)
+                    cells.push_back({(std::uint64_t(cx + (1 << 30)) << 32) | std::uint64_t(cy + (1 << 30)), i});
+        }
+        std::sort(cells.begin(), cells.end());
+        for (std::size_t g = 0; g < cells.size();) {
+            std::size_t e = g;
+            while (e < cells.size() && cells[e].first == cells[g].first) ++e;
+            for (std::size_t p = g; p < e; ++p)
+                for (std::size_t q = p + 1; q < e; ++q) {
+                    const std::uint32_t i = std::min(cells[p].second, cells[q].second),
+                                        j = std::max(cells[p].second, cells[q].second);
+                    const auto &bi = arcs[i].bounds, &bj = arcs[j].bounds;
+                    if (!boxes_meet(bi, bj, slack)) continue;
+                    // Once: in the cell of the overlap's low corner.
+                    const std::int64_t cx = index(std::max(bi.lo[0], bj.lo[0]) - slack, x0);
+                    const std::int64_t cy = index(std::max(bi.lo[1], bj.lo[1]) - slack, y0);
+                    if (((std::uint64_t(cx + (1 << 30)) << 32) | std::uint64_t(cy + (1 << 30))) != cells[g].first) continue;
+                    out.push_back((std::uint64_t(i) << 32) | j);
+                }
+            g = e;
+        }
+        std::vector<std::uint8_t> is_large(n, 0);
+        for (std::uint32_t i : large) is_large[i] = 1;
+        for (std::uint32_t i : large)
+            for (std::uint32_t j = 0; j < n; ++j)
+                if (j != i && !(is_large[j] && j < i) && boxes_meet(arcs[i].bounds, arcs[j].bounds, slack))
+                    out.push_back((std::uint64_t(std::min(i, j)) << 32) | std::max(i, j));
+        std::sort(out.begin(), out.end());
+        return out;
+    }
+
     // Rounds: rebuild the dirty arcs, prove the pairs that involve one,
     // raise tension where a proof failed; until every pair is proved.
     // Pairs of clean arcs keep the record of the round that proved them.
@@ -757,7 +820,6 @@ struct proof {
             return;
         }
         std::vector<std::pair<std::uint64_t, proof_record>> previous;
-        std::vector<std::uint32_t> order(n);
         std::vector<std::uint8_t> dirty(n);
         constexpr std::size_t max_rounds = 64;
         for (std::size_t round = 1;; ++round) {
@@ -773,28 +835,18 @@ struct proof {
             if (opt.preserve_topology) {
                 for (std::uint32_t i = 0; i < n; ++i)
                     if (dirty[i]) self[i] = prove_arcs(i, i);
-                // Pairs of arcs whose boxes meet: a sweep along x.
+                // Pairs of arcs whose boxes meet (arc_pairs: a grid).
                 previous.swap(across);
                 across.clear();
-                for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
-                std::sort(order.begin(), order.end(),
-                          [&](std::uint32_t x, std::uint32_t y) { return arcs[x].bounds.lo[0] < arcs[y].bounds.lo[0]; });
-                for (std::size_t p = 0; p < n; ++p) {
-                    const std::uint32_t i = order[p];
-                    for (std::size_t q = p + 1; q < n; ++q) {
-                        const std::uint32_t j = order[q];
-                        if (arcs[j].bounds.lo[0] > arcs[i].bounds.hi[0] + slack) break;
-                        if (!boxes_meet(arcs[i].bounds, arcs[j].bounds, slack)) continue;
-                        const std::uint64_t key = (std::uint64_t(std::min(i, j)) << 32) | std::max(i, j);
-                        if (dirty[i] || dirty[j]) {
-                            across.push_back({key, prove_arcs(std::min(i, j), std::max(i, j))});
-                        } else {
-                            // Unchanged since the round that proved them.
-                            auto it = std::lower_bound(previous.begin(), previous.end(), key,
-                                                       [](const auto& e, std::uint64_t k) { return e.first < k; });
-                            across.push_back({key, it != previous.end() && it->first == key ? it->second
-                                                                                           : prove_arcs(std::min(i, j), std::max(i, j))});
-                        }
+                for (const std::uint64_t key : arc_pairs()) {
+                    const auto i = std::uint32_t(key >> 32), j = std::uint32_t(key & 0xffffffffu);
+                    if (dirty[i] || dirty[j]) {
+                        across.push_back({key, prove_arcs(i, j)});
+                    } else {
+                        // Unchanged since the round that proved them.
+                        auto it = std::lower_bound(previous.begin(), previous.end(), key,
+                                                   [](const auto& e, std::uint64_t k) { return e.first < k; });
+                        across.push_back({key, it != previous.end() && it->first == key ? it->second : prove_arcs(i, j)});
                     }
                 }
                 std::sort(across.begin(), across.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
