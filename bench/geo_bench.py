@@ -97,7 +97,10 @@ def rate(n, cpu, wall):
             "wall_lines_per_s": n / wall}
 
 
-def bench_core(n, reps, tolerance):
+CORE_ROWS = (("smooth", True, True), ("measure", True, False), ("length", False, False))
+
+
+def bench_core(n, reps, tolerance, rows_wanted=("smooth", "measure", "length")):
     from crspline import _crspline
 
     xy, offsets = random_layer(n)
@@ -106,7 +109,10 @@ def bench_core(n, reps, tolerance):
     features = np.arange(n, dtype=np.int64)
     ok = _crspline._geo_statuses.index("ok")
     rows = {}
-    for name, preserve, polylines in (("smooth", True, True), ("measure", True, False), ("length", False, False)):
+    for name, preserve, polylines in CORE_ROWS:
+        if name not in rows_wanted:
+            continue
+
         def run():
             return _crspline._geo_smooth(xy, z, offsets, kinds, features, n, 0.5, tolerance, None, preserve, None,
                                          polylines=polylines)
@@ -175,6 +181,8 @@ def main():
     ap.add_argument("--reps", type=int, default=3)
     ap.add_argument("--tolerance", type=float, default=0.01)
     ap.add_argument("--dask-lines", type=int, default=10000)
+    ap.add_argument("--rows", default="smooth,measure,length",
+                    help="core rows to time (10^6 lines of smooth need about 16 GB: see BENCHMARKS.md)")
     ap.add_argument("--out")
     ap.add_argument("--smoke", action="store_true", help="tiny sizes, one rep: checks the script runs")
     args = ap.parse_args()
@@ -189,14 +197,14 @@ def main():
           "wall-clock lines/s in brackets")
     print(f"{'lines':>9} {'vertices':>10} {'smooth':>22} {'measure':>22} {'length':>22} {'peak MB':>8}")
     for n in sizes:
-        r = bench_core(n, reps, args.tolerance)
+        r = bench_core(n, reps, args.tolerance, args.rows.split(","))
         results["core"].append(r)
         cells = [f"{r[k]['lines_per_s']:>8.0f} {r[k]['us_per_line']:>6.1f} [{r[k]['wall_lines_per_s']:>6.0f}]"
-                 for k in ("smooth", "measure", "length")]
+                 if k in r else "-" for k in ("smooth", "measure", "length")]
         print(f"{n:>9} {r['vertices']:>10} {cells[0]:>22} {cells[1]:>22} {cells[2]:>22} {r['peak_rss_mb']:>8.0f}",
               flush=True)
     if len(results["core"]) > 1:
-        for k in ("smooth", "measure", "length"):
+        for k in args.rows.split(","):
             us = [r[k]["us_per_line"] for r in results["core"]]
             print(f"  {k}: time per line from {sizes[0]} to {sizes[-1]} lines: x{us[-1] / us[0]:.2f}")
     if frame_sizes:

@@ -59,16 +59,19 @@ cp "$results/cpp-$stamp.json" "$results/cpu/$cpu/cpp.json"
 echo
 { "$build/crspline_construct_rusage"; "$build/crspline_construct_rusage_4k"; } | tee "$results/latest-construct.md"
 cp "$results/latest-construct.md" "$results/cpu/$cpu/construct.md"
-# GIS (issue 29): crspline.geo's lines per second per core at 10^4, 10^5
-# and 10^6 lines (bench/geo_bench.py; the Python module in the tree that
-# ./run bench's Python step uses too). GEO_SIZES overrides the sizes.
+# GIS (issue 29): crspline.geo's lines per second per core at 10^4 and
+# 10^5 lines, and the lengths alone at 10^6 (smoothing 10^6 lines in one
+# call needs about 16 GB; bench/geo_bench.py; the Python module in the tree
+# that ./run bench's Python step uses too). GEO_SIZES overrides the sizes.
 py_build="${PY_BUILD:-build/bench-python}"
 cmake -S . -B "$py_build" -DCMAKE_BUILD_TYPE=Release -DCRSPLINE_BUILD_PYTHON=ON -DCRSPLINE_BUILD_TESTS=OFF \
     -DCRSPLINE_BUILD_EXAMPLES=OFF -DPython_EXECUTABLE=/usr/bin/python3 >/dev/null
 cmake --build "$py_build" -j2 --target _crspline
 echo
-PYTHONPATH="$py_build/python" /usr/bin/python3 bench/geo_bench.py --sizes "${GEO_SIZES:-10000,100000,1000000}" \
+PYTHONPATH="$py_build/python" /usr/bin/python3 bench/geo_bench.py --sizes "${GEO_SIZES:-10000,100000}" \
     --out "$results/geo-$stamp.json" | tee "$results/latest-geo.txt"
+PYTHONPATH="$py_build/python" /usr/bin/python3 bench/geo_bench.py --sizes 1000000 --rows length --frame-sizes "" \
+    --dask-lines 0 --reps 1 --out "$results/geo-1e6-$stamp.json" | tee -a "$results/latest-geo.txt"
 # Instruction counts (callgrind): stable where the times above are not.
 if [[ -x "$build/crspline_instructions" ]] && command -v valgrind >/dev/null; then
     echo
