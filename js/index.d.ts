@@ -191,7 +191,7 @@ export interface DecisionOptions {
   recordPairs?: boolean;
 }
 
-/** The decision, as the report writes it under "decision" (docs/analysis.md, docs/report.md). */
+/** The decision (docs/report.md, "The decision object"; what each verdict guarantees: docs/analysis.md). */
 export interface Decision {
   verdict: Verdict;
   fast_path: boolean;

@@ -165,6 +165,7 @@ struct decision_options {
     std::size_t budget = 0;            ///< visits in all before every remaining pair is a contact (0: 2^24 or 256 per piece, the larger)
     std::size_t pair_budget = 1u << 17;  ///< visits for one pair of pieces (an overlap or a near tangency)
     bool record_pairs = true;          ///< fill decision::pairs
+    bool first_crossing = false;       ///< stop at the first proved crossing: the same verdict, the lists partial (and in the box tree's order)
 };
 
 struct decision {
@@ -205,14 +206,23 @@ struct decision_engine {
     };
     using ipoint = std::array<interval, 2>;
 
-    std::vector<std::span<const std::array<P, 4>>> curves;
+    // A curve's segments: Bézier points given, or made by the curve itself
+    // when asked (catmull_rom::bezier(i), the same doubles as bezier()),
+    // which keeps no copy of them.
+    struct source {
+        std::span<const std::array<P, 4>> given;
+        const catmull_rom<2>* curve = nullptr;
+        std::size_t size() const { return curve ? curve->segment_count() : given.size(); }
+        std::array<P, 4> operator[](std::size_t s) const { return curve ? curve->bezier(s) : given[s]; }
+    };
+    std::vector<source> curves;
     std::vector<bool> closed;
     P ref{};
     double M = 0, floor = 0;
     std::vector<piece> pieces;
     std::vector<std::size_t> first_piece;  // per curve, and one past the end
     decision out;
-    bool record_pairs = true;
+    bool record_pairs = true, first_crossing = false;
     // The arguments of each pair of segments, as (key, flags) items that
     // run() merges at the end (a pair decided in several piece pairs has
     // several items).
@@ -717,19 +727,22 @@ struct decision_engine {
         // 1. The reference point and the bound M (the enclosures of the
         // relative control points are made when Krawczyk's test needs them).
         for (const auto& c : curves)
-            if (!c.empty()) { ref = c[0][0]; break; }
+            if (c.size() > 0) { ref = c[0][0]; break; }
         std::size_t segments = 0;
         for (const auto& c : curves) {
             segments += c.size();
-            for (const auto& g : c)
-                for (const auto& x : g) M = std::max({M, std::abs(x[0] - ref[0]), std::abs(x[1] - ref[1])});
+            for (std::size_t s = 0; s < c.size(); ++s)
+                for (const auto& x : c[s]) M = std::max({M, std::abs(x[0] - ref[0]), std::abs(x[1] - ref[1])});
         }
-        pieces.reserve(segments);
+        pieces.reserve(segments + segments / 64 + 16);  // most segments are one monotone piece
         M = std::nextafter(M * (1 + 1e-12), std::numeric_limits<double>::infinity());
         for (std::size_t ci = 0; ci < curves.size(); ++ci) {
             const auto& c = curves[ci];
             const std::size_t n = c.size();
-            auto point_seg = [&](std::size_t s) { return c[s][0] == c[s][1] && c[s][1] == c[s][2] && c[s][2] == c[s][3]; };
+            auto point_seg = [&](std::size_t s) {
+                const auto g = c[s];
+                return g[0] == g[1] && g[1] == g[2] && g[2] == g[3];
+            };
             std::vector<std::size_t> order;
             rank.emplace_back(n, npos);
             next_seg.emplace_back(n, npos);
@@ -801,29 +814,93 @@ struct decision_engine {
 
     void run(bool self, bool between) {
         build();
-        // 3. Candidate pairs: boxes grown by each piece's error and the rounding of the growth.
-        std::vector<box<2, double>> boxes(pieces.size());
-        for (std::size_t k = 0; k < pieces.size(); ++k) {
-            const auto hb = hull_box(pieces[k]);
-            const double g = pieces[k].err + 8 * eps * M;
-            boxes[k].lo = hb[0] - P{{g, g}};
-            boxes[k].hi = hb[1] + P{{g, g}};
-        }
-        std::vector<std::array<std::uint32_t, 2>> cand;
+        // 3. Candidate pairs: the pairs of pieces whose boxes (grown by each
+        // piece's error and the rounding of the growth) meet. The tree holds
+        // runs of `chunk` consecutive pieces under their merged box (a
+        // quarter of the memory of a tree of pieces, for the report's
+        // verdict at 10^6 points); the pieces of two runs that meet, and of
+        // one run, are matched box against box: the same pairs as a tree of
+        // the pieces would give.
         if (pieces.size() > std::numeric_limits<std::uint32_t>::max())
             throw invalid_input("decision: more than 2^32 pieces");
-        box_tree<2, double>(boxes).for_each_meeting_pair(0.0, [&](std::uint32_t i, std::uint32_t j) {
+        constexpr std::size_t chunk = 4;
+        const auto piece_box = [&](std::size_t k) {
+            const auto hb = hull_box(pieces[k]);
+            const double g = pieces[k].err + 8 * eps * M;
+            return box<2, double>{hb[0] - P{{g, g}}, hb[1] + P{{g, g}}};
+        };
+        const std::size_t runs = (pieces.size() + chunk - 1) / chunk;
+        const auto run_of = [&](std::size_t r, std::array<box<2, double>, chunk>& bx) {
+            const std::size_t k0 = r * chunk, k1 = std::min(pieces.size(), k0 + chunk);
+            for (std::size_t k = k0; k < k1; ++k) bx[k - k0] = piece_box(k);
+            return std::array<std::size_t, 2>{k0, k1};
+        };
+        const box_tree<2, double> tree = [&] {
+            std::vector<box<2, double>> boxes(runs);  // the tree keeps its own copy
+            std::array<box<2, double>, chunk> bx;
+            for (std::size_t r = 0; r < runs; ++r) {
+                const auto [k0, k1] = run_of(r, bx);
+                boxes[r] = bx[0];
+                for (std::size_t k = k0 + 1; k < k1; ++k) boxes[r] = merge(boxes[r], bx[k - k0]);
+            }
+            return box_tree<2, double>(boxes);
+        }();
+        const auto for_each_candidate = [&](auto&& f) {
+            std::array<box<2, double>, chunk> bx, by;
+            for (std::size_t r = 0; r < runs; ++r) {
+                const auto [k0, k1] = run_of(r, bx);
+                for (std::size_t k = k0; k < k1; ++k)
+                    for (std::size_t l = k + 1; l < k1; ++l)
+                        if (boxes_meet(bx[k - k0], bx[l - k0], 0.0)) f(std::uint32_t(k), std::uint32_t(l));
+            }
+            tree.for_each_meeting_pair(0.0, [&](std::uint32_t r, std::uint32_t q) {  // r < q: its pieces come first
+                const auto [k0, k1] = run_of(r, bx);
+                const auto [l0, l1] = run_of(q, by);
+                for (std::size_t k = k0; k < k1; ++k)
+                    for (std::size_t l = l0; l < l1; ++l)
+                        if (boxes_meet(bx[k - k0], by[l - l0], 0.0)) f(std::uint32_t(k), std::uint32_t(l));
+            });
+        };
+        const auto wanted = [&](std::uint32_t i, std::uint32_t j) {
             const bool same = pieces[i].curve == pieces[j].curve;
-            if ((same && self) || (!same && between)) cand.push_back({i, j});
-        });
-        std::sort(cand.begin(), cand.end());
-        out.candidate_pairs = cand.size();
-        // 4. Every candidate pair.
-        for (const auto& [i, j] : cand) {
+            return (same && self) || (!same && between);
+        };
+        const auto decide_candidate = [&](std::uint32_t i, std::uint32_t j) {
             const int adj = self ? adjacency(i, j) : 0;
             if (adj == 1) decide_pair(pieces[i], pieces[j], true);
             else if (adj == 2) decide_pair(pieces[j], pieces[i], true);
             else decide_pair(pieces[i], pieces[j], false);
+        };
+        if (first_crossing) {
+            // 4'. The verdict only: each pair as it is met, none
+            // after the first proved crossing, and no list of them held
+            // (the report's verdict at 10^6 points).
+            for_each_candidate([&](std::uint32_t i, std::uint32_t j) {
+                if (!out.crossings.empty() || !wanted(i, j)) return;
+                ++out.candidate_pairs;
+                decide_candidate(i, j);
+            });
+        } else {
+            std::vector<std::array<std::uint32_t, 2>> cand;
+            for_each_candidate([&](std::uint32_t i, std::uint32_t j) {
+                if (wanted(i, j)) cand.push_back({i, j});
+            });
+            // In order of (i, j), whatever the tree's order: counted out by i
+            // (linear), each run sorted by j.
+            {
+                std::vector<std::size_t> start(pieces.size() + 1, 0);
+                for (const auto& c : cand) ++start[c[0] + 1];
+                for (std::size_t k = 0; k < pieces.size(); ++k) start[k + 1] += start[k];
+                std::vector<std::array<std::uint32_t, 2>> by_i(cand.size());
+                std::vector<std::size_t> next(start.begin(), start.end() - 1);
+                for (const auto& c : cand) by_i[next[c[0]]++] = c;
+                for (std::size_t k = 0; k < pieces.size(); ++k)
+                    std::sort(by_i.begin() + std::ptrdiff_t(start[k]), by_i.begin() + std::ptrdiff_t(start[k + 1]));
+                cand.swap(by_i);
+            }
+            out.candidate_pairs = cand.size();
+            // 4. Every candidate pair.
+            for (const auto& [i, j] : cand) decide_candidate(i, j);
         }
         // 5. The verdict.
         std::sort(out.crossings.begin(), out.crossings.end(), [](const proved_crossing& x, const proved_crossing& y) {
@@ -854,16 +931,36 @@ inline void check_path(const bezier_path& c, std::size_t ci) {
     }
 }
 
+inline decision run_engine(decision_engine& e, bool self, bool between, const decision_options& opt);
+
 inline decision decide_paths(std::span<const bezier_path> curves, bool self, bool between, const decision_options& opt) {
     decision_engine e;
     for (std::size_t ci = 0; ci < curves.size(); ++ci) {
         check_path(curves[ci], ci);
-        e.curves.push_back(curves[ci].segments);
+        e.curves.push_back({curves[ci].segments, nullptr});
         e.closed.push_back(curves[ci].closed);
     }
+    return run_engine(e, self, between, opt);
+}
+
+// The same for curves whose Bézier points the engine asks for one segment at
+// a time (valid by construction: finite, consecutive segments sharing their
+// end points exactly).
+inline decision decide_curves(std::span<const catmull_rom<2>* const> curves, bool self, bool between,
+                              const decision_options& opt) {
+    decision_engine e;
+    for (const catmull_rom<2>* c : curves) {
+        e.curves.push_back({{}, c});
+        e.closed.push_back(c->closed());
+    }
+    return run_engine(e, self, between, opt);
+}
+
+inline decision run_engine(decision_engine& e, bool self, bool between, const decision_options& opt) {
     e.budget = opt.budget;
     e.pair_budget = opt.pair_budget;
     e.record_pairs = opt.record_pairs;
+    e.first_crossing = opt.first_crossing;
     e.run(self, between);
     return std::move(e.out);
 }
@@ -889,30 +986,25 @@ inline decision decide(const catmull_rom<2>& c, const decision_options& opt = {}
             return d;
         }
     }
-    const auto b = c.bezier();
-    return decide(bezier_path{b, c.closed()}, opt);
+    const catmull_rom<2>* p[1] = {&c};
+    return detail::decide_curves(p, true, false, opt);
 }
 
 /// Do two curves cross each other? (Each one's own crossings are not
 /// looked for: decide(a) and decide(b) answer that.) curve[0] of each
 /// crossing is 0 for a, 1 for b.
 inline decision decide(const catmull_rom<2>& a, const catmull_rom<2>& b, const decision_options& opt = {}) {
-    const auto ba = a.bezier(), bb = b.bezier();
-    const bezier_path p[2] = {{ba, a.closed()}, {bb, b.closed()}};
-    return detail::decide_paths(p, false, true, opt);
+    const catmull_rom<2>* p[2] = {&a, &b};
+    return detail::decide_curves(p, false, true, opt);
 }
 
 /// Do any two curves of a set cross each other? Every pair of pieces whose
 /// boxes meet is found through one box tree over all the curves' pieces.
 /// With `self`, each curve's own crossings are decided too (no fast path).
 inline decision decide(std::span<const catmull_rom<2>> curves, bool self = false, const decision_options& opt = {}) {
-    std::vector<std::vector<std::array<vec<2>, 4>>> b(curves.size());
-    std::vector<bezier_path> p(curves.size());
-    for (std::size_t i = 0; i < curves.size(); ++i) {
-        b[i] = curves[i].bezier();
-        p[i] = {b[i], curves[i].closed()};
-    }
-    return detail::decide_paths(p, self, true, opt);
+    std::vector<const catmull_rom<2>*> p(curves.size());
+    for (std::size_t i = 0; i < curves.size(); ++i) p[i] = &curves[i];
+    return detail::decide_curves(p, self, true, opt);
 }
 
 
@@ -926,9 +1018,9 @@ inline decision decide(std::span<const catmull_rom<2>> curves, bool self = false
 ///                   "budget_exhausted"}],
 ///      "pairs": [{"curves", "segments", "arguments": ["separation", ...]}]}
 ///
-/// A whole-curve report puts `verdict` at its top and this object under
-/// "decision" (report.hpp's writer calls this: the keys are written here
-/// once).
+/// Every front end's decide() returns this object (its keys written here
+/// once: docs/report.md, "The decision object"); the whole-curve report
+/// carries only its verdict, as "verdict" at its top (report.hpp).
 template <class B>
 typename B::value report_decision(B& b, const decision& d) {
     auto idx2 = [&](const std::array<std::size_t, 2>& a) {

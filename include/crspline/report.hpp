@@ -33,12 +33,14 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "analysis.hpp"
 #include "catmull_rom.hpp"
 #include "certify.hpp"
+#include "decision.hpp"
 #include "intersections.hpp"
 #include "vec.hpp"
 
@@ -65,6 +67,7 @@ struct report_options {
     double tolerance = 0;      ///< for that search (0: default_intersection_tolerance of the curve's size)
     bool certify = true;       ///< certify_intersection_free (the report's certificate)
     double safe_angle = safe_adjacent_angle;  ///< the certificate's rule 2 threshold (radians)
+    bool decide_crossings = true;  ///< the proved decision's verdict (decision.hpp; plane curves, else null)
 };
 
 /// Everything `analyze` reports about a curve: the per-segment analysis, the
@@ -77,7 +80,39 @@ struct analysis_report {
     std::vector<segment_analysis<D, T>> segments;
     std::optional<intersection_result<D, T>> search;  ///< nullopt when not asked for
     std::optional<crspline::certificate<D, T>> certificate;  ///< nullopt when not asked for
+    std::optional<crspline::verdict> verdict;  ///< decide()'s verdict; nullopt when not asked for or not a plane curve
 };
+
+/// The report's "verdict": decision.hpp's proved answer to "does the curve
+/// cross itself?" for a plane curve (a float curve is decided as built: its
+/// Bézier points convert to double exactly), nullopt for other dimensions
+/// or when not asked for. The paper's certificate first; the decision stops
+/// at the first proved crossing (the same verdict as the whole decision,
+/// whose lists the report does not carry: crspline.decide and the demo give
+/// them).
+template <std::size_t D, class T>
+std::optional<verdict> verdict_for_report(const catmull_rom<D, T>& c, const report_options& opt) {
+    if constexpr (D == 2) {
+        if (!opt.decide_crossings) return std::nullopt;
+        decision_options o;
+        o.record_pairs = false;
+        o.first_crossing = true;
+        if constexpr (std::is_same_v<T, double>) {
+            return decide(c, o).result;
+        } else {
+            std::vector<std::array<vec<2>, 4>> b;
+            for (const auto& s : c.bezier()) {
+                std::array<vec<2>, 4> x{};
+                for (std::size_t k = 0; k < 4; ++k) x[k] = {{double(s[k][0]), double(s[k][1])}};
+                b.push_back(x);
+            }
+            return decide(bezier_path{b, c.closed()}, o).result;
+        }
+    } else {
+        (void)c, (void)opt;
+        return std::nullopt;
+    }
+}
 
 /// The report's certificate (nullopt when not asked for): it runs without a
 /// search of its own (the report's search is the curve's); when it fails
@@ -102,6 +137,7 @@ analysis_report<D, T> make_report(const catmull_rom<D, T>& c, const report_optio
                                   std::size_t dimension = D) {
     analysis_report<D, T> r;
     r.dimension = std::min(dimension, D);
+    r.verdict = verdict_for_report(c, opt);
     r.grid.assign(c.grid().begin(), c.grid().end());
     r.segments = analyze(c);
     if (opt.search) r.search = find_intersections(c, T(opt.tolerance));
@@ -360,9 +396,10 @@ struct tree_sink {
 // certificate (nullopt: none), `any` saying whether the search found a
 // meeting (nullopt when it did not run).
 template <report_builder B, class Sink, std::size_t D, class T, class Segments, class Search, class Certify>
-void write_members(B& b, Sink& sink, std::size_t dimension, std::span<const T> grid, Segments&& each_segment,
-                   Search&& search, Certify&& certify) {
+void write_members(B& b, Sink& sink, std::optional<crspline::verdict> verdict, std::size_t dimension,
+                   std::span<const T> grid, Segments&& each_segment, Search&& search, Certify&& certify) {
     report_writer<B> w{b, dimension};
+    sink.member("verdict", verdict ? b.string(to_string(*verdict)) : b.null());
     sink.member("dimension", b.integer(dimension));
     std::vector<T> cusp_t;
     bool loop = false;
@@ -413,14 +450,14 @@ void write_members(B& b, Sink& sink, std::size_t dimension, std::span<const T> g
 
 }  // namespace detail
 
-/// The whole report: {dimension, segments, cusp_t, has_cusp,
+/// The whole report: {verdict, dimension, segments, cusp_t, has_cusp,
 /// has_self_intersection, intersections, overlaps, folds, complete,
 /// certificate}.
 template <report_builder B, std::size_t D, class T>
 typename B::value report(B& b, const analysis_report<D, T>& r) {
     detail::tree_sink<B> sink{b};
     detail::write_members<B, detail::tree_sink<B>, D, T>(
-        b, sink, r.dimension, std::span<const T>(r.grid),
+        b, sink, r.verdict, r.dimension, std::span<const T>(r.grid),
         [&](auto&& f) {
             for (const auto& a : r.segments) f(a);
         },
@@ -448,7 +485,7 @@ void write_report(B& b, Sink& sink, const catmull_rom<D, T>& c, const report_opt
                   std::size_t dimension = D) {
     const std::vector<T> grid(c.grid().begin(), c.grid().end());
     detail::write_members<B, Sink, D, T>(
-        b, sink, std::min(dimension, D), std::span<const T>(grid),
+        b, sink, verdict_for_report(c, opt), std::min(dimension, D), std::span<const T>(grid),
         [&](auto&& f) {
             for (std::size_t i = 0; i < c.segment_count(); ++i) f(analyze(c, i));
         },
@@ -460,12 +497,13 @@ void write_report(B& b, Sink& sink, const catmull_rom<D, T>& c, const report_opt
 }
 
 /// The report's counts instead of its lists, for a curve of any size:
-/// {dimension, segment_count, cusps, loops, intersections, overlaps, folds,
-/// complete, certificate}, the search's counts null when it is not run.
-/// Nothing but counts is kept.
+/// {verdict, dimension, segment_count, cusps, loops, intersections,
+/// overlaps, folds, complete, certificate}, the search's counts null when
+/// it is not run. Nothing but counts is kept.
 template <report_builder B, std::size_t D, class T>
 typename B::value report_summary(B& b, const catmull_rom<D, T>& c, const report_options& opt = {},
                                  std::size_t dimension = D) {
+    const std::optional<crspline::verdict> verdict = verdict_for_report(c, opt);
     std::size_t cusps = 0, loops = 0;
     for (std::size_t i = 0; i < c.segment_count(); ++i) {
         const auto a = analyze(c, i);
@@ -485,6 +523,7 @@ typename B::value report_summary(B& b, const catmull_rom<D, T>& c, const report_
         c, opt, searched ? std::optional<bool>(count.intersections + count.overlaps + count.folds > 0) : std::nullopt);
     detail::report_writer<B> w{b, std::min(dimension, D)};
     typename B::value o = b.object();
+    b.set(o, "verdict", verdict ? b.string(to_string(*verdict)) : b.null());
     b.set(o, "dimension", b.integer(std::min(dimension, D)));
     b.set(o, "segment_count", b.integer(c.segment_count()));
     b.set(o, "cusps", b.integer(cusps));

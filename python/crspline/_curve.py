@@ -372,9 +372,10 @@ class CatmullRom:
         ``crspline analyze`` prints, so ``json.dumps`` writes the CLI's
         report. The schema, field by field: docs/report.md.
 
-        ``{'dimension', 'segments': [...], 'cusp_t', 'has_cusp',
+        ``{'verdict', 'dimension', 'segments': [...], 'cusp_t', 'has_cusp',
         'has_self_intersection', 'intersections', 'overlaps', 'folds',
-        'complete', 'certificate'}``: one dict per segment (cusps, loops and
+        'complete', 'certificate'}``: decide()'s proved verdict ('simple',
+        'crosses' or 'touches'; None for a curve that is not plane), one dict per segment (cusps, loops and
         folds with their local u and global t, chord-frame quantities,
         measured distances, the paper's bounds), the whole-curve search
         (crossings between segments, loops inside one, each with its

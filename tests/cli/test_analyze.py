@@ -62,8 +62,8 @@ LOOP = [[0, 0], [1, 1], [1.1, 1], [2, 0]]
 
 def test_uniform_loop_and_centripetal_certificate():
     uniform = run_json("analyze", {"points": LOOP, "alpha": 0})
-    # The keys of docs/report.md, in its order.
-    assert list(uniform) == ["dimension", "segments", "cusp_t", "has_cusp", "has_self_intersection",
+    # The keys of docs/report.md, in its order ("verdict" first: issue 27).
+    assert list(uniform) == ["verdict", "dimension", "segments", "cusp_t", "has_cusp", "has_self_intersection",
                              "intersections", "overlaps", "folds", "complete", "certificate"]
     assert uniform["complete"] is True
     loops = [s for s in uniform["segments"] if s["self_intersection_u"]]
@@ -127,6 +127,35 @@ def test_given_start_tangent_that_crosses_is_not_certified():
     p = run(["analyze", "--start=10,10", "-"], json.dumps({"points": doc["points"]}))
     assert p.returncode == 0, p.stderr
     assert '"failed_rule":"adjacent_pair"' in p.stdout
+
+
+# --- issue 27, point 5: the proved verdict at the top of the report ---------------------------
+
+
+def test_the_verdict_is_first_and_decides_every_alpha():
+    # The uniform curve loops in its middle segment (crosses); the chordal
+    # one does not, and the certificate cannot say so (not centripetal):
+    # the verdict can. The figure eight crosses at every alpha, searched or
+    # not; a 3-D curve has no verdict (null). tests/analysis/
+    # test_decision_report.cpp checks the verdict against decide() itself,
+    # tests/frontends the CLI's report against Python's decide().
+    want = {0: "crosses", 0.5: "simple", 1: "simple"}
+    for alpha, verdict in want.items():
+        out = run_json("analyze", {"points": LOOP, "alpha": alpha})
+        assert list(out)[0] == "verdict"
+        assert out["verdict"] == verdict, alpha
+    assert run_json("analyze", {"points": LOOP, "alpha": 1})["certificate"]["certified"] is False
+    for alpha in (0, 0.5, 1):
+        for search in (True, False):
+            out = run_json("analyze", {"points": FIGURE_EIGHT, "alpha": alpha, "end": "closed", "search": search})
+            assert out["verdict"] == "crosses", (alpha, search)
+    out = run_json("analyze", {"points": [[0, 0, 0], [1, 1, 0], [2, 0, 1], [0, 0.5, 0]]})
+    assert list(out)[0] == "verdict" and out["verdict"] is None
+    # --summary: the same key, first.
+    p = run(["analyze", "--summary", "--uniform", "-"], json.dumps({"points": LOOP}))
+    assert p.returncode == 0, p.stderr
+    summary = json.loads(p.stdout)
+    assert list(summary)[0] == "verdict" and summary["verdict"] == "crosses"
 
 
 # --- issue 31, point 5: what was not searched for is unknown ---------------------------------

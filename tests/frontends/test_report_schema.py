@@ -65,6 +65,7 @@ def test_the_cases_cover_the_schema():
     assert any(s["bounds"] is None for r in reports for s in r["segments"])
     assert any(s["bounds"] is not None for r in reports for s in r["segments"])
     assert {r["dimension"] for r in reports} >= {1, 2, 3, 7}
+    assert {r["verdict"] for r in reports} == {"simple", "crosses", "touches", None}  # issue 27
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c["name"] for c in CASES])
@@ -84,6 +85,10 @@ def test_cli_and_python_report_the_same_tree(case):
     from_python = python_curve(case["curve"]).analyze()
     assert differences(from_python, from_cli, 0) == []
     assert json.loads(json.dumps(from_python)) == from_python  # plain JSON values only
+    # The verdict at the top (issue 27) is decide()'s, null off the plane.
+    assert list(from_cli)[0] == "verdict"
+    want = crspline.decide(python_curve(case["curve"]))["verdict"] if case["report"]["dimension"] == 2 else None
+    assert from_cli["verdict"] == want
 
 
 def test_the_parts_are_the_reports_parts():

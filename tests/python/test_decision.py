@@ -148,6 +148,31 @@ def test_float32_curves_are_decided_as_built(seed):
         assert d32["verdict"] in ("simple", "crosses"), (seed, k)
 
 
+def test_the_analysis_report_carries_the_verdict(seed):
+    # Issue 27: "verdict" is the first key of CatmullRom.analyze() (the
+    # report of report.hpp, as `crspline analyze` prints it), and it is
+    # decide()'s verdict: for every family of the issue's table, closed
+    # curves, float32 curves; None for a curve that is not plane.
+    rng = np.random.default_rng(seed)
+    seen = {}
+    count = 0
+    for family, kw in FAMILIES.items():
+        for k in range(15):
+            pts = walk(rng, int(rng.integers(5, 13)))
+            for c in (crspline.CatmullRom(pts, **kw), crspline.CatmullRom(pts, closed=k % 3 == 0, **kw),
+                      crspline.CatmullRom(pts.astype(np.float32), **kw)):
+                r = c.analyze(intersections=False)
+                assert list(r)[0] == "verdict", (seed, family, k)
+                assert r["verdict"] == crspline.decide(c)["verdict"], (seed, family, k)
+                seen[r["verdict"]] = seen.get(r["verdict"], 0) + 1
+                count += 1
+    assert count == 4 * 15 * 3
+    # Both answers occur on these walks (the agreement is not vacuous).
+    assert seen.get("simple", 0) > 10 and seen.get("crosses", 0) > 10, (seed, seen)
+    r3 = crspline.CatmullRom(np.c_[walk(rng, 6), np.arange(6.0)]).analyze()
+    assert list(r3)[0] == "verdict" and r3["verdict"] is None
+
+
 def two_walks(rng):
     return [crspline.CatmullRom(walk(rng, int(rng.integers(5, 10))) + rng.normal(scale=2, size=2)) for _ in range(2)]
 

@@ -584,23 +584,23 @@ public:
             });
         });
     }
-    // The analysis report (docs/report.md): { dimension, segments, cusp_t,
-    // has_cusp, has_self_intersection, intersections, folds, complete,
-    // certificate }. o: { intersections: false } skips the search,
-    // tolerance: its tolerance.
+    // The analysis report (docs/report.md): { verdict, dimension, segments,
+    // cusp_t, has_cusp, has_self_intersection, intersections, folds,
+    // complete, certificate }. o: { intersections: false } skips the search,
+    // tolerance: its tolerance; { decision: false } skips the verdict (null).
     val analyze(val o) const {
         return guarded([&] {
             cr::report_options opt;
             if (!is_nullish(o)) {
                 if (!is_nullish(o["intersections"])) opt.search = o["intersections"].as<bool>();
                 if (!is_nullish(o["tolerance"])) opt.tolerance = o["tolerance"].as<double>();
+                if (!is_nullish(o["decision"])) opt.decide_crossings = o["decision"].as<bool>();
             }
             const std::size_t dim = std::size_t(dimension());
-            val r = visit([&](const auto& c) {
+            return visit([&](const auto& c) {
                 js_builder b;
                 return cr::report(b, cr::make_report(c.curve, opt, dim));
             });
-            return with_verdict(r, o);
         });
     }
     val analyze0() const { return analyze(val::undefined()); }
@@ -701,22 +701,6 @@ public:
         });
     }
     val decide0() const { return decide(val::undefined()); }
-    // The report with "verdict" first (as the command line's and Python's
-    // report) and the decision under "decision"; a curve that is not plane
-    // gets "verdict": null. o.decision === false skips it (null too).
-    // report.hpp does not write the decision yet: this is decision.hpp's
-    // shape for it; once report.hpp writes "verdict", its report is used as is.
-    val with_verdict(const val& report, const val& o) const {
-        if (report.hasOwnProperty("verdict")) return report;  // report.hpp writes it: its shape wins
-        val r = val::object();
-        const bool wanted = is_nullish(o) || is_nullish(o["decision"]) || o["decision"].as<bool>();
-        val d = val::null();
-        if (wanted && dimension() == 2) d = decide0();
-        r.set("verdict", d.isNull() ? val::null() : d["verdict"]);
-        val::global("Object").call<void>("assign", r, report);
-        r.set("decision", d);
-        return r;
-    }
     // Two curves: do they cross each other? (curve 0 is a, 1 is b)
     static val decidePair(const Spline& a, const Spline& b, val o) {
         return guarded([&] {
