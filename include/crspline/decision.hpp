@@ -949,7 +949,16 @@ inline decision decide_paths(std::span<const bezier_path> curves, bool self, boo
 inline decision decide_curves(std::span<const catmull_rom<2>* const> curves, bool self, bool between,
                               const decision_options& opt) {
     decision_engine e;
-    for (const catmull_rom<2>* c : curves) {
+    for (std::size_t ci = 0; ci < curves.size(); ++ci) {
+        const catmull_rom<2>* c = curves[ci];
+        // Finite points, but B1 and B2 may overflow (huge coordinates): refused as for a Bézier path.
+        for (std::size_t i = 0; i < c->segment_count(); ++i) {
+            const auto b = c->bezier(i);
+            for (std::size_t k = 0; k < 4; ++k)
+                if (!std::isfinite(b[k][0]) || !std::isfinite(b[k][1]))
+                    throw invalid_input("decision: curve " + std::to_string(ci) + " segment " + std::to_string(i) +
+                                        " Bezier point " + std::to_string(k) + " is not finite");
+        }
         e.curves.push_back({{}, c});
         e.closed.push_back(c->closed());
     }
