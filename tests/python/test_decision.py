@@ -159,7 +159,8 @@ def test_the_analysis_report_carries_the_verdict(seed):
     for family, kw in FAMILIES.items():
         for k in range(15):
             pts = walk(rng, int(rng.integers(5, 13)))
-            for c in (crspline.CatmullRom(pts, **kw), crspline.CatmullRom(pts, closed=k % 3 == 0, **kw),
+            ends = "closed" if k % 3 == 0 else "natural"
+            for c in (crspline.CatmullRom(pts, **kw), crspline.CatmullRom(pts, endconditions=ends, **kw),
                       crspline.CatmullRom(pts.astype(np.float32), **kw)):
                 r = c.analyze(intersections=False)
                 assert list(r)[0] == "verdict", (seed, family, k)
