@@ -374,6 +374,7 @@ def test_analyze_summary_and_no_search():
     full = run_json("analyze", {"points": RETRACE, "alpha": 0})
     summary = run_json("analyze", {"points": RETRACE, "alpha": 0, "summary": True})
     assert summary == {
+        "verdict": full["verdict"],  # issue 27: the summary's verdict is the full report's
         "dimension": 2,
         "segment_count": len(RETRACE) - 1,
         "cusps": len(full["cusp_t"]),
