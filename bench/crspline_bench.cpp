@@ -368,11 +368,10 @@ void eval_sorted_float_boost(benchmark::State& state) {
 // Construction, per control point. Boost takes its points by rvalue: the
 // copy into its container is timed, as crspline's constructor copies too.
 
-// Memory: bench/memory_policy.hpp's policy (every block of 128 KiB or more
-// fresh from the kernel), set here and kept for the rest of the run, the
+// Memory: bench/memory_policy.hpp's policy (every block of 4 MiB or more
+// fresh from the kernel), set at the start of main() for the whole run, the
 // same as crspline_construct_rusage's.
 void construct_crspline(benchmark::State& state) {
-    crspline_bench::fresh_memory();
     const std::size_t n = std::size_t(state.range(0));
     const auto p = walk(n);
     for (auto _ : state) {
@@ -383,7 +382,6 @@ void construct_crspline(benchmark::State& state) {
 }
 
 void construct_boost(benchmark::State& state) {
-    crspline_bench::fresh_memory();
     const std::size_t n = std::size_t(state.range(0));
     const auto p = to_boost(walk(n));
     for (auto _ : state) {
@@ -810,6 +808,7 @@ int main(int argc, char** argv) {
             return std::fclose(f) == 0 ? 0 : 1;
         }
     }
+    crspline_bench::fresh_memory();
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     // The processor and the kernels that ran, for the report (issue 30): a

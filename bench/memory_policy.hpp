@@ -12,13 +12,16 @@
 // getrusage at 0.77x) because their histories differed. crspline's large
 // arrays are mappings of their own (detail/storage.hpp), fresh every time.
 //
-// fresh_memory() fixes the threshold at 128 KiB: every block that large is
-// mapped when allocated and unmapped when freed, for both libraries, in
-// both harnesses, whatever ran before. That is what a program pays that
+// fresh_memory() fixes the threshold at 4 MiB (crspline's own threshold for
+// a mapping, detail/storage.hpp): every block that large is mapped when
+// allocated and unmapped when freed, for both libraries, in both harnesses,
+// whatever ran before, and every smaller one comes from the heap. Both
+// programs set it first thing, so no case's numbers depend on the order
+// the cases run in. That is what a program pays that
 // builds one large curve, and the measure the construct targets use: the
 // kernel's cost of the bytes a curve keeps (crspline 68 per point, Boost 32:
 // the tangents and 1/h that make evaluation 10x faster) is part of it.
-// Below 128 KiB (the 10^3-point case) blocks come from the heap, reused.
+// Below 4 MiB (the 10^3-point case) blocks come from the heap, reused.
 #pragma once
 
 #if defined(__GLIBC__)
@@ -29,8 +32,8 @@ namespace crspline_bench {
 
 inline void fresh_memory() {
 #if defined(__GLIBC__)
-    mallopt(M_MMAP_THRESHOLD, 128 << 10);
-    mallopt(M_TRIM_THRESHOLD, 128 << 10);
+    mallopt(M_MMAP_THRESHOLD, 4 << 20);
+    mallopt(M_TRIM_THRESHOLD, 8 << 20);
 #endif
 }
 
