@@ -26,6 +26,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "json_tree_builder.hpp"
+
 #include <crspline/decision.hpp>
 
 #include "test_support.hpp"
@@ -445,18 +447,7 @@ TEST(Decision, ClearanceAgainstBruteForce) {
 }
 
 // The report value: the keys report.hpp's writer puts under "decision".
-struct json_builder {
-    using value = json;
-    value object() { return json::object(); }
-    value array() { return json::array(); }
-    void set(value& o, std::string_view k, value v) { o[std::string(k)] = std::move(v); }
-    void push(value& a, value v) { a.push_back(std::move(v)); }
-    value number(double x) { return x; }
-    value integer(std::size_t n) { return n; }
-    value boolean(bool f) { return f; }
-    value string(std::string_view s) { return std::string(s); }
-    value null() { return nullptr; }
-};
+using json_builder = crspline_test::json_tree_builder;
 
 TEST(Decision, ReportValue) {
     const catmull_rom<2> x(std::vector<P>{P{{0, 0}}, P{{4, 0}}, P{{4, 3}}, P{{2, -2}}}, {.alpha = 0.0});

@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "json_tree_builder.hpp"
+
 #include <crspline/decision.hpp>
 #include <crspline/report.hpp>
 
@@ -20,18 +22,7 @@ using namespace crspline;
 using P = vec<2>;
 using json = nlohmann::json;
 
-struct tree_builder {
-    using value = json;
-    value object() { return json::object(); }
-    value array() { return json::array(); }
-    void set(value& o, std::string_view k, value v) { o[std::string(k)] = std::move(v); }
-    void push(value& a, value v) { a.push_back(std::move(v)); }
-    value number(double x) { return x; }
-    value integer(std::size_t n) { return n; }
-    value boolean(bool f) { return f; }
-    value string(std::string_view s) { return std::string(s); }
-    value null() { return nullptr; }
-};
+using tree_builder = crspline_test::json_tree_builder;
 
 template <std::size_t D, class T>
 json held(const catmull_rom<D, T>& c, const report_options& opt = {}) {

@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "json_tree_builder.hpp"
+
 #include <crspline/report.hpp>
 #include <crspline/spec.hpp>
 
@@ -18,18 +20,7 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-struct json_builder {
-    using value = json;
-    value object() { return json::object(); }
-    value array() { return json::array(); }
-    void set(value& o, std::string_view key, value v) { o[std::string(key)] = std::move(v); }
-    void push(value& a, value v) { a.push_back(std::move(v)); }
-    value number(double x) { return x; }
-    value integer(std::size_t i) { return i; }
-    value boolean(bool f) { return f; }
-    value string(std::string_view s) { return std::string(s); }
-    value null() { return nullptr; }
-};
+using json_builder = crspline_test::json_tree_builder;
 static_assert(crspline::report_builder<json_builder>);
 
 template <std::size_t D, class T>

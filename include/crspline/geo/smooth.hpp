@@ -224,14 +224,13 @@ struct piece {
     box<2> bounds{};
 };
 
-// The angular interval, seen from V, holding the control points of p other
-// than V itself: [lo, hi] in radians, hi - lo < pi. False when it is not
-// that narrow (or every point is V).
-inline bool wedge_at(const piece& p, const p2& v, double slack, double& lo, double& hi) {
+// The angular interval, seen from v, of the points q other than v (those
+// within slack of it): [lo, hi] with hi - lo < pi. False when not that narrow.
+inline bool wedge_of(const std::array<p2, 4>& pts, const p2& v, double slack, double& lo, double& hi) {
     bool have = false;
     p2 ref{};
     double a = 0, b = 0;
-    for (const p2& q : p.q) {
+    for (const p2& q : pts) {
         const p2 d = q - v;
         if (std::abs(d[0]) <= slack && std::abs(d[1]) <= slack) continue;
         if (!have) {
@@ -248,6 +247,13 @@ inline bool wedge_at(const piece& p, const p2& v, double slack, double& lo, doub
     lo = base + a;
     hi = base + b;
     return true;
+}
+
+// The angular interval, seen from V, holding the control points of p other
+// than V itself: [lo, hi] in radians, hi - lo < pi. False when it is not
+// that narrow (or every point is V).
+inline bool wedge_at(const piece& p, const p2& v, double slack, double& lo, double& hi) {
+    return wedge_of(p.q, v, slack, lo, hi);
 }
 
 // Pieces p and q sharing the end point v meet nowhere else: their wedges at
@@ -452,31 +458,6 @@ inline bool advances_along_chord(const std::array<p2, 4>& b, double slack) noexc
     if (!(len > 0)) return false;
     const p2 t = d / len;
     return dot(b[1] - b[0], t) > slack && dot(b[2] - b[1], t) > slack && dot(b[3] - b[2], t) > slack;
-}
-
-// The angular interval, seen from v, of the points q other than v (those
-// within slack of it): [lo, hi] with hi - lo < pi. False when not that narrow.
-inline bool wedge_of(const std::array<p2, 4>& pts, const p2& v, double slack, double& lo, double& hi) {
-    bool have = false;
-    p2 ref{};
-    double a = 0, b = 0;
-    for (const p2& q : pts) {
-        const p2 d = q - v;
-        if (std::abs(d[0]) <= slack && std::abs(d[1]) <= slack) continue;
-        if (!have) {
-            ref = d;
-            have = true;
-            continue;
-        }
-        const double ang = std::atan2(cross2(ref, d), dot(ref, d));
-        a = std::min(a, ang);
-        b = std::max(b, ang);
-    }
-    if (!have || b - a >= std::numbers::pi * 0.999) return false;
-    const double base = std::atan2(ref[1], ref[0]);
-    lo = base + a;
-    hi = base + b;
-    return true;
 }
 
 // Two point sets, each with v, whose hulls meet only at v: their wedges at
