@@ -285,8 +285,8 @@ struct batch_kernels {
         run_coefficients<Order>(s, o, a, b, c);
         if constexpr (std::is_same_v<T, float>)
             if (detail::avx512_enabled())
-                return detail::sorted_run3<Order, T, true>(o, a, b, c, s.t0, s.inv_h, t, reinterpret_cast<T*>(out), n,
-                                                           previous, stream, t_end, unsorted);
+                return detail::sorted_run3_512<Order>(o, a, b, c, s.t0, s.inv_h, t, reinterpret_cast<T*>(out), n,
+                                                      previous, stream, t_end, unsorted);
         return detail::sorted_run3<Order>(o, a, b, c, s.t0, s.inv_h, t, reinterpret_cast<T*>(out), n, previous, stream,
                                           t_end, unsorted);
     }

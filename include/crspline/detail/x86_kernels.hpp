@@ -108,10 +108,13 @@ struct lanes256<float> {
     CRSPLINE_TARGET_AVX2 static int mask(V a) noexcept { return _mm256_movemask_ps(a); }
     CRSPLINE_TARGET_AVX2 static void store(float* p, V a) noexcept { _mm256_storeu_ps(p, a); }
     CRSPLINE_TARGET_AVX2 static void stream(float* p, V a) noexcept { _mm256_stream_ps(p, a); }
+    // (One masked load and a permute: built through a stack array, as
+    // before issue 30, each pattern cost a failed store forward.)
     CRSPLINE_TARGET_AVX2 static V pattern(const float* v, int r) noexcept {
-        float l[8];
-        for (int j = 0; j < 8; ++j) l[j] = v[(8 * r + j) % 3];
-        return _mm256_loadu_ps(l);
+        const V xyz = _mm256_maskload_ps(v, _mm256_setr_epi32(-1, -1, -1, 0, 0, 0, 0, 0));
+        const int f = 8 * r;
+        return _mm256_permutevar8x32_ps(xyz, _mm256_setr_epi32(f % 3, (f + 1) % 3, (f + 2) % 3, (f + 3) % 3,
+                                                               (f + 4) % 3, (f + 5) % 3, (f + 6) % 3, (f + 7) % 3));
     }
     template <int r>
     CRSPLINE_TARGET_AVX2 static V spread(V u) noexcept {
@@ -171,59 +174,112 @@ CRSPLINE_TARGET_AVX2 std::size_t sorted_loop3(const T* o, const T* a, const T* b
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
-/// Lanes of the 512-bit float loop: v[(16 r + j) % 3] in lane j, and the
-/// index (16 r + j) / 3 that spreads u over them.
-CRSPLINE_TARGET_AVX512 inline __m512 pattern512(const float* v, int r) noexcept {
-    float l[16];
-    for (int j = 0; j < 16; ++j) l[j] = v[(16 * r + j) % 3];
-    return _mm512_loadu_ps(l);
-}
-CRSPLINE_TARGET_AVX512 inline __m512i index512(int r) noexcept {
-    int l[16];
-    for (int j = 0; j < 16; ++j) l[j] = (16 * r + j) / 3;
-    return _mm512_loadu_si512(l);
-}
 
-/// The float loop of sorted_run3 in 512-bit lanes: 16 points per step, 48
-/// floats in 3 registers laid out as in memory (lane j of register r holds
-/// coordinate (16 r + j) % 3 of point (16 r + j) / 3), the same operations
-/// as sorted_loop3, so the same bits. From point k (out + 3 k 64-byte
-/// aligned when Stream) while 16 points remain below t_end; returns the new
-/// k. (Issue 30: on the AMD EPYC the 8-lane loop retired about 3.3
-/// instructions a cycle and reached 0.65 of the float store floor; half as
-/// many instructions per point leave it bound by memory.)
-template <int Order, bool Stream>
-CRSPLINE_TARGET_AVX512 std::size_t sorted_loop3_512(const float* o, const float* a, const float* b, const float* c,
-                                                     float t0, float ih, float t_end, const float* t, float* out,
-                                                     std::size_t k, std::size_t n, unsigned& good) noexcept {
-    using V = __m512;
-    const auto pattern = pattern512;
-    const auto index = index512;
-    const V vt0 = _mm512_set1_ps(t0), vih = _mm512_set1_ps(ih), vend = _mm512_set1_ps(t_end);
-    const V A0 = pattern(a, 0), A1 = pattern(a, 1), A2 = pattern(a, 2);
-    const V B0 = pattern(b, 0), B1 = pattern(b, 1), B2 = pattern(b, 2);
-    const V C0 = pattern(c, 0), C1 = pattern(c, 1), C2 = pattern(c, 2);
-    const float zero[3] = {0.0f, 0.0f, 0.0f};
-    const float* oo = Order == 0 ? o : zero;
-    const V O0 = pattern(oo, 0), O1 = pattern(oo, 1), O2 = pattern(oo, 2);
-    const __m512i I0 = index(0), I1 = index(1), I2 = index(2);
-    unsigned ok = good;
-    for (; k + 16 <= n; k += 16) {
-        const V x = _mm512_loadu_ps(t + k);
-        // Stop before a step with a point at or past the end knot (or NaN).
-        if (_mm512_cmp_ps_mask(x, vend, _CMP_LT_OQ) != 0xFFFF) break;
-        ok &= _mm512_cmp_ps_mask(_mm512_loadu_ps(t + k - 1), x, _CMP_LE_OQ);  // sorted; false for NaN too
-        const V u = _mm512_mul_ps(_mm512_sub_ps(x, vt0), vih);
-        const V U0 = _mm512_permutexvar_ps(I0, u), U1 = _mm512_permutexvar_ps(I1, u),
-                U2 = _mm512_permutexvar_ps(I2, u);
-        V r0 = _mm512_add_ps(A0, _mm512_mul_ps(U0, _mm512_add_ps(B0, _mm512_mul_ps(U0, C0))));
-        V r1 = _mm512_add_ps(A1, _mm512_mul_ps(U1, _mm512_add_ps(B1, _mm512_mul_ps(U1, C1))));
-        V r2 = _mm512_add_ps(A2, _mm512_mul_ps(U2, _mm512_add_ps(B2, _mm512_mul_ps(U2, C2))));
+/// The 512-bit float steps of a sorted run (16 points, 48 floats in 3
+/// registers laid out as in memory: lane j of register r holds coordinate
+/// (16 r + j) % 3 of point (16 r + j) / 3), the same operations as
+/// sorted_loop3, so the same bits. Built once per run: each coefficient's
+/// 3 floats by one masked load and 3 permutes. (Issue 30: built through a
+/// 16-float array on the stack, as the 8-lane patterns were, the 24
+/// coefficient vectors of a run's 8- and 16-lane loops cost a failed store
+/// forward each; with the scalar head and tail that was about 150 ns a run,
+/// 0.5 ms of the 10^7-point benchmark's 3.7.)
+template <int Order>
+struct steps512 {
+    __m512 A0, A1, A2, B0, B1, B2, C0, C1, C2, O0, O1, O2, vt0, vih, vend;
+
+    /// Lane j: v[(16 r + j) % 3], v one coordinate triple in lanes 0-2.
+    template <int r>
+    CRSPLINE_TARGET_AVX512 static __m512 pattern(__m512 v) noexcept {
+        constexpr int f = 16 * r;
+        return _mm512_permutexvar_ps(
+            _mm512_setr_epi32(f % 3, (f + 1) % 3, (f + 2) % 3, (f + 3) % 3, (f + 4) % 3, (f + 5) % 3, (f + 6) % 3,
+                              (f + 7) % 3, (f + 8) % 3, (f + 9) % 3, (f + 10) % 3, (f + 11) % 3, (f + 12) % 3,
+                              (f + 13) % 3, (f + 14) % 3, (f + 15) % 3),
+            v);
+    }
+    /// Lane j: u[(16 r + j) / 3], the parameter of the point lane j is part of.
+    template <int r>
+    CRSPLINE_TARGET_AVX512 static __m512 spread(__m512 u) noexcept {
+        constexpr int f = 16 * r;
+        return _mm512_permutexvar_ps(
+            _mm512_setr_epi32(f / 3, (f + 1) / 3, (f + 2) / 3, (f + 3) / 3, (f + 4) / 3, (f + 5) / 3, (f + 6) / 3,
+                              (f + 7) / 3, (f + 8) / 3, (f + 9) / 3, (f + 10) / 3, (f + 11) / 3, (f + 12) / 3,
+                              (f + 13) / 3, (f + 14) / 3, (f + 15) / 3),
+            u);
+    }
+
+    CRSPLINE_TARGET_AVX512 steps512(const float* o, const float* a, const float* b, const float* c, float t0,
+                                    float ih, float t_end) noexcept {
+        const __m512 va = _mm512_maskz_loadu_ps(0x7, a), vb = _mm512_maskz_loadu_ps(0x7, b),
+                     vc = _mm512_maskz_loadu_ps(0x7, c);
+        // (Order 1: no origin term; o is not read.)
+        const __m512 vo = Order == 0 ? _mm512_maskz_loadu_ps(0x7, o) : _mm512_setzero_ps();
+        A0 = pattern<0>(va), A1 = pattern<1>(va), A2 = pattern<2>(va);
+        B0 = pattern<0>(vb), B1 = pattern<1>(vb), B2 = pattern<2>(vb);
+        C0 = pattern<0>(vc), C1 = pattern<1>(vc), C2 = pattern<2>(vc);
+        O0 = pattern<0>(vo), O1 = pattern<1>(vo), O2 = pattern<2>(vo);
+        vt0 = _mm512_set1_ps(t0), vih = _mm512_set1_ps(ih), vend = _mm512_set1_ps(t_end);
+    }
+
+    /// The 16 points at parameters x, as 48 floats in r0 r1 r2.
+    CRSPLINE_TARGET_AVX512 void points(__m512 x, __m512& r0, __m512& r1, __m512& r2) const noexcept {
+        const __m512 u = _mm512_mul_ps(_mm512_sub_ps(x, vt0), vih);
+        const __m512 U0 = spread<0>(u), U1 = spread<1>(u), U2 = spread<2>(u);
+        r0 = _mm512_add_ps(A0, _mm512_mul_ps(U0, _mm512_add_ps(B0, _mm512_mul_ps(U0, C0))));
+        r1 = _mm512_add_ps(A1, _mm512_mul_ps(U1, _mm512_add_ps(B1, _mm512_mul_ps(U1, C1))));
+        r2 = _mm512_add_ps(A2, _mm512_mul_ps(U2, _mm512_add_ps(B2, _mm512_mul_ps(U2, C2))));
         if constexpr (Order == 0) {
             r0 = _mm512_add_ps(O0, _mm512_mul_ps(U0, r0));
             r1 = _mm512_add_ps(O1, _mm512_mul_ps(U1, r1));
             r2 = _mm512_add_ps(O2, _mm512_mul_ps(U2, r2));
         }
+    }
+
+    /// Lanes 0 .. min(q, 16) - 1.
+    static __mmask16 first_lanes(unsigned q) noexcept { return __mmask16((1u << (q < 16 ? q : 16)) - 1); }
+
+    /// One step of up to 16 points at t[0..m) (1 <= m <= 16), with plain
+    /// masked loads and stores (nothing outside the m points is read or
+    /// written): the points from the first while they are below t_end, the
+    /// first one always when first (the run's t[0]). before: the parameter
+    /// before t[0]. Returns how many points it evaluated; bad is set when one
+    /// of them is not >= the one before it (or is NaN).
+    CRSPLINE_TARGET_AVX512 unsigned masked_step(const float* t, float* out, unsigned m, float before, bool first,
+                                                unsigned& bad) const noexcept {
+        const __mmask16 in = __mmask16((1u << m) - 1);
+        const __m512 x = _mm512_maskz_loadu_ps(in, t);
+        // The points below the end: a prefix of the step's lanes.
+        const unsigned below = unsigned(_mm512_cmp_ps_mask(x, vend, _CMP_LT_OQ)) | unsigned(first);
+        const unsigned take = (((below + 1) & ~below) - 1) & in;
+        // Sorted: each lane against the one before it, lane 0 against before.
+        const __m512 prev = _mm512_castsi512_ps(
+            _mm512_alignr_epi32(_mm512_castps_si512(x), _mm512_castps_si512(_mm512_set1_ps(before)), 15));
+        bad |= unsigned((unsigned(_mm512_cmp_ps_mask(prev, x, _CMP_LE_OQ)) & take) != take);
+        __m512 r0, r1, r2;
+        points(x, r0, r1, r2);
+        const unsigned p = unsigned(__builtin_popcount(take)), f = 3 * p;  // floats to store
+        _mm512_mask_storeu_ps(out, first_lanes(f), r0);
+        _mm512_mask_storeu_ps(out + 16, first_lanes(f > 16 ? f - 16 : 0), r1);
+        _mm512_mask_storeu_ps(out + 32, first_lanes(f > 32 ? f - 32 : 0), r2);
+        return p;
+    }
+};
+
+/// The whole 16-point steps of sorted_run3_512 from point k (out + 3 k
+/// 64-byte aligned when Stream: non-temporal stores of whole cache lines)
+/// while 16 points remain and are below t_end; returns the new k.
+template <int Order, bool Stream>
+CRSPLINE_TARGET_AVX512 std::size_t bulk512(const steps512<Order>& s, const float* t, float* out, std::size_t k,
+                                           std::size_t n, unsigned& bad) noexcept {
+    unsigned ok = 0xFFFF;
+    for (; k + 16 <= n; k += 16) {
+        const __m512 x = _mm512_loadu_ps(t + k);
+        // Stop before a step with a point at or past the end knot (or NaN).
+        if (_mm512_cmp_ps_mask(x, s.vend, _CMP_LT_OQ) != 0xFFFF) break;
+        ok &= _mm512_cmp_ps_mask(_mm512_loadu_ps(t + k - 1), x, _CMP_LE_OQ);  // sorted; false for NaN too
+        __m512 r0, r1, r2;
+        s.points(x, r0, r1, r2);
         float* dst = out + 3 * k;
         if constexpr (Stream) {
             _mm512_stream_ps(dst, r0), _mm512_stream_ps(dst + 16, r1), _mm512_stream_ps(dst + 32, r2);
@@ -231,7 +287,37 @@ CRSPLINE_TARGET_AVX512 std::size_t sorted_loop3_512(const float* o, const float*
             _mm512_storeu_ps(dst, r0), _mm512_storeu_ps(dst + 16, r1), _mm512_storeu_ps(dst + 32, r2);
         }
     }
-    good = ok;
+    bad |= unsigned(ok != 0xFFFF);
+    return k;
+}
+
+/// sorted_run3 for floats on a CPU with AVX-512F: one masked step of up to
+/// 16 points until out + 3 k is 64-byte aligned (12 h = -out mod 64 bytes,
+/// h in 1..16), then whole 16-point steps (non-temporal stores of whole
+/// cache lines when stream), then one masked step for what is left below
+/// t_end. No scalar point and no 8-lane step: a run costs its
+/// coefficients (4 masked loads, 12 permutes) and two masked steps more
+/// than its points.
+template <int Order>
+CRSPLINE_TARGET_AVX512 std::size_t sorted_run3_512(const float* o, const float* a, const float* b, const float* c,
+                                                   float t0, float ih, const float* t, float* out, std::size_t n,
+                                                   float& previous, bool stream, float t_end,
+                                                   bool& unsorted) noexcept {
+    if (n == 0) return 0;
+    const steps512<Order> s(o, a, b, c, t0, ih, t_end);
+    unsigned bad = 0;
+    // 3 h = -(out mod 64) / 4 (mod 16), and 11 = 1 / 3 (mod 16).
+    const unsigned quarter = unsigned(reinterpret_cast<std::uintptr_t>(out) % 64) / 4;
+    const unsigned h0 = (11 * ((16 - quarter) % 16)) % 16, h = h0 == 0 ? 16 : h0;
+    const unsigned m = unsigned(n < h ? n : h);
+    std::size_t k = s.masked_step(t, out, m, previous, true, bad);
+    if (k == m && k < n) {
+        // out + 3 k is 64-byte aligned here.
+        k = stream ? bulk512<Order, true>(s, t, out, k, n, bad) : bulk512<Order, false>(s, t, out, k, n, bad);
+        if (k < n) k += s.masked_step(t + k, out + 3 * k, unsigned(n - k < 16 ? n - k : 16), t[k - 1], false, bad);
+    }
+    previous = t[k - 1];
+    unsorted = unsorted || bad != 0;
     return k;
 }
 
@@ -245,11 +331,9 @@ CRSPLINE_TARGET_AVX512 std::size_t sorted_loop3_512(const float* o, const float*
 /// the points after it while they are below t_end (at most n); returns how
 /// many. Sets unsorted when t is not sorted there (or holds a NaN). out
 /// holds 3 n scalars. Large outputs (stream) use non-temporal stores once
-/// out is 32-byte aligned. Wide (floats, on a CPU with AVX-512F): after the
-/// head, one 8-point step leaves the output 64-byte aligned and the 16-lane
-/// loop (sorted_loop3_512) runs the run's bulk; the 8-lane loop and single
-/// points do the rest. The same bits either way.
-template <int Order, class T, bool Wide = false>
+/// out is 32-byte aligned. (Floats on a CPU with AVX-512F: sorted_run3_512,
+/// the same bits.)
+template <int Order, class T>
 CRSPLINE_TARGET_AVX2 std::size_t sorted_run3(const T* o, const T* a, const T* b, const T* c, T t0, T ih,
                                              const T* t, T* out, std::size_t n, T& previous, bool stream, T t_end,
                                              bool& unsorted) noexcept {
@@ -277,23 +361,8 @@ CRSPLINE_TARGET_AVX2 std::size_t sorted_run3(const T* o, const T* a, const T* b,
     if (k + W <= n) {
         typename L::V good = L::ones();
         const bool streaming = stream && reinterpret_cast<std::uintptr_t>(out + 3 * k) % 32 == 0;
-        auto lanes8 = [&](std::size_t end) {
-            return streaming ? sorted_loop3<T, Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, end, good)
-                             : sorted_loop3<T, Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, end, good);
-        };
-        if constexpr (Wide) {
-            static_assert(std::is_same_v<T, float>);
-            const auto at64 = [&] { return reinterpret_cast<std::uintptr_t>(out + 3 * k) % 64; };
-            const std::size_t before = k;
-            if (at64() != 0) k = lanes8(k + W);  // 96 bytes: 32-byte alignment becomes 64
-            if (k != before || at64() == 0) {
-                unsigned good16 = 0xFFFF;
-                k = streaming ? sorted_loop3_512<Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, n, good16)
-                              : sorted_loop3_512<Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, n, good16);
-                bad |= unsigned(good16 != 0xFFFF);
-            }
-        }
-        k = lanes8(n);
+        k = streaming ? sorted_loop3<T, Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, n, good)
+                      : sorted_loop3<T, Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, n, good);
         prev = t[k - 1];
         bad |= unsigned(L::mask(good) != L::all);
     }
