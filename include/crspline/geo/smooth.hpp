@@ -58,6 +58,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -132,6 +133,9 @@ struct smooth_options {
     /// If set, called now and then from the calling thread with the
     /// fraction of the work done, in [0, 1] (a terminal's progress line).
     std::function<void(double)> progress{};
+    /// true: smooth_result::curves holds every arc's final curve (the one
+    /// the proof was about), e.g. to hand to decide() (decision.hpp).
+    bool keep_curves = false;
 };
 
 /// One feature's outcome. Lengths and deviations in the layer's units.
@@ -157,10 +161,19 @@ struct smooth_stats {
     std::size_t input_touches = 0;       ///< pairs of input segments that touch or overlap without crossing
 };
 
+/// One arc's final curve (smooth_options::keep_curves): its tensioned
+/// Catmull-Rom curve (segments at tension 1 on both ends are their input
+/// segments) and the features that use the arc, sorted.
+struct arc_curve {
+    catmull_rom<2> curve;
+    std::vector<std::size_t> features;
+};
+
 struct smooth_result {
     layer output;                          ///< same parts, kinds, features and extra_dims; rings closed (first vertex repeated)
     std::vector<feature_report> features;  ///< one per feature of the input
     smooth_stats stats;
+    std::vector<arc_curve> curves;         ///< per arc, only with smooth_options::keep_curves
 };
 
 namespace detail {
@@ -284,7 +297,8 @@ struct arc_work {
     std::vector<box<2>> hull_box;         // per segment: their box
     std::vector<std::size_t> first_piece; // per segment: its first polyline piece; one more: the piece count
     crspline::box<2> bounds{};            // of all the hulls
-    double length = 0;                    // set where the curve is released early (no topology)
+    double length = 0;                    // set where the curve is measured early (no topology)
+    bool measured = false;                // length is set
     bool has_line = false;                // line, vseg, vu, first_piece are this curve's
 
     std::size_t segments() const noexcept { return closed ? pts.size() : pts.size() - 1; }
@@ -356,19 +370,100 @@ inline void tessellate_arc(arc_work& a, double tolerance) {
     a.line.points.shrink_to_fit();
 }
 
-// Arc length of the arc's curve: a linear segment's is its chord's, the
-// others' to arc_length's default accuracy, sixteen segments at a time
-// (arc_length.hpp's batch, the same pieces as arc_length(segment)); summed
-// in segment order.
+// Bézier points of segment s of the arc's curve, the ends being the arc's
+// vertices themselves. The segment's curve lies in their convex hull, and
+// so does its output polyline (chords between points of the curve).
+inline std::array<p2, 4> segment_bezier(const arc_work& a, std::size_t s) {
+    const p2 p0 = a.pts[s], p3 = a.pts[a.next(s)];
+    if (a.linear(s)) return {p0, p0, p3, p3};
+    const auto seg = a.curve->segment(s);
+    const p2 d0 = seg.du(0.0, 1), d1 = seg.du(1.0, 1);
+    return {p0, p0 + d0 / 3.0, p3 - d1 / 3.0, p3};
+}
+
+// Length, to relative accuracy `accuracy`, of the cubic with Bezier points
+// b whose speed vanishes at u = 0 (b[1] == b[0]: its first vertex at tension
+// 1, the tangent there zero). Then C'(u) = 3 u (p + q u) with p = 2 (b2 -
+// b0), q = b3 - 3 b2 + 2 b0, and the length is 3 J, J = int_0^1 u |p + q u|
+// du. The factor u is taken out exactly, so what is integrated, u sqrt(Q(u))
+// with Q(u) = |p + q u|^2, is analytic but at the two complex roots z of Q:
+// known in closed form, they give each piece's Bernstein ellipse (rho) and
+// the 16-point Gauss rule's error bound, 64/15 M (w/2) r^-32 / (r^2 - 1) for
+// M >= |f| on the ellipse of parameter r < rho (Trefethen, ATAP ch. 19; |f|
+// <= T (|p| + |q| T) with T >= |u| there); a piece whose bound exceeds its
+// share of accuracy * chord / 3 (the chord |b3 - b0| is at most the length)
+// is halved. (arc_length's general path sees such a segment's speed vanish
+// at its end and spends tens of microseconds on it; here it takes one or
+// two rules.) A speed vanishing at u = 1 is the same with b reversed.
+inline double end_pinned_length(const std::array<p2, 4>& b, double accuracy) noexcept {
+    const p2 p = 2.0 * (b[2] - b[0]), q = b[3] - 3.0 * b[2] + 2.0 * b[0];
+    const double np = norm(p), nq = norm(q), chord = norm(b[3] - b[0]);
+    if (nq == 0) return 3 * np / 2;  // |p| int u du
+    if (np == 0) return nq;          // 3 |q| int u^2 du
+    // The roots of Q: (-(p.q) +- i |p x q|) / |q|^2 (conjugates: one rho).
+    const std::complex<double> z(-dot(p, q) / (nq * nq), std::abs(cross2(p, q)) / (nq * nq));
+    const double tol = accuracy * chord / 3;
+    using gl = crspline::detail::gauss_legendre<16, double>;
+    auto f = [&](double u) { return u * norm(p + u * q); };
+    auto rule = [&](double a, double c) {
+        const double m = (a + c) / 2, h = (c - a) / 2;
+        double sum = 0;
+        for (int k = 0; k < 8; ++k) sum += gl::w[k] * (f(m - h * gl::x[k]) + f(m + h * gl::x[k]));
+        return h * sum;
+    };
+    double total = 0;
+    // Pieces on a stack, left to right; depth bounds the halving where a
+    // root sits on the interval (a kink of the speed, p parallel to q).
+    struct span_t {
+        double a, c;
+        int depth;
+    };
+    span_t stack[64];
+    int top = 0;
+    stack[top++] = {0.0, 1.0, 0};
+    while (top > 0) {
+        const span_t sp = stack[--top];
+        const double w = sp.c - sp.a, m = (sp.a + sp.c) / 2;
+        const std::complex<double> x = (2.0 * z - (sp.a + sp.c)) / w;
+        const std::complex<double> r = x + std::sqrt(x - 1.0) * std::sqrt(x + 1.0);
+        const double rho = std::min(1e4, std::max(std::abs(r), 1 / std::abs(r)));
+        const double rr = 1 + 0.9 * (rho - 1);
+        const double T = std::abs(m) + w / 4 * (rr + 1 / rr);
+        const double M = T * (np + nq * T);
+        const double bound = 64.0 / 15.0 * M * (w / 2) * std::pow(rr, -32.0) / (rr * rr - 1);
+        if (bound <= tol * w || sp.depth >= 48 || top + 2 > 64) {
+            total += rule(sp.a, sp.c);
+            continue;
+        }
+        // Halve at the root's real part if well inside, else in the middle.
+        const double cut = z.real() > sp.a + w / 16 && z.real() < sp.c - w / 16 ? z.real() : m;
+        stack[top++] = {cut, sp.c, sp.depth + 1};  // right first: the left is summed first
+        stack[top++] = {sp.a, cut, sp.depth + 1};
+    }
+    return 3 * total;
+}
+
+// Arc length of the arc's curve: a linear segment's is its chord's; a
+// segment with one end at tension 1 by end_pinned_length; the others' to
+// arc_length's default accuracy, sixteen segments at a time (arc_length.hpp's
+// batch, the same pieces as arc_length(segment)); summed in segment order.
 inline double arc_curve_length(const arc_work& a) {
-    if (!a.curve) return a.length;  // measured and released by proof::run (no topology)
+    if (a.measured) return a.length;  // measured (and released) by proof::run_alone
     const std::size_t segs = a.segments();
     std::vector<double> len(segs, 0.0);
     std::vector<std::size_t> curved;
     curved.reserve(segs);
     for (std::size_t s = 0; s < segs; ++s) {
-        if (a.linear(s)) len[s] = norm(a.pts[a.next(s)] - a.pts[s]);
-        else curved.push_back(s);
+        const bool pinned0 = a.level[s] == linear_level, pinned1 = a.level[a.next(s)] == linear_level;
+        if (pinned0 && pinned1) {
+            len[s] = norm(a.pts[a.next(s)] - a.pts[s]);
+        } else if (pinned0 || pinned1) {
+            auto b = segment_bezier(a, s);
+            if (pinned1) std::swap(b[0], b[3]), std::swap(b[1], b[2]);
+            len[s] = end_pinned_length(b, default_accuracy);
+        } else {
+            curved.push_back(s);
+        }
     }
     if (!curved.empty()) {
         const auto segments = a.curve->segments();
@@ -382,17 +477,6 @@ inline double arc_curve_length(const arc_work& a) {
 }
 
 // ---- The proof, segment by segment (see the file comment) ----------------
-
-// Bézier points of segment s of the arc's curve, the ends being the arc's
-// vertices themselves. The segment's curve lies in their convex hull, and
-// so does its output polyline (chords between points of the curve).
-inline std::array<p2, 4> segment_bezier(const arc_work& a, std::size_t s) {
-    const p2 p0 = a.pts[s], p3 = a.pts[a.next(s)];
-    if (a.linear(s)) return {p0, p0, p3, p3};
-    const auto seg = a.curve->segment(s);
-    const p2 d0 = seg.du(0.0, 1), d1 = seg.du(1.0, 1);
-    return {p0, p0 + d0 / 3.0, p3 - d1 / 3.0, p3};
-}
 
 // Max and min of the cubic with Bernstein coefficients c0..c3 on [0, 1]:
 // the ends and the roots of its derivative (a quadratic) inside.
@@ -720,6 +804,8 @@ struct proof {
                 if (!failed || round >= max_rounds) break;
             }
             a.length = arc_curve_length(a);
+            a.measured = true;
+            if (opt.keep_curves) continue;  // smooth() hands it over
             a.curve.reset();
             a.base.reset();
             std::vector<std::array<p2, 4>>().swap(a.hull);
@@ -1011,6 +1097,7 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
         for (auto l : a.level) res.stats.tensioned_vertices += l > 0 && !(a.pts.size() == 2 && !a.closed);
         for (std::size_t s = 0; s < a.segments(); ++s) res.stats.linear_segments += a.linear(s);
         arc_length_of[i] = detail::arc_curve_length(a);
+        if (opt.keep_curves) res.curves.push_back({std::move(*a.curve), topo.arcs[i].features});
     }
     layer& out = res.output;
     out.extra_dims = E;
