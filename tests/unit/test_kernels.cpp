@@ -166,6 +166,84 @@ TEST(Kernels, FloatSortedBatchesAgreeBitForBit) {
 #endif
 }
 
+TEST(Kernels, FloatWalkCrossesKnotsInsideSteps) {
+    // The AVX-512 float walk (detail::sorted_walk3_512, issue 30) computes a
+    // 16-point step that crosses knots on each segment it meets and blends
+    // the lanes. With about 4 points a segment (several knots a step), every
+    // knot hit exactly, a repeated parameter, a coincident pair of points (a
+    // zero interval) and all 16 output offsets mod 64 bytes (12-byte points
+    // shifted by 0..15), each point must equal the AVX2 runs' and the
+    // portable kernel's bit for bit, and positions the single-point path;
+    // input unsorted deep inside must fall back and still agree, a NaN must
+    // give the unsorted path's out_of_domain error.
+    CRSPLINE_SEEDED(s, 77);
+    std::mt19937_64 rng(s);
+    using F3 = vec<3, float>;
+    std::size_t checked = 0;
+    for (int rep = 0; rep < 4; ++rep) {
+        auto p = random_polygon<3, float>(rng, 40 + 30 * rep, 3.0);
+        if (rep >= 1) p[5] = p[4];
+        const catmull_rom<3, float> c(p, {.alpha = rep % 2 ? 0.5 : 1.0, .closed = rep == 3});
+        const auto g = c.grid();
+        std::vector<float> t(g.begin(), g.end());
+        std::uniform_real_distribution<float> U(c.t_min(), c.t_max());
+        for (std::size_t k = 0; k < 4 * g.size(); ++k) t.push_back(std::min(U(rng), c.t_max()));
+        t.push_back(t[t.size() / 2]);
+        std::sort(t.begin(), t.end());
+        // Each path: the walk (where the CPU has AVX-512F), the AVX2 runs,
+        // the portable kernel; t from `from` to the end, out shifted.
+        auto run = [&](int path, std::size_t from, std::size_t shift, int order) {
+#if CRSPLINE_X86_DISPATCH
+            bool &avx2 = detail::avx2_enabled(), &wide = detail::avx512_enabled();
+            const bool had2 = avx2, had512 = wide;
+            wide = wide && path == 0;
+            avx2 = avx2 && path <= 1;
+#else
+            (void)path;
+#endif
+            std::vector<F3> buf(t.size() - from + shift);
+            c.evaluate(std::span<const float>(t).subspan(from), std::span<F3>(buf).subspan(shift), order);
+#if CRSPLINE_X86_DISPATCH
+            avx2 = had2, wide = had512;
+#endif
+            return std::vector<F3>(buf.begin() + std::ptrdiff_t(shift), buf.end());
+        };
+        for (std::size_t shift = 0; shift < 16; ++shift) {
+            for (int order : {0, 1}) {
+                // The whole batch, and short ones (head and tail steps only).
+                for (std::size_t from : {std::size_t(0), t.size() - 1 - shift, t.size() - 17 - shift}) {
+                    const auto walk = run(0, from, shift, order), runs = run(1, from, shift, order),
+                               portable = run(2, from, shift, order);
+                    for (std::size_t k = 0; k < walk.size(); ++k) {
+                        ASSERT_EQ(std::memcmp(&walk[k], &portable[k], sizeof(F3)), 0)
+                            << "rep " << rep << " shift " << shift << " order " << order << " from " << from << " k " << k;
+                        ASSERT_EQ(std::memcmp(&runs[k], &portable[k], sizeof(F3)), 0)
+                            << "AVX2 runs: rep " << rep << " shift " << shift << " order " << order << " k " << k;
+                        if (order == 0) {
+                            const F3 x = c.evaluate(t[from + k]);
+                            ASSERT_EQ(std::memcmp(&walk[k], &x, sizeof(F3)), 0) << "rep " << rep << " k " << k;
+                        }
+                        ++checked;
+                    }
+                }
+            }
+        }
+        // Unsorted deep inside (an adjacent pair swapped), then a NaN.
+        std::uniform_int_distribution<std::size_t> at(t.size() / 4, t.size() - 3);
+        std::size_t k0 = at(rng);
+        while (t[k0] == t[k0 + 1]) ++k0;
+        std::swap(t[k0], t[k0 + 1]);
+        const auto swapped = run(0, 0, 0, 0);
+        for (std::size_t k = 0; k < t.size(); ++k) {
+            const F3 x = c.evaluate(t[k]);
+            ASSERT_EQ(std::memcmp(&swapped[k], &x, sizeof(F3)), 0) << "k " << k << " (swapped at " << k0 << ")";
+        }
+        t[k0] = std::numeric_limits<float>::quiet_NaN();
+        EXPECT_THROW(run(0, 0, 0, 0), out_of_domain) << "NaN at " << k0;
+    }
+    EXPECT_GT(checked, 4u * 16 * 2 * 200u);
+}
+
 TEST(Kernels, NearlySortedInputFallsBackAndStillAgrees) {
     if (!detail::avx2_enabled()) GTEST_SKIP() << "no AVX2 kernels on this CPU or build: nothing to compare";
     // Sorted input with one adjacent pair swapped deep inside a run (the

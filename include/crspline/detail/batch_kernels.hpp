@@ -143,11 +143,26 @@ struct batch_kernels {
         // Large outputs bypass the caches (see detail::streaming_threshold).
         const bool stream = n * sizeof(point) >= detail::streaming_threshold;
         std::size_t seg = c.locate(t[0]);
+#if CRSPLINE_X86_DISPATCH
+        // 3-D floats on a CPU with AVX-512F: the segments are walked inside
+        // the vector loop (no runs; detail::sorted_walk3_512).
+        if constexpr (D == 3 && std::is_same_v<T, float>)
+            if (order <= 1 && detail::avx2_enabled() && detail::avx512_enabled()) {
+                T* o = reinterpret_cast<T*>(out.data());
+                const bool sorted =
+                    order == 0 ? detail::sorted_walk3_512<0>(walk_segments<0>{c}, seg, t.data(), o, n, stream)
+                               : detail::sorted_walk3_512<1>(walk_segments<1>{c}, seg, t.data(), o, n, stream);
+                if (stream) detail::store_fence();
+                if (!sorted) return false;
+                if (order == 0) exact_last_points(c, t, out);
+                return true;
+            }
+#endif
         std::size_t k = 0;
         bool unsorted = false;
         T previous = t[0];
         while (k < n && !unsorted) {
-            while (seg + 1 < nseg && t[k] >= c.grid_[seg + 1]) ++seg;
+            seg = next_segment(c, seg, t[k]);
             // The kernel evaluates t[k] itself, then the points after it
             // while they are below the segment's end knot: every point is
             // evaluated and compared with the one before it, so unsorted
@@ -163,11 +178,37 @@ struct batch_kernels {
         }
         if (stream) detail::store_fence();
         if (unsorted) return false;
-        // As in evaluate_unchecked: the last knot gives the last point exactly.
-        if (order == 0)
-            for (std::size_t q = n; q-- > 0 && t[q] == c.grid_.back();)
-                out[q] = c.points_[c.closed_ ? 0 : c.points_.size() - 1];
+        if (order == 0) exact_last_points(c, t, out);
         return true;
+    }
+
+    // As in evaluate_unchecked: the last knot gives the last point exactly.
+    static void exact_last_points(const curve& c, std::span<const T> t, std::span<point> out) noexcept {
+        for (std::size_t q = t.size(); q-- > 0 && t[q] == c.grid_.back();)
+            out[q] = c.points_[c.closed_ ? 0 : c.points_.size() - 1];
+    }
+
+    // The curve's segments as detail::sorted_walk3_512 takes them: next is
+    // the sorted walk's rule above, load the run kernels' coefficients.
+    template <int Order>
+    struct walk_segments {
+        const curve& c;
+        std::size_t next(std::size_t seg, T x) const noexcept { return batch_kernels::next_segment(c, seg, x); }
+        void load(std::size_t seg, T* o, T* a, T* b, T* cc, T& t0, T& ih, T& t_end) const noexcept {
+            batch_kernels::load_segment<Order>(c, seg, o, a, b, cc, t0, ih, t_end);
+        }
+    };
+    static std::size_t next_segment(const curve& c, std::size_t seg, T x) noexcept {
+        while (seg + 1 < c.segment_count() && x >= c.grid_[seg + 1]) ++seg;
+        return seg;
+    }
+    template <int Order>
+    static void load_segment(const curve& c, std::size_t seg, T* o, T* a, T* b, T* cc, T& t0, T& ih,
+                             T& t_end) noexcept {
+        const segment_type s = c.make_segment(seg);
+        run_coefficients<Order>(s, o, a, b, cc);
+        t0 = s.t0, ih = s.inv_h;
+        t_end = seg + 1 < c.segment_count() ? c.grid_[seg + 1] : std::numeric_limits<T>::infinity();
     }
 
     static constexpr std::size_t run_cap = 4096;
@@ -283,10 +324,6 @@ struct batch_kernels {
                                  bool stream, T t_end, bool& unsorted) noexcept {
         T o[3], a[3], b[3], c[3];
         run_coefficients<Order>(s, o, a, b, c);
-        if constexpr (std::is_same_v<T, float>)
-            if (detail::avx512_enabled())
-                return detail::sorted_run3_512<Order>(o, a, b, c, s.t0, s.inv_h, t, reinterpret_cast<T*>(out), n,
-                                                      previous, stream, t_end, unsorted);
         return detail::sorted_run3<Order>(o, a, b, c, s.t0, s.inv_h, t, reinterpret_cast<T*>(out), n, previous, stream,
                                           t_end, unsorted);
     }

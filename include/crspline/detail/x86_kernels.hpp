@@ -167,53 +167,53 @@ CRSPLINE_TARGET_AVX2 std::size_t sorted_loop3(const T* o, const T* a, const T* b
     return k;
 }
 
-// (GCC 12 warns that the permutes' inputs "may be used uninitialized":
-// its own _mm512_undefined_ps in _mm512_permutexvar_ps, a known false
-// positive; every lane is written.)
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-
-/// The 512-bit float steps of a sorted run (16 points, 48 floats in 3
+/// The 512-bit float steps of a sorted batch (16 points, 48 floats in 3
 /// registers laid out as in memory: lane j of register r holds coordinate
 /// (16 r + j) % 3 of point (16 r + j) / 3), the same operations as
-/// sorted_loop3, so the same bits. Built once per run: each coefficient's
-/// 3 floats by one masked load and 3 permutes. (Issue 30: built through a
-/// 16-float array on the stack, as the 8-lane patterns were, the 24
-/// coefficient vectors of a run's 8- and 16-lane loops cost a failed store
-/// forward each; with the scalar head and tail that was about 150 ns a run,
-/// 0.5 ms of the 10^7-point benchmark's 3.7.)
+/// sorted_loop3, so the same bits. A segment's coefficients are loaded by
+/// one masked load and 3 permutes each. (Issue 30: built through a 16-float
+/// array on the stack, as the 8-lane patterns were, each cost a failed
+/// store forward.)
 template <int Order>
 struct steps512 {
     __m512 A0, A1, A2, B0, B1, B2, C0, C1, C2, O0, O1, O2, vt0, vih, vend;
 
+    /// Lane j of the result: v's lane idx[j]. (_mm512_permutexvar_ps is the
+    /// same instruction, but GCC 12 warns about its own undefined source
+    /// operand, a known false positive.)
+    CRSPLINE_TARGET_AVX512 static __m512 permute(__m512i idx, __m512 v) noexcept {
+        return _mm512_maskz_permutexvar_ps(0xFFFF, idx, v);
+    }
     /// Lane j: v[(16 r + j) % 3], v one coordinate triple in lanes 0-2.
     template <int r>
     CRSPLINE_TARGET_AVX512 static __m512 pattern(__m512 v) noexcept {
         constexpr int f = 16 * r;
-        return _mm512_permutexvar_ps(
-            _mm512_setr_epi32(f % 3, (f + 1) % 3, (f + 2) % 3, (f + 3) % 3, (f + 4) % 3, (f + 5) % 3, (f + 6) % 3,
-                              (f + 7) % 3, (f + 8) % 3, (f + 9) % 3, (f + 10) % 3, (f + 11) % 3, (f + 12) % 3,
-                              (f + 13) % 3, (f + 14) % 3, (f + 15) % 3),
-            v);
+        return permute(_mm512_setr_epi32(f % 3, (f + 1) % 3, (f + 2) % 3, (f + 3) % 3, (f + 4) % 3, (f + 5) % 3,
+                                         (f + 6) % 3, (f + 7) % 3, (f + 8) % 3, (f + 9) % 3, (f + 10) % 3,
+                                         (f + 11) % 3, (f + 12) % 3, (f + 13) % 3, (f + 14) % 3, (f + 15) % 3),
+                       v);
     }
-    /// Lane j: u[(16 r + j) / 3], the parameter of the point lane j is part of.
+    /// Lane j: u[(16 r + j) / 3], the value of the point lane j is part of.
     template <int r>
     CRSPLINE_TARGET_AVX512 static __m512 spread(__m512 u) noexcept {
         constexpr int f = 16 * r;
-        return _mm512_permutexvar_ps(
-            _mm512_setr_epi32(f / 3, (f + 1) / 3, (f + 2) / 3, (f + 3) / 3, (f + 4) / 3, (f + 5) / 3, (f + 6) / 3,
-                              (f + 7) / 3, (f + 8) / 3, (f + 9) / 3, (f + 10) / 3, (f + 11) / 3, (f + 12) / 3,
-                              (f + 13) / 3, (f + 14) / 3, (f + 15) / 3),
-            u);
+        return permute(_mm512_setr_epi32(f / 3, (f + 1) / 3, (f + 2) / 3, (f + 3) / 3, (f + 4) / 3, (f + 5) / 3,
+                                         (f + 6) / 3, (f + 7) / 3, (f + 8) / 3, (f + 9) / 3, (f + 10) / 3,
+                                         (f + 11) / 3, (f + 12) / 3, (f + 13) / 3, (f + 14) / 3, (f + 15) / 3),
+                       u);
     }
+    /// Lanes 0 .. min(q, 16) - 1.
+    static __mmask16 first_lanes(unsigned q) noexcept { return __mmask16((1u << (q < 16 ? q : 16)) - 1); }
 
-    CRSPLINE_TARGET_AVX512 steps512(const float* o, const float* a, const float* b, const float* c, float t0,
-                                    float ih, float t_end) noexcept {
+    /// Takes segment seg's coefficients: segments.load(seg, o, a, b, c, t0,
+    /// ih, t_end) fills them as sorted_run3's arguments.
+    template <class Segments>
+    CRSPLINE_TARGET_AVX512 __attribute__((always_inline)) void load(const Segments& segments, std::size_t seg) noexcept {
+        float o[3], a[3], b[3], c[3], t0, ih, t_end;
+        segments.load(seg, o, a, b, c, t0, ih, t_end);
         const __m512 va = _mm512_maskz_loadu_ps(0x7, a), vb = _mm512_maskz_loadu_ps(0x7, b),
                      vc = _mm512_maskz_loadu_ps(0x7, c);
-        // (Order 1: no origin term; o is not read.)
+        // (Order 1: no origin term.)
         const __m512 vo = Order == 0 ? _mm512_maskz_loadu_ps(0x7, o) : _mm512_setzero_ps();
         A0 = pattern<0>(va), A1 = pattern<1>(va), A2 = pattern<2>(va);
         B0 = pattern<0>(vb), B1 = pattern<1>(vb), B2 = pattern<2>(vb);
@@ -222,7 +222,7 @@ struct steps512 {
         vt0 = _mm512_set1_ps(t0), vih = _mm512_set1_ps(ih), vend = _mm512_set1_ps(t_end);
     }
 
-    /// The 16 points at parameters x, as 48 floats in r0 r1 r2.
+    /// The 16 points at parameters x on this segment, as 48 floats in r0 r1 r2.
     CRSPLINE_TARGET_AVX512 void points(__m512 x, __m512& r0, __m512& r1, __m512& r2) const noexcept {
         const __m512 u = _mm512_mul_ps(_mm512_sub_ps(x, vt0), vih);
         const __m512 U0 = spread<0>(u), U1 = spread<1>(u), U2 = spread<2>(u);
@@ -236,48 +236,70 @@ struct steps512 {
         }
     }
 
-    /// Lanes 0 .. min(q, 16) - 1.
-    static __mmask16 first_lanes(unsigned q) noexcept { return __mmask16((1u << (q < 16 ? q : 16)) - 1); }
-
-    /// One step of up to 16 points at t[0..m) (1 <= m <= 16), with plain
-    /// masked loads and stores (nothing outside the m points is read or
-    /// written): the points from the first while they are below t_end, the
-    /// first one always when first (the run's t[0]). before: the parameter
-    /// before t[0]. Returns how many points it evaluated; bad is set when one
-    /// of them is not >= the one before it (or is NaN).
-    CRSPLINE_TARGET_AVX512 unsigned masked_step(const float* t, float* out, unsigned m, float before, bool first,
-                                                unsigned& bad) const noexcept {
-        const __mmask16 in = __mmask16((1u << m) - 1);
+    /// Any step of up to 16 points at t[0..m) (1 <= m <= 16): the batch's
+    /// first (first: t[-1] is not read, lane 0 is compared with t[0]), its
+    /// last, or one that crosses into later segments, with masked loads and
+    /// stores (nothing outside the m points is read or written) unless nt
+    /// (m = 16, out 64-byte aligned: non-temporal stores). Each lane gets
+    /// the segment the sorted walk gives it: the step is computed on seg,
+    /// then for the lanes at or past its end knot on the segment of the
+    /// first of them (segments.next), and so on; seg is left at the last.
+    /// Returns false, writing nothing, when the step is not sorted (or
+    /// holds NaN).
+    template <class Segments>
+    CRSPLINE_TARGET_AVX512 __attribute__((always_inline)) bool step(const Segments& segments, std::size_t& seg, const float* t, float* out,
+                                     unsigned m, bool first, bool nt) noexcept {
+        const __mmask16 in = first_lanes(m);
         const __m512 x = _mm512_maskz_loadu_ps(in, t);
-        // The points below the end: a prefix of the step's lanes.
-        const unsigned below = unsigned(_mm512_cmp_ps_mask(x, vend, _CMP_LT_OQ)) | unsigned(first);
-        const unsigned take = (((below + 1) & ~below) - 1) & in;
-        // Sorted: each lane against the one before it, lane 0 against before.
-        const __m512 prev = _mm512_castsi512_ps(
-            _mm512_alignr_epi32(_mm512_castps_si512(x), _mm512_castps_si512(_mm512_set1_ps(before)), 15));
-        bad |= unsigned((unsigned(_mm512_cmp_ps_mask(prev, x, _CMP_LE_OQ)) & take) != take);
+        // Lane j's predecessor: t[j - 1], for the batch's first step t[0]
+        // in lane 0 (lanes 1-15 of x shifted up, t[-1] is not read).
+        const __m512 before =
+            first ? _mm512_castsi512_ps(_mm512_maskz_alignr_epi32(0xFFFF, _mm512_castps_si512(x),
+                                                                  _mm512_castps_si512(_mm512_set1_ps(t[0])), 15))
+                  : _mm512_maskz_loadu_ps(in, t - 1);
+        if ((_mm512_cmp_ps_mask(before, x, _CMP_LE_OQ) & in) != in) return false;  // not sorted, or NaN
         __m512 r0, r1, r2;
         points(x, r0, r1, r2);
-        const unsigned p = unsigned(__builtin_popcount(take)), f = 3 * p;  // floats to store
-        _mm512_mask_storeu_ps(out, first_lanes(f), r0);
-        _mm512_mask_storeu_ps(out + 16, first_lanes(f > 16 ? f - 16 : 0), r1);
-        _mm512_mask_storeu_ps(out + 32, first_lanes(f > 32 ? f - 32 : 0), r2);
-        return p;
+        const __m512 X0 = spread<0>(x), X1 = spread<1>(x), X2 = spread<2>(x);
+        for (__mmask16 past = _mm512_mask_cmp_ps_mask(in, x, vend, _CMP_NLT_UQ); past != 0;
+             past = _mm512_mask_cmp_ps_mask(in, x, vend, _CMP_NLT_UQ)) {
+            const std::size_t next = segments.next(seg, t[__builtin_ctz(past)]);
+            if (next == seg) break;  // (no later segment: cannot happen in the domain)
+            const __m512 end = vend;
+            seg = next;
+            load(segments, seg);
+            __m512 q0, q1, q2;
+            points(x, q0, q1, q2);
+            r0 = _mm512_mask_mov_ps(r0, _mm512_cmp_ps_mask(X0, end, _CMP_NLT_UQ), q0);
+            r1 = _mm512_mask_mov_ps(r1, _mm512_cmp_ps_mask(X1, end, _CMP_NLT_UQ), q1);
+            r2 = _mm512_mask_mov_ps(r2, _mm512_cmp_ps_mask(X2, end, _CMP_NLT_UQ), q2);
+        }
+        if (nt) {
+            _mm512_stream_ps(out, r0), _mm512_stream_ps(out + 16, r1), _mm512_stream_ps(out + 32, r2);
+        } else {
+            const unsigned f = 3 * m;  // floats to store
+            _mm512_mask_storeu_ps(out, first_lanes(f), r0);
+            _mm512_mask_storeu_ps(out + 16, first_lanes(f > 16 ? f - 16 : 0), r1);
+            _mm512_mask_storeu_ps(out + 32, first_lanes(f > 32 ? f - 32 : 0), r2);
+        }
+        return true;
     }
 };
 
-/// The whole 16-point steps of sorted_run3_512 from point k (out + 3 k
-/// 64-byte aligned when Stream: non-temporal stores of whole cache lines)
-/// while 16 points remain and are below t_end; returns the new k.
+/// The 16-point steps of sorted_walk3_512 from point k (out + 3 k 64-byte
+/// aligned when Stream: non-temporal stores of whole cache lines) while
+/// 16 points remain, are sorted and are below the segment's end knot;
+/// returns the new k. (It takes the coefficients by value: as members of
+/// an object whose address a call takes, GCC read them from memory each
+/// step.)
 template <int Order, bool Stream>
-CRSPLINE_TARGET_AVX512 std::size_t bulk512(const steps512<Order>& s, const float* t, float* out, std::size_t k,
-                                           std::size_t n, unsigned& bad) noexcept {
-    unsigned ok = 0xFFFF;
+CRSPLINE_TARGET_AVX512 std::size_t bulk512(const steps512<Order> s, const float* t, float* out, std::size_t k,
+                                           std::size_t n) noexcept {
     for (; k + 16 <= n; k += 16) {
         const __m512 x = _mm512_loadu_ps(t + k);
-        // Stop before a step with a point at or past the end knot (or NaN).
-        if (_mm512_cmp_ps_mask(x, s.vend, _CMP_LT_OQ) != 0xFFFF) break;
-        ok &= _mm512_cmp_ps_mask(_mm512_loadu_ps(t + k - 1), x, _CMP_LE_OQ);  // sorted; false for NaN too
+        const unsigned go = unsigned(_mm512_cmp_ps_mask(x, s.vend, _CMP_LT_OQ)) &
+                            unsigned(_mm512_cmp_ps_mask(_mm512_loadu_ps(t + k - 1), x, _CMP_LE_OQ));
+        if (go != 0xFFFF) break;  // unsorted, NaN, or past the end knot: a step for sorted_walk3_512
         __m512 r0, r1, r2;
         s.points(x, r0, r1, r2);
         float* dst = out + 3 * k;
@@ -287,43 +309,49 @@ CRSPLINE_TARGET_AVX512 std::size_t bulk512(const steps512<Order>& s, const float
             _mm512_storeu_ps(dst, r0), _mm512_storeu_ps(dst + 16, r1), _mm512_storeu_ps(dst + 32, r2);
         }
     }
-    bad |= unsigned(ok != 0xFFFF);
     return k;
 }
 
-/// sorted_run3 for floats on a CPU with AVX-512F: one masked step of up to
-/// 16 points until out + 3 k is 64-byte aligned (12 h = -out mod 64 bytes,
-/// h in 1..16), then whole 16-point steps (non-temporal stores of whole
-/// cache lines when stream), then one masked step for what is left below
-/// t_end. No scalar point and no 8-lane step: a run costs its
-/// coefficients (4 masked loads, 12 permutes) and two masked steps more
-/// than its points.
-template <int Order>
-CRSPLINE_TARGET_AVX512 std::size_t sorted_run3_512(const float* o, const float* a, const float* b, const float* c,
-                                                   float t0, float ih, const float* t, float* out, std::size_t n,
-                                                   float& previous, bool stream, float t_end,
-                                                   bool& unsorted) noexcept {
-    if (n == 0) return 0;
-    const steps512<Order> s(o, a, b, c, t0, ih, t_end);
-    unsigned bad = 0;
+/// A whole sorted batch of 3-D floats on a CPU with AVX-512F, the segments
+/// walked inside the vector loop (issue 30): the positions (Order 0) or
+/// velocities (Order 1) at t[0..n) into out (3 n floats), the same bits as
+/// the runs of sorted_run3 and of the portable kernel. seg: t[0]'s segment.
+/// Segments gives the curve's segments: next(seg, x), the segment of x
+/// from seg on (the sorted walk's rule: while x >= the next knot, the next
+/// segment), and load(seg, o, a, b, c, t0, ih, t_end), the coefficients
+/// as sorted_run3 takes them. One step of up to 16 points brings
+/// out + 3 k to 64-byte alignment (12 h = -out mod 64 bytes, h in 1..16);
+/// then every step is 16 points, its stores whole cache lines
+/// (non-temporal when stream); a step that crosses a knot is computed on
+/// both segments and blended, so there are no short runs at the knots: a
+/// knot costs its segment's coefficients and one step computed twice.
+/// (With runs per segment, the partial cache lines at each run's two ends,
+/// the scalar or masked head and tail and a run's set-up cost about 60 ns
+/// a run, 0.15 ms of the benchmark's 3.3 ms.) Returns false as soon as a
+/// step is not sorted (or holds NaN): the caller starts over; out is then
+/// partly written.
+template <int Order, class Segments>
+CRSPLINE_TARGET_AVX512 bool sorted_walk3_512(const Segments& segments, std::size_t seg, const float* t, float* out,
+                                             std::size_t n, bool stream) noexcept {
+    if (n == 0) return true;
+    steps512<Order> s;
+    s.load(segments, seg);
     // 3 h = -(out mod 64) / 4 (mod 16), and 11 = 1 / 3 (mod 16).
     const unsigned quarter = unsigned(reinterpret_cast<std::uintptr_t>(out) % 64) / 4;
     const unsigned h0 = (11 * ((16 - quarter) % 16)) % 16, h = h0 == 0 ? 16 : h0;
     const unsigned m = unsigned(n < h ? n : h);
-    std::size_t k = s.masked_step(t, out, m, previous, true, bad);
-    if (k == m && k < n) {
-        // out + 3 k is 64-byte aligned here.
-        k = stream ? bulk512<Order, true>(s, t, out, k, n, bad) : bulk512<Order, false>(s, t, out, k, n, bad);
-        if (k < n) k += s.masked_step(t + k, out + 3 * k, unsigned(n - k < 16 ? n - k : 16), t[k - 1], false, bad);
+    if (!s.step(segments, seg, t, out, m, true, stream && m == 16)) return false;
+    std::size_t k = m;
+    // out + 3 k is 64-byte aligned from here on.
+    while (k + 16 <= n) {
+        k = stream ? bulk512<Order, true>(s, t, out, k, n) : bulk512<Order, false>(s, t, out, k, n);
+        if (k + 16 <= n) {
+            if (!s.step(segments, seg, t + k, out + 3 * k, 16, false, stream)) return false;
+            k += 16;
+        }
     }
-    previous = t[k - 1];
-    unsorted = unsorted || bad != 0;
-    return k;
+    return k == n || s.step(segments, seg, t + k, out + 3 * k, unsigned(n - k), false, false);
 }
-
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
 
 /// One sorted run of a 3-D segment (double or float), as catmull_rom's
 /// portable run_kernel: out[k] = o + u (a + u (b + u c)) (Order 0) or
@@ -331,7 +359,7 @@ CRSPLINE_TARGET_AVX512 std::size_t sorted_run3_512(const float* o, const float* 
 /// the points after it while they are below t_end (at most n); returns how
 /// many. Sets unsorted when t is not sorted there (or holds a NaN). out
 /// holds 3 n scalars. Large outputs (stream) use non-temporal stores once
-/// out is 32-byte aligned. (Floats on a CPU with AVX-512F: sorted_run3_512,
+/// out is 32-byte aligned. (Floats on a CPU with AVX-512F: sorted_walk3_512,
 /// the same bits.)
 template <int Order, class T>
 CRSPLINE_TARGET_AVX2 std::size_t sorted_run3(const T* o, const T* a, const T* b, const T* c, T t0, T ih,
