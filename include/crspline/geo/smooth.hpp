@@ -1028,6 +1028,8 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
         clean_part c;
         c.ring = in.part_kinds[p] == part_kind::ring;
         c.feature = f;
+        c.points.reserve(in.part_size(p));
+        c.source.reserve(in.part_size(p));
         for (std::size_t v = in.part_offsets[p]; v < in.part_offsets[p + 1]; ++v) {
             const std::array<double, 2> pt{in.xy[2 * v], in.xy[2 * v + 1]};
             if (!c.points.empty() && c.points.back() == pt) continue;
@@ -1040,12 +1042,13 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
         }
         const std::size_t need = c.ring ? 3 : 2;
         // Distinct points, counted up to `need` (a ring may go back and forth).
-        std::vector<std::array<double, 2>> seen;
+        std::array<std::array<double, 2>, 3> seen{};
+        std::size_t distinct = 0;
         for (const auto& q : c.points) {
-            if (seen.size() == need) break;
-            if (std::find(seen.begin(), seen.end(), q) == seen.end()) seen.push_back(q);
+            if (distinct == need) break;
+            if (std::find(seen.begin(), seen.begin() + std::ptrdiff_t(distinct), q) == seen.begin() + std::ptrdiff_t(distinct))
+                seen[distinct++] = q;
         }
-        const std::size_t distinct = seen.size();
         if (distinct < need) {
             rep.status = feature_status::degenerate;
             rep.message = "part " + std::to_string(part_index[p]) + " (" + (c.ring ? "ring" : "line") + ") has " +
@@ -1064,6 +1067,7 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
         auto& a = arcs[i];
         const auto& t = topo.arcs[i];
         a.closed = t.closed;
+        a.pts.reserve(t.vertices.size());
         for (std::size_t v : t.vertices) a.pts.push_back(p2{{topo.points[v][0], topo.points[v][1]}});
         // A two-point open arc is its segment.
         a.level.assign(a.pts.size(), a.pts.size() == 2 && !a.closed ? detail::linear_level : 0);

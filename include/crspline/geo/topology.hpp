@@ -82,13 +82,41 @@ struct clean_part {
 /// its own (no junctions, nothing shared): smoothing part by part.
 inline topology build_topology(const std::vector<clean_part>& parts, bool share) {
     topology topo;
-    std::unordered_map<detail::point_key, std::size_t, detail::point_key_hash> ids;
-    std::vector<std::vector<std::size_t>> part_ids(parts.size());
+    std::size_t total = 0;
+    for (const auto& part : parts) total += part.points.size();
+    // Vertex ids by exact coordinates: an open-addressing table of ids (a
+    // power of two at least twice the vertices, probed linearly), so no
+    // allocation per vertex; ids in order of first occurrence.
+    std::vector<detail::point_key> keys;
+    std::vector<std::size_t> table;
+    std::size_t mask = 0;
+    int bits = 4;
+    if (share) {
+        std::size_t cap = 16;
+        while (cap < 2 * total) cap *= 2, ++bits;
+        table.assign(cap, SIZE_MAX);
+        mask = cap - 1;
+        keys.reserve(total);
+        topo.points.reserve(total);
+    }
+    detail::point_key_hash hasher;
     auto id_of = [&](const std::array<double, 2>& p) {
-        auto [it, fresh] = ids.try_emplace(detail::key_of(p[0], p[1]), topo.points.size());
-        if (fresh) topo.points.push_back(p);
-        return it->second;
+        const detail::point_key k = detail::key_of(p[0], p[1]);
+        // The hash's top bits (Fibonacci hashing): round coordinates have
+        // low mantissa bits that are all zero.
+        const std::uint64_t mixed = std::uint64_t(hasher(k)) * 0x9E3779B97F4A7C15ull;
+        for (std::size_t h = std::size_t(mixed >> (64 - bits)) & mask;; h = (h + 1) & mask) {
+            const std::size_t id = table[h];
+            if (id == SIZE_MAX) {
+                table[h] = topo.points.size();
+                keys.push_back(k);
+                topo.points.push_back(p);
+                return table[h];
+            }
+            if (keys[id] == k) return id;
+        }
     };
+    std::vector<std::vector<std::size_t>> part_ids(parts.size());
     for (std::size_t q = 0; q < parts.size(); ++q) {
         part_ids[q].reserve(parts[q].points.size());
         for (const auto& p : parts[q].points) {
@@ -157,9 +185,12 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
                 reversed = true;
             }
         } else {
-            std::vector<std::size_t> r(seq.rbegin(), seq.rend());
-            if (r < seq) {
-                seq = std::move(r);
+            // Reversed if the reversed sequence is lexicographically smaller.
+            const std::size_t n = seq.size();
+            std::size_t i = 0;
+            while (i < n && seq[n - 1 - i] == seq[i]) ++i;
+            if (i < n && seq[n - 1 - i] < seq[i]) {
+                std::reverse(seq.begin(), seq.end());
                 std::reverse(src.begin(), src.end());
                 reversed = true;
             }
@@ -204,7 +235,7 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
                 seq.push_back(s[i]);
                 ssrc.push_back(src[i]);
                 if (topo.junction[s[i]]) {
-                    add_arc(q, seq, ssrc, false);
+                    add_arc(q, std::move(seq), std::move(ssrc), false);
                     seq = {s[i]};
                     ssrc = {src[i]};
                 }
@@ -215,7 +246,7 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
                 seq.push_back(s[i]);
                 ssrc.push_back(src[i]);
                 if (topo.junction[s[i]]) {
-                    add_arc(q, seq, ssrc, false);
+                    add_arc(q, std::move(seq), std::move(ssrc), false);
                     seq = {s[i]};
                     ssrc = {src[i]};
                 }
