@@ -10,6 +10,8 @@
 //       10^5 keys; linear in the keys (block tridiagonal steps), so time per
 //       key (the counter) should stay flat.
 //   rotation/pose/eval: a pose curve, 10^6 samples.
+//   */portable: the same batch on the portable lanes (SSE2) where the CPU
+//       has the AVX2 clone (batch.hpp), to show what the clone gains.
 // Figures go to BENCHMARKS.md with the run that produced them.
 #include <benchmark/benchmark.h>
 
@@ -68,6 +70,25 @@ void eval_quaternion(benchmark::State& state, rot::spline_kind kind) {
     state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(samples));
 }
 
+// The same batch on the portable lanes (two SSE2 registers per four
+// samples), where the CPU would take the AVX2 clone: what the clone gains.
+void eval_quaternion_portable(benchmark::State& state, rot::spline_kind kind) {
+    const auto keys = random_keys(100);
+    rot::rotation_options<double> o;
+    o.kind = kind;
+    const rot::quaternion_spline<double> c(keys, o);
+    const auto t = random_t(c.grid().front(), c.grid().back(), samples);
+    std::vector<double> q(4 * samples);
+    rot::batch_rows<double> rows;
+    rows.q = q.data();
+    for (auto _ : state) {
+        c.evaluate(std::span<const double>(t), rows, 0, rot::frame::world, rot::detail_batch::isa::portable);
+        benchmark::DoNotOptimize(q.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(samples));
+}
+
 void eval_c2(benchmark::State& state) {
     const auto keys = random_keys(100);
     std::vector<double> times(keys.size());
@@ -90,15 +111,19 @@ rot::c2_rotation_spline<double> c2_curve() {
     return rot::c2_rotation_spline<double>{std::span<const double>(times), std::span<const quat>(keys)};
 }
 
-// Rotation and body-frame angular velocity, as SciPy's RotationSpline(t, 1) needs.
-void eval_c2_velocity(benchmark::State& state) {
+// Rotation and body-frame angular velocity, as SciPy's RotationSpline(t, 1)
+// needs (order 1), or the rotation alone in the same arrays (order 0, as
+// Python's spline(t) writes it); on the path the CPU takes, or the portable one.
+void eval_c2_rows(benchmark::State& state, int order, bool portable) {
     const auto c = c2_curve();
     const auto t = random_t(c.grid().front(), c.grid().back(), samples);
     std::vector<double> q(4 * samples), w(3 * samples);
     rot::batch_rows<double> rows;
-    rows.q = q.data(), rows.omega = w.data();
+    rows.q = q.data();
+    if (order >= 1) rows.omega = w.data();
+    const auto path = portable ? rot::detail_batch::isa::portable : rot::detail_batch::best_isa();
     for (auto _ : state) {
-        c.evaluate(std::span<const double>(t), rows, 1, rot::frame::body);
+        c.evaluate(std::span<const double>(t), rows, order, rot::frame::body, false, path);
         benchmark::DoNotOptimize(q.data());
         benchmark::DoNotOptimize(w.data());
         benchmark::ClobberMemory();
@@ -186,7 +211,18 @@ BENCHMARK_CAPTURE(eval_quaternion, slerp, rot::spline_kind::piecewise_slerp)
     ->Name("rotation/eval/slerp")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(eval_quaternion, squad, rot::spline_kind::squad)->Name("rotation/eval/squad")->Unit(benchmark::kMillisecond);
 BENCHMARK(eval_c2)->Name("rotation/eval/c2")->Unit(benchmark::kMillisecond);
-BENCHMARK(eval_c2_velocity)->Name("rotation/eval/c2_velocity")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(eval_c2_rows, velocity, 1, false)->Name("rotation/eval/c2_velocity")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(eval_c2_rows, velocity_portable, 1, true)
+    ->Name("rotation/eval/c2_velocity/portable")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(eval_c2_rows, rows_portable, 0, true)->Name("rotation/eval/c2/portable")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(eval_quaternion, kochanek_bartels, rot::spline_kind::kochanek_bartels)
+    ->Name("rotation/eval/kochanek_bartels")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(eval_quaternion, barry_goldman, rot::spline_kind::barry_goldman)
+    ->Name("rotation/eval/barry_goldman")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(eval_quaternion_portable, catmull_rom, rot::spline_kind::catmull_rom)
+    ->Name("rotation/eval/catmull_rom/portable")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(eval_quaternion_portable, squad, rot::spline_kind::squad)
+    ->Name("rotation/eval/squad/portable")->Unit(benchmark::kMillisecond);
 BENCHMARK(eval_c2_scalar)->Name("rotation/eval/c2/scalar")->Unit(benchmark::kMillisecond);
 BENCHMARK(eval_slerp_scalar)->Name("rotation/eval/slerp/scalar")->Unit(benchmark::kMillisecond);
 BENCHMARK(construct_c2)->Name("rotation/c2/construct")->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);

@@ -31,6 +31,9 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(CRSPLINE_NO_X86_DISPATCH)
+#include <immintrin.h>  // declares the AVX builtins the clone uses
+#endif
 
 #include "../detail/knot_index.hpp"
 #include "quaternion.hpp"
@@ -54,8 +57,15 @@ struct batch_rows {
 }  // namespace crspline::rotation
 
 #if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
+// GCC notes (-Wpsabi) that a function taking or returning a 32-byte vector
+// is called differently with AVX than without. The AVX2 clone's helpers do
+// (v4), and are only ever inlined inside the clone, so the note says
+// nothing here; but GCC gives it for templates instantiated at the end of
+// the translation unit, outside any push/pop of this header. So it is
+// turned off from here to the end of the including file (it concerns ABI
+// differences between GCC versions and AVX settings only).
 #pragma GCC diagnostic ignored "-Wpsabi"
+#pragma GCC diagnostic push
 #endif
 
 namespace crspline::rotation::detail_batch {
@@ -82,6 +92,7 @@ struct vm {
     m2 lo, hi;
     friend vm operator|(vm a, vm b) noexcept { return {a.lo | b.lo, a.hi | b.hi}; }
     friend vm operator&(vm a, vm b) noexcept { return {a.lo & b.lo, a.hi & b.hi}; }
+    friend vm operator^(vm a, vm b) noexcept { return {a.lo ^ b.lo, a.hi ^ b.hi}; }
 };
 struct vd {
     v2 lo, hi;
@@ -129,9 +140,62 @@ inline constexpr int vd_width = 4;
 #endif
 }
 [[gnu::always_inline]] inline vd vsqrt(vd x) noexcept { return {vsqrt(x.lo), vsqrt(x.hi)}; }
+[[gnu::always_inline]] inline void set_lane(vd& v, int l, double x) noexcept { v.set(l, x); }
 #else
 #define CRSPLINE_ROTATION_LANES 0
 #endif
+
+// The AVX2 clone (x86-64 with GCC): the same kernels on four doubles in one
+// 32-byte register (v4), compiled inside functions with target("avx2") and
+// chosen at run time by a CPUID test (run() below), as detail/x86_kernels.hpp
+// does for the point curves: nothing needs -mavx2 or -march. The target has
+// no FMA, so every operation rounds as the portable code's does: the two
+// paths give the same bits (tests/rotation/test_rotation_batch.cpp). Clang
+// takes the portable path (it refuses 32-byte vectors in functions without
+// AVX even when they are inlined into one that has it).
+#if CRSPLINE_ROTATION_LANES && defined(__x86_64__) && !defined(__clang__) && !defined(CRSPLINE_NO_X86_DISPATCH)
+#define CRSPLINE_ROTATION_AVX2 1
+typedef double v4 __attribute__((vector_size(32)));
+typedef decltype(v4{} < v4{}) m4;  // what a comparison gives
+// Templates, not functions: a function with a 32-byte vector argument or
+// result draws GCC's -Wpsabi note at the end of every translation unit,
+// outside this header's pragma; a template's only where it is instantiated
+// (inside the clone).
+#define CRSPLINE_V4 template <class V> requires std::is_same_v<V, v4> [[gnu::always_inline]] inline
+CRSPLINE_V4 V sel(m4 m, V a, V b) noexcept { return (V)((m & (m4)a) | (~m & (m4)b)); }
+CRSPLINE_V4 V negate_if(m4 m, V x) noexcept { return (V)((m4)x ^ (m & static_cast<long>(0x8000000000000000ULL))); }
+CRSPLINE_V4 V vsqrt(V x) noexcept { return __builtin_ia32_sqrtpd256(x); }  // correctly rounded
+CRSPLINE_V4 void set_lane(V& v, int l, double x) noexcept { v[l] = x; }
+#else
+#define CRSPLINE_ROTATION_AVX2 0
+#endif
+
+/// Which code runs a batch: the portable lanes, or the AVX2 clone.
+enum class isa { portable, avx2 };
+
+/// The CPU's answer, once (constant after).
+inline isa best_isa() noexcept {
+#if CRSPLINE_ROTATION_AVX2
+    static const bool avx2 = __builtin_cpu_supports("avx2");
+    return avx2 ? isa::avx2 : isa::portable;
+#else
+    return isa::portable;
+#endif
+}
+
+/// The batch blocks are lambdas that the AVX2 clone must compile inside its
+/// own body: always_inline.
+#if defined(__GNUC__) || defined(__clang__)
+#define CRSPLINE_ROTATION_BLOCK __attribute__((always_inline))
+#else
+#define CRSPLINE_ROTATION_BLOCK
+#endif
+
+/// A lane type as a value: the batch blocks take one to know their V.
+template <class V>
+struct lanes_of {
+    using type = V;
+};
 
 // Scalar lanes (one sample; float and long double, or no vector extension).
 template <class S>
@@ -177,47 +241,116 @@ inline constexpr double poly_sincos_limit = 1 << 19;
 /// fdlibm's kernels (k_sin.c, k_cos.c), whose polynomials are within 2^-58
 /// of sin and cos on [-pi/4, pi/4], so the result is within 1 ulp of the
 /// true value (tested against std:: at random, tests/rotation/).
-[[gnu::always_inline]] inline sin_cos<vd> poly_sincos(vd x) noexcept {
+template <class V>
+[[gnu::always_inline]] inline sin_cos<V> poly_sincos(V x) noexcept {
     bool in_range = true;
     for (int l = 0; l < vd_width; ++l) in_range &= std::abs(x[l]) <= poly_sincos_limit;
     if (!in_range) [[unlikely]] {
-        sin_cos<vd> r{x, x};
-        for (int l = 0; l < vd_width; ++l) r.s.set(l, std::sin(x[l])), r.c.set(l, std::cos(x[l]));
+        sin_cos<V> r{x, x};
+        for (int l = 0; l < vd_width; ++l) set_lane(r.s, l, std::sin(x[l])), set_lane(r.c, l, std::cos(x[l]));
         return r;
     }
     const double magic = 6755399441055744.0;  // 1.5 * 2^52
-    const vd n = (x * 6.36619772367581382433e-01 + magic) - magic;  // round(x 2/pi)
+    const V n = (x * 6.36619772367581382433e-01 + magic) - magic;  // round(x 2/pi)
     const double p1 = 1.57079632673412561417e+00, p2 = 6.07710050630396597660e-11,
                  p3 = 2.02226624879595063154e-21;  // pi/2 = p1 + p2 + p3 + O(1e-32)
-    const vd r = ((x - n * p1) - n * p2) - n * p3;
-    const vd z = r * r;
+    const V r = ((x - n * p1) - n * p2) - n * p3;
+    const V z = r * r;
     // fdlibm __kernel_sin(r, 0, 0): r + r^3 (S1 + z S2 + ... + z^5 S6).
-    const vd ps = 8.33333333332248946124e-03 +
+    const V ps = 8.33333333332248946124e-03 +
                   z * (-1.98412698298579493134e-04 +
                        z * (2.75573137070700676789e-06 + z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)));
-    const vd s = r + (z * r) * (-1.66666666666666324348e-01 + z * ps);
+    const V s = r + (z * r) * (-1.66666666666666324348e-01 + z * ps);
     // fdlibm __kernel_cos(r, 0): 1 - z/2 + z^2 (C1 + ... + z^5 C6), the
     // rounding of 1 - z/2 recovered as (1 - w) - z/2.
-    const vd pc = z * (4.16666666666666019037e-02 +
+    const V pc = z * (4.16666666666666019037e-02 +
                        z * (-1.38888888888741095749e-03 +
                             z * (2.48015872894767294178e-05 +
                                  z * (-2.75573143513906633035e-07 +
                                       z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
-    const vd hz = 0.5 * z, w = 1.0 - hz;
-    const vd c = w + (((1.0 - w) - hz) + z * pc);
+    const V hz = 0.5 * z, w = 1.0 - hz;
+    const V c = w + (((1.0 - w) - hz) + z * pc);
     // The quadrant j = n mod 4 (floor(n/4) = round(n/4 - 3/8) for integer n).
-    const vd f = ((n * 0.25 - 0.375) + magic) - magic;
-    const vd j = n - 4.0 * f;
-    const vm odd = (j == 1.0) | (j == 3.0);
+    const V f = ((n * 0.25 - 0.375) + magic) - magic;
+    const V j = n - 4.0 * f;
+    const auto odd = (j == 1.0) | (j == 3.0);
     return {negate_if(j >= 2.0, sel(odd, c, s)), negate_if((j == 1.0) | (j == 2.0), sel(odd, s, c))};
 }
 
 [[gnu::always_inline]] inline sin_cos<vd> sincos(vd x) noexcept { return poly_sincos(x); }
 #endif
+#if CRSPLINE_ROTATION_AVX2
+CRSPLINE_V4 sin_cos<V> sincos(V x) noexcept { return poly_sincos(x); }
+#endif
 
 template <class S>
 [[gnu::always_inline]] inline sin_cos<S> sincos(S x) noexcept {
     return {std::sin(x), std::cos(x)};
+}
+
+// ----- the angle of a point in the upper half plane ---------------------------------
+
+/// atan2(y, x) for y >= 0 (the length of a quaternion's vector part and its
+/// w), in [0, pi], lane by lane, for the logs of the slerps between
+/// quaternions that depend on the sample. With lo = min(y, |x|) and hi =
+/// max(y, |x|), atan(lo/hi) in [0, pi/4] is c_k + atan(r), r = (lo - t_k
+/// hi)/(hi + t_k lo), t_k = 0, 1/2 or 1 and c_k = atan(t_k) as a sum of two
+/// doubles. t_k is exact, so t_k hi, t_k lo and (Sterbenz) the numerator
+/// are exact nearly everywhere: r carries two roundings. The breaks (lo/hi
+/// = tan(1/4), 0.7208) leave |r| <= 0.2554, and an angle of at least 1/4
+/// wherever c_k is added, so r's error is below half an ulp of the result
+/// there. atan(r) is its Taylor series to r^27: the first term left out is
+/// below r^29/29 < 2^-59 r. c_k + atan(r) rounds once more, and the
+/// quadrant (pi/2 - a for y > |x|, pi - a for x < 0, pi/2 + a for both,
+/// with pi/2 and pi as sums of two doubles) once more: within 2 ulps of
+/// atan2 (tested against std::atan2 at random,
+/// tests/rotation/test_rotation_batch.cpp). NaN in either argument gives
+/// NaN; x = -0 counts as +0 (atan2(0, -0) is 0 here, pi in std::; a unit
+/// quaternion never has both parts zero).
+template <class V>
+[[gnu::always_inline]] inline V poly_atan2(V y, V x) noexcept {
+    const auto neg = x < 0.0;
+    const V ax = negate_if(neg, x);
+    const auto swap = y > ax;
+    const V lo = sel(swap, ax, y), hi = sel(swap, y, ax);
+    const auto k1 = lo > hi * 0.25534192122103627, k2 = lo > hi * 0.7207592200561265;
+    const V zero{};
+    const V tk = sel(k2, zero + 1.0, sel(k1, zero + 0.5, zero));
+    const V ch = sel(k2, zero + 0.7853981633974483, sel(k1, zero + 0.4636476090008061, zero));
+    const V cl = sel(k2, zero + 3.061616997868383e-17, sel(k1, zero + 2.2698777452961687e-17, zero));
+    const V r = sel(hi == 0.0, zero, (lo - tk * hi) / (hi + tk * lo));  // y = x = 0: angle 0
+    const V z = r * r;
+    // atan r = r + r z P(z), P(z) = sum_{k=1..13} (-1)^k z^(k-1)/(2k+1).
+    V p = zero - 0.037037037037037035;
+    p = p * z + 0.04;
+    p = p * z - 0.043478260869565216;
+    p = p * z + 0.047619047619047616;
+    p = p * z - 0.05263157894736842;
+    p = p * z + 0.058823529411764705;
+    p = p * z - 0.06666666666666667;
+    p = p * z + 0.07692307692307693;
+    p = p * z - 0.09090909090909091;
+    p = p * z + 0.1111111111111111;
+    p = p * z - 0.14285714285714285;
+    p = p * z + 0.2;
+    p = p * z - 0.3333333333333333;
+    const V a = ch + (cl + (r + (r * z) * p));
+    // The quadrant: a, pi/2 - a (y > |x|), pi - a (x < 0), pi/2 + a (both),
+    // as b_hi + (b_lo +- a): one rounding for the sum.
+    const V bh = sel(swap, zero + 1.5707963267948966, sel(neg, zero + 3.141592653589793, zero));
+    const V bl = sel(swap, zero + 6.123233995736766e-17, sel(neg, zero + 1.2246467991473532e-16, zero));
+    return bh + (bl + negate_if(swap ^ neg, a));
+}
+
+#if CRSPLINE_ROTATION_LANES
+[[gnu::always_inline]] inline vd atan2_upper(vd y, vd x) noexcept { return poly_atan2(y, x); }
+#endif
+#if CRSPLINE_ROTATION_AVX2
+CRSPLINE_V4 V atan2_upper(V y, V x) noexcept { return poly_atan2(y, x); }
+#endif
+template <class S>
+[[gnu::always_inline]] inline S atan2_upper(S y, S x) noexcept {
+    return std::atan2(y, x);
 }
 
 // ----- series of the Jacobian coefficients (so3.hpp) -------------------------------
@@ -291,6 +424,9 @@ template <class S>
 #if CRSPLINE_ROTATION_LANES
 [[gnu::always_inline]] inline double lane(vd x, int l) noexcept { return x[l]; }
 #endif
+#if CRSPLINE_ROTATION_AVX2
+CRSPLINE_V4 double lane(V x, int l) noexcept { return x[l]; }
+#endif
 
 template <class T, class V>
 [[gnu::always_inline]] inline void store(const rows<T>& out, std::size_t k, int valid, const ql<V>& q, const v3l<V>* w,
@@ -363,7 +499,7 @@ struct c2_packed {
 /// c2_rotation_spline::evaluate_on's, on lanes.
 template <class T, class V, class Seg>
 [[gnu::always_inline]] inline void c2_lanes(Seg seg, V tau, int order, frame f, ql<V>& q, v3l<V>& w, v3l<V>& acc) noexcept {
-    auto g = [&](auto member) { return make_lanes<V>([&](int l) { return member(seg(l)); }); };
+    auto g = [&](auto member) CRSPLINE_ROTATION_BLOCK { return make_lanes<V>([&](int l) { return member(seg(l)); }); };
     v3l<V> c3, c2, c1;
     c3.x = g([](const c2_packed<T>& s) { return s.c3[0]; }), c3.y = g([](const c2_packed<T>& s) { return s.c3[1]; }),
     c3.z = g([](const c2_packed<T>& s) { return s.c3[2]; });
@@ -387,13 +523,13 @@ template <class T, class V, class Seg>
                     (T(3) * c3.z * tau + T(2) * c2.z) * tau + c1.z};
     const V theta = T(2) * a, z = theta * theta;
     const V k1 = sinc * sinc / T(2);
-    const typename pack<T>::M small = theta < T(2);
+    const auto small = theta < T(2);
     // theta >= 2: the closed forms, with sin theta = 2 s c, cos theta = c^2 - s^2.
     const V sin_t = T(2) * sc.s * sc.c, cos_t = sc.c * sc.c - sc.s * sc.s;
     const V big = sel(small, V{} + T(1), theta);  // keeps the unused closed forms finite at theta = 0
     const V zb = big * big;
     const V k2 = sel(small, horner16<T>(series.k2, z), (big - sin_t) / (zb * big));
-    auto jr = [&](const v3l<V>& v) {
+    auto jr = [&](const v3l<V>& v) CRSPLINE_ROTATION_BLOCK {
         const v3l<V> pv = cross(th, v), ppv = cross(th, pv);
         return v3l<V>{v.x - k1 * pv.x + k2 * ppv.x, v.y - k1 * pv.y + k2 * ppv.y, v.z - k1 * pv.z + k2 * ppv.z};
     };
@@ -416,10 +552,9 @@ template <class T, class V, class Seg>
 
 /// Samples k .. k + width - 1 of the C2 spline (segments seg[0..width-1]),
 /// the first `valid` of them written.
-template <class T>
+template <class T, class V = typename pack<T>::V>
 [[gnu::always_inline]] inline void c2_block(const c2_packed<T>* segs, const std::size_t* seg, const T* t, std::size_t k,
                                             int valid, int order, frame f, const rows<T>& out) noexcept {
-    using V = typename pack<T>::V;
     const V tau = make_lanes<V>([&](int l) { return t[l] - segs[seg[l]].t0; });
     ql<V> q;
     v3l<V> w, acc;
@@ -442,11 +577,10 @@ struct pose_packed {
 /// velocity by cubic_segment's arithmetic (at(u), dt(u, 1); at t_end the
 /// last point exactly, as catmull_rom gives it), the rotation by c2_lanes.
 /// out[k + l] for the first `valid` lanes.
-template <class T, class Sample>
+template <class T, class V, class Sample>
 [[gnu::always_inline]] inline void pose_block(const pose_packed<T>* segs, const std::size_t* seg, const T* t, std::size_t k,
                                               int valid, frame f, T t_end, const T* end_point, Sample* out) noexcept {
-    using V = typename pack<T>::V;
-    auto g = [&](auto member) { return make_lanes<V>([&](int l) { return member(segs[seg[l]]); }); };
+    auto g = [&](auto member) CRSPLINE_ROTATION_BLOCK { return make_lanes<V>([&](int l) { return member(segs[seg[l]]); }); };
     const V u = make_lanes<V>([&](int l) { return (t[l] - segs[seg[l]].rot.t0) * segs[seg[l]].inv_h; });
     const V tau = make_lanes<V>([&](int l) { return t[l] - segs[seg[l]].rot.t0; });
     const V inv_h = g([](const pose_packed<T>& s) { return s.inv_h; });
@@ -485,11 +619,10 @@ struct slerp_packed {
     T a[4];
 };
 
-template <class T>
+template <class T, class V = typename pack<T>::V>
 [[gnu::always_inline]] inline void slerp_block(const slerp_packed<T>* segs, const std::size_t* seg, const T* t,
                                                std::size_t k, int valid, int order, frame f, const rows<T>& out) noexcept {
-    using V = typename pack<T>::V;
-    auto g = [&](auto member) { return make_lanes<V>([&](int l) { return member(segs[seg[l]]); }); };
+    auto g = [&](auto member) CRSPLINE_ROTATION_BLOCK { return make_lanes<V>([&](int l) { return member(segs[seg[l]]); }); };
     const V u = make_lanes<V>([&](int l) { return (t[l] - segs[seg[l]].t0) * segs[seg[l]].inv_h; });
     const V ang = u * g([](const slerp_packed<T>& s) { return s.half_angle; });
     const v3l<V> n{g([](const slerp_packed<T>& s) { return s.axis[0]; }), g([](const slerp_packed<T>& s) { return s.axis[1]; }),
@@ -508,14 +641,106 @@ template <class T>
     store<T, V>(out, k, valid, q, &w, order >= 2 ? &acc : nullptr);
 }
 
+// ----- the De Casteljau family and Squad ---------------------------------------------------
+
+/// A slerp whose two ends do not depend on the sample, packed: slerp(a, b,
+/// s) = exp(s L) a with L = log(b a*) = angle * axis (half-angle units, as
+/// quaternion.hpp's exp and log).
+template <class T>
+struct fixed_slerp {
+    T angle;
+    T axis[3];
+    T a[4];
+};
+
+/// One segment of a De Casteljau pyramid of 4 controls (Catmull-Rom,
+/// Kochanek-Bartels, De Casteljau) or of Barry-Goldman's, packed: the three
+/// slerps of the first level between fixed pairs (f), and the parameter of
+/// each of the six slerps, s_j = (t - ta[j]) inv[j] (j < 3: the first level;
+/// 3, 4 the second; 5 the last). The De Casteljau curves have one parameter
+/// u for all six; Barry-Goldman's run over their own knot intervals. A
+/// zero-length segment has every angle and inv 0 and every a its key: the
+/// curve rests there, exactly.
+template <class T>
+struct pyramid_packed {
+    T ta[6], inv[6];
+    fixed_slerp<T> f[3];
+};
+
+/// One segment of Squad, packed: slerp(slerp(q_i, q_(i+1), u), slerp(s_i+,
+/// s_(i+1)-, u), 2u(1-u)), u = (t - t0) inv_h; f the two inner slerps.
+template <class T>
+struct squad_packed {
+    T t0, inv_h;
+    fixed_slerp<T> f[2];
+};
+
+/// exp(s L) a on lanes, L and a from each lane's fixed_slerp.
+template <class T, class V, class Get>
+[[gnu::always_inline]] inline ql<V> fixed_lanes(Get get, V s) noexcept {
+    auto g = [&](auto member) CRSPLINE_ROTATION_BLOCK { return make_lanes<V>([&](int l) { return member(get(l)); }); };
+    const V ang = s * g([](const fixed_slerp<T>& f) { return f.angle; });
+    const sin_cos<V> sc = sincos(ang);
+    const ql<V> e{sc.c, g([](const fixed_slerp<T>& f) { return f.axis[0]; }) * sc.s,
+                  g([](const fixed_slerp<T>& f) { return f.axis[1]; }) * sc.s, g([](const fixed_slerp<T>& f) { return f.axis[2]; }) * sc.s};
+    const ql<V> a{g([](const fixed_slerp<T>& f) { return f.a[0]; }), g([](const fixed_slerp<T>& f) { return f.a[1]; }),
+                  g([](const fixed_slerp<T>& f) { return f.a[2]; }), g([](const fixed_slerp<T>& f) { return f.a[3]; })};
+    return mul(e, a);
+}
+
+/// slerp(a, b, s) = exp(s log(b a*)) a on lanes whose ends depend on the
+/// sample: the log through atan2_upper (the half angle in [0, pi] along
+/// the vector part; [pi, 0, 0] for b a* = -1, as log() gives), the exp
+/// through sincos. No sign change: a negative a . b takes the long way, as
+/// slerp() does.
+template <class T, class V>
+[[gnu::always_inline]] inline ql<V> slerp_lanes(const ql<V>& a, const ql<V>& b, V s) noexcept {
+    const ql<V> c = mul(b, ql<V>{a.w, -a.x, -a.y, -a.z});
+    const V nv = vsqrt(c.x * c.x + c.y * c.y + c.z * c.z);
+    const sin_cos<V> sc = sincos(s * atan2_upper(nv, c.w));
+    const auto axis = nv > T(0);
+    const V f = sel(axis, sc.s / nv, V{});
+    return mul(ql<V>{sc.c, sel(axis, c.x * f, sc.s), c.y * f, c.z * f}, a);
+}
+
+/// Samples k .. k + width - 1 of a pyramid curve (rotations only).
+/// uniform: one parameter for all six slerps (the De Casteljau curves).
+template <class T, class V, bool uniform>
+[[gnu::always_inline]] inline void pyramid_block(const pyramid_packed<T>* segs, const std::size_t* seg, const T* t,
+                                                 std::size_t k, int valid, const rows<T>& out) noexcept {
+    V s[6];
+    for (int j = 0; j < 6; ++j) {
+        if (uniform && j > 0) {
+            s[j] = s[0];
+            continue;
+        }
+        s[j] = make_lanes<V>([&](int l) { return (t[l] - segs[seg[l]].ta[j]) * segs[seg[l]].inv[j]; });
+    }
+    ql<V> F[3];
+    for (int j = 0; j < 3; ++j) F[j] = fixed_lanes<T>([&](int l) -> const fixed_slerp<T>& { return segs[seg[l]].f[j]; }, s[j]);
+    const ql<V> D0 = slerp_lanes<T>(F[0], F[1], s[3]), D1 = slerp_lanes<T>(F[1], F[2], s[4]);
+    store<T, V>(out, k, valid, slerp_lanes<T>(D0, D1, s[5]), nullptr, nullptr);
+}
+
+/// Samples k .. k + width - 1 of a Squad curve (rotations only).
+template <class T, class V>
+[[gnu::always_inline]] inline void squad_block(const squad_packed<T>* segs, const std::size_t* seg, const T* t, std::size_t k,
+                                               int valid, const rows<T>& out) noexcept {
+    const V u = make_lanes<V>([&](int l) { return (t[l] - segs[seg[l]].t0) * segs[seg[l]].inv_h; });
+    const ql<V> a = fixed_lanes<T>([&](int l) -> const fixed_slerp<T>& { return segs[seg[l]].f[0]; }, u);
+    const ql<V> b = fixed_lanes<T>([&](int l) -> const fixed_slerp<T>& { return segs[seg[l]].f[1]; }, u);
+    store<T, V>(out, k, valid, slerp_lanes<T>(a, b, T(2) * u * (T(1) - u)), nullptr, nullptr);
+}
+
 // ----- the driver -------------------------------------------------------------------------
 
-/// Runs block(segs, seg, t, k, valid, order, f, out) over samples t[0..n) two
-/// (pack width) at a time; the segment of each from locate(k, t[k]). The
+/// Runs block(lanes_of<V>{}, seg, t, k, valid) over samples t[0..n) four (a
+/// pack's width) at a time; the segment of each from locate(k, t[k]). The
 /// last, partial block repeats its last sample in the unused lanes and
-/// writes only the valid ones.
-template <class T, class Locate, class Block>
-void run(std::span<const T> t, Locate&& locate, Block&& block) {
+/// writes only the valid ones. The block must be always_inline (the AVX2
+/// clone compiles it inside its own body).
+template <class T, class V, class Locate, class Block>
+[[gnu::always_inline]] inline void run_lanes(std::span<const T> t, Locate& locate, Block& block) {
     constexpr int W = pack<T>::width;
     const std::size_t n = t.size();
     std::size_t seg[W];
@@ -527,8 +752,27 @@ void run(std::span<const T> t, Locate&& locate, Block&& block) {
             tl[l] = t[s];
             seg[l] = locate(s, t[s]);
         }
-        block(seg, tl, k, valid);
+        block(lanes_of<V>{}, seg, tl, k, valid);
     }
+}
+
+#if CRSPLINE_ROTATION_AVX2
+template <class Locate, class Block>
+__attribute__((target("avx2"))) void run_avx2(std::span<const double> t, Locate& locate, Block& block) {
+    run_lanes<double, v4>(t, locate, block);
+}
+#endif
+
+/// run_lanes on the given path: the AVX2 clone for double where asked and
+/// the CPU has it, else the portable lanes.
+template <class T, class Locate, class Block>
+void run(std::span<const T> t, Locate&& locate, Block&& block, isa path = best_isa()) {
+#if CRSPLINE_ROTATION_AVX2
+    if constexpr (std::is_same_v<T, double>)
+        if (path == isa::avx2 && best_isa() == isa::avx2) return run_avx2(t, locate, block);
+#endif
+    (void)path;
+    run_lanes<T, typename pack<T>::V>(t, locate, block);
 }
 
 }  // namespace crspline::rotation::detail_batch

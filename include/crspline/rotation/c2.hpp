@@ -239,6 +239,12 @@ public:
     /// The same values as evaluate_on() to a few ulps (batch.hpp).
     void evaluate(std::span<const T> t, const batch_rows<T>& out, int order, frame f = frame::world,
                   bool extrapolate = false) const {
+        evaluate(t, out, order, f, extrapolate, detail_batch::best_isa());
+    }
+    /// The same on a chosen path (the portable lanes or the AVX2 clone, which
+    /// give the same bits): the seam the tests compare the two through.
+    void evaluate(std::span<const T> t, const batch_rows<T>& out, int order, frame f, bool extrapolate,
+                  detail_batch::isa path) const {
         if (order < 0 || order > 2) throw invalid_input("derivative order must be 0, 1 or 2, got " + std::to_string(order));
         detail_batch::locator<T> find{t_.data(), segment_count(), &index_};
         const T lo = t_.front(), hi = t_.back();
@@ -248,9 +254,10 @@ public:
                 if (!extrapolate && !(x >= lo && x <= hi)) [[unlikely]] check_t(x, k);
                 return find(x);
             },
-            [&](const std::size_t* seg, const T* tl, std::size_t k, int valid) {
-                detail_batch::c2_block<T>(packed_.data(), seg, tl, k, valid, order, f, out);
-            });
+            [&](auto lanes, const std::size_t* seg, const T* tl, std::size_t k, int valid) CRSPLINE_ROTATION_BLOCK {
+                detail_batch::c2_block<T, typename decltype(lanes)::type>(packed_.data(), seg, tl, k, valid, order, f, out);
+            },
+            path);
     }
 
 private:

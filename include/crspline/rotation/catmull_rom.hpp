@@ -170,9 +170,15 @@ public:
     /// the angular velocity and acceleration in frame f, written where out
     /// says (batch_rows: room for t.size() samples); t outside the domain is
     /// an out_of_domain error naming its index. Piecewise slerp goes through
-    /// a vector kernel (batch.hpp: the same values as evaluate() to a few
-    /// ulps), the other kinds through evaluate_on() one sample at a time.
+    /// a vector kernel at every order, the other kinds' rotations (order 0)
+    /// too (batch.hpp: the same values as evaluate() to a few ulps); their
+    /// rates go through evaluate_on() one sample at a time.
     void evaluate(std::span<const T> t, const batch_rows<T>& out, int order, frame f = frame::world) const {
+        evaluate(t, out, order, f, detail_batch::best_isa());
+    }
+    /// The same on a chosen path (the portable lanes or the AVX2 clone, which
+    /// give the same bits): the seam the tests compare the two through.
+    void evaluate(std::span<const T> t, const batch_rows<T>& out, int order, frame f, detail_batch::isa path) const {
         if (order < 0 || order > 2) throw invalid_input("derivative order must be 0, 1 or 2, got " + std::to_string(order));
         detail_batch::locator<T> find{grid_.data(), segment_count(), &index_};
         const T lo = grid_.front(), hi = grid_.back();
@@ -183,9 +189,33 @@ public:
             return i;
         };
         if (kind_ == spline_kind::piecewise_slerp) {
-            detail_batch::run<T>(t, locate_checked, [&](const std::size_t* seg, const T* tl, std::size_t k, int valid) {
-                detail_batch::slerp_block<T>(slerp_.data(), seg, tl, k, valid, order, f, out);
-            });
+            detail_batch::run<T>(
+                t, locate_checked,
+                [&](auto lanes, const std::size_t* seg, const T* tl, std::size_t k, int valid) CRSPLINE_ROTATION_BLOCK {
+                    detail_batch::slerp_block<T, typename decltype(lanes)::type>(slerp_.data(), seg, tl, k, valid, order, f, out);
+                },
+                path);
+            return;
+        }
+        if (order == 0 && !pyramid_.empty()) {
+            const bool uniform = kind_ != spline_kind::barry_goldman;
+            detail_batch::run<T>(
+                t, locate_checked,
+                [&](auto lanes, const std::size_t* seg, const T* tl, std::size_t k, int valid) CRSPLINE_ROTATION_BLOCK {
+                    using V = typename decltype(lanes)::type;
+                    if (uniform) detail_batch::pyramid_block<T, V, true>(pyramid_.data(), seg, tl, k, valid, out);
+                    else detail_batch::pyramid_block<T, V, false>(pyramid_.data(), seg, tl, k, valid, out);
+                },
+                path);
+            return;
+        }
+        if (order == 0 && !squad_.empty()) {
+            detail_batch::run<T>(
+                t, locate_checked,
+                [&](auto lanes, const std::size_t* seg, const T* tl, std::size_t k, int valid) CRSPLINE_ROTATION_BLOCK {
+                    detail_batch::squad_block<T, typename decltype(lanes)::type>(squad_.data(), seg, tl, k, valid, out);
+                },
+                path);
             return;
         }
         for (std::size_t k = 0; k < t.size(); ++k) {
@@ -212,11 +242,76 @@ private:
     T t_before_ = 0, t_after_ = 0;
     detail::knot_index<T> index_;             // batch: segment of t in O(1)
     std::vector<detail_batch::slerp_packed<T>> slerp_;  // batch: piecewise slerp's steps, per segment
+    std::vector<detail_batch::pyramid_packed<T>> pyramid_;  // batch: De Casteljau (4 controls) and Barry-Goldman
+    std::vector<detail_batch::squad_packed<T>> squad_;      // batch: Squad
+
+    // exp(s log(rel(a, b))) a, packed: log's half angle and axis.
+    static detail_batch::fixed_slerp<T> pack_slerp(const quat& a, const quat& b) {
+        detail_batch::fixed_slerp<T> p{};
+        const vec3<T> L = log(rel(a, b));
+        const T ang = crspline::norm(L);
+        p.angle = ang;
+        if (ang > 0) p.axis[0] = L[0] / ang, p.axis[1] = L[1] / ang, p.axis[2] = L[2] / ang;
+        p.a[0] = a.w, p.a[1] = a.x, p.a[2] = a.y, p.a[3] = a.z;
+        return p;
+    }
+
+    // The pyramid and Squad tables (batch, order 0).
+    void pack_pyramids() {
+        const std::size_t nseg = segment_count();
+        const bool bg = kind_ == spline_kind::barry_goldman;
+        if (kind_ == spline_kind::squad) {
+            for (std::size_t i = 0; i < nseg; ++i) {
+                const auto& c = controls_[i];
+                detail_batch::squad_packed<T> p{};
+                const T h = grid_[i + 1] - grid_[i];
+                p.t0 = grid_[i];
+                p.inv_h = h > 0 ? T(1) / h : T(0);
+                p.f[0] = h > 0 ? pack_slerp(c[0], c[3]) : pack_slerp(keys_[i], keys_[i]);
+                p.f[1] = h > 0 ? pack_slerp(c[1], c[2]) : pack_slerp(keys_[i], keys_[i]);
+                squad_.push_back(p);
+            }
+            return;
+        }
+        if (!bg) {
+            if (kind_ == spline_kind::piecewise_slerp) return;
+            for (const auto& c : controls_)
+                if (c.size() != 4) return;  // the vector kernel knows 4 controls; others stay scalar
+        }
+        for (std::size_t i = 0; i < nseg; ++i) {
+            detail_batch::pyramid_packed<T> p{};
+            const T t0 = grid_[i], t1 = grid_[i + 1], h = t1 - t0;
+            if (!(h > 0)) {
+                // A repeated key: every parameter 0, every slerp at the key.
+                for (int j = 0; j < 6; ++j) p.ta[j] = t0;
+                for (auto& f : p.f) f = pack_slerp(keys_[i], keys_[i]);
+                pyramid_.push_back(p);
+                continue;
+            }
+            auto param = [&](int j, T ta, T tb) {
+                const T d = tb - ta;
+                p.ta[j] = ta;
+                p.inv[j] = d != 0 ? T(1) / d : T(0);  // world_jet's safe_div
+            };
+            if (bg) {
+                const auto k = std::ptrdiff_t(i);
+                const T tm = time(k - 1), tp = time(k + 2);
+                param(0, tm, t0), param(1, t0, t1), param(2, t1, tp), param(3, tm, t1), param(4, t0, tp), param(5, t0, t1);
+                p.f[0] = pack_slerp(key(k - 1), key(k)), p.f[1] = pack_slerp(key(k), key(k + 1));
+                p.f[2] = pack_slerp(key(k + 1), key(k + 2));
+            } else {
+                for (int j = 0; j < 6; ++j) param(j, t0, t1);
+                const auto& c = controls_[i];
+                for (int j = 0; j < 3; ++j) p.f[j] = pack_slerp(c[std::size_t(j)], c[std::size_t(j) + 1]);
+            }
+            pyramid_.push_back(p);
+        }
+    }
 
     // The batch's tables, once the grid and the keys are final.
     void finish() {
         index_.build(grid_.data(), segment_count());
-        if (kind_ != spline_kind::piecewise_slerp) return;
+        if (kind_ != spline_kind::piecewise_slerp) return pack_pyramids();
         for (std::size_t i = 0; i < segment_count(); ++i) {
             detail_batch::slerp_packed<T> p{};
             const quat& a = keys_[i];

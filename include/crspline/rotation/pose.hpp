@@ -89,6 +89,11 @@ public:
     /// quaternion Catmull-Rom, chunks go through the position curve's batch
     /// and the rotation curve's. The same values as evaluate(t) to a few ulps.
     void evaluate(std::span<const T> t, std::span<pose_sample<T>> out, frame f = frame::world) const {
+        evaluate(t, out, f, detail_batch::best_isa());
+    }
+    /// The same on a chosen path (the portable lanes or the AVX2 clone, which
+    /// give the same bits): the seam the tests compare the two through.
+    void evaluate(std::span<const T> t, std::span<pose_sample<T>> out, frame f, detail_batch::isa path) const {
         check_batch_size(out.size(), t.size(), "poses");
         const T lo = grid().front(), hi = grid().back();
         auto domain = [&](std::size_t k, T x) {
@@ -109,9 +114,11 @@ public:
                     if (!(int(g[hint] <= x) & int(x < g[hint + 1]))) hint = position_.locate(x);
                     return hint;
                 },
-                [&](const std::size_t* seg, const T* tl, std::size_t k, int valid) {
-                    detail_batch::pose_block<T>(packed_.data(), seg, tl, k, valid, f, hi, &last[0], out.data());
-                });
+                [&](auto lanes, const std::size_t* seg, const T* tl, std::size_t k, int valid) CRSPLINE_ROTATION_BLOCK {
+                    detail_batch::pose_block<T, typename decltype(lanes)::type>(packed_.data(), seg, tl, k, valid, f, hi,
+                                                                                 &last[0], out.data());
+                },
+                path);
             return;
         }
         constexpr std::size_t chunk = 1024;  // the chunk's arrays stay in the L1/L2 cache
