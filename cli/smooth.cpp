@@ -157,7 +157,9 @@ int run(int argc, char** argv) {
                          "  --alpha A           knot exponent, default 0.5 (centripetal)\n"
                          "  --max-deviation M   no curve point farther than M metres from the input\n"
                          "  --topology T        preserve (default) or none (each part alone, unchecked)\n"
-                         "  -o FILE             output GeoJSON (default: standard output)\n";
+                         "  -o FILE             output GeoJSON (default: standard output)\n"
+                         "GeoJSON only: convert a GeoPackage or Shapefile with ogr2ogr -f GeoJSON, or use\n"
+                         "crspline.geo.smooth on a GeoPandas frame (docs/geo.md).\n";
             return 0;
         } else if (!a.empty() && a[0] == '-' && a != "-") {
             usage_error("unknown option " + a);
