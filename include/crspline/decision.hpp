@@ -219,7 +219,40 @@ struct decision_engine {
     std::vector<bool> closed;
     P ref{};
     double M = 0, floor = 0;
-    std::vector<piece> pieces;
+    // The monotone pieces, in order of curve and segment. A piece that is a
+    // whole segment (most are) is kept as its ids alone and rebuilt from the
+    // curve when asked (the same doubles as when it was made: its points are
+    // the source's minus ref); only pieces cut from a segment keep their
+    // points. 12 bytes per segment instead of a 104-byte piece: the
+    // report's verdict at 10^6 points stays within issue 26's memory
+    // promise.
+    struct piece_store {
+        struct slot {
+            std::uint32_t curve, segment, cut;  // cut: index in `cuts`, or whole
+        };
+        static constexpr std::uint32_t whole = std::numeric_limits<std::uint32_t>::max();
+        const decision_engine* e = nullptr;
+        std::vector<slot> slots;
+        std::vector<piece> cuts;
+        std::size_t size() const noexcept { return slots.size(); }
+        void reserve(std::size_t n) { slots.reserve(n); }
+        void push_back(const piece& p) {
+            if (p.depth == 0) {
+                slots.push_back({p.curve, p.segment, whole});
+                return;
+            }
+            if (cuts.size() >= whole) throw invalid_input("decision: more than 2^32 cut pieces");
+            slots.push_back({p.curve, p.segment, std::uint32_t(cuts.size())});
+            cuts.push_back(p);
+        }
+        piece operator[](std::size_t k) const {
+            const slot& s = slots[k];
+            return s.cut == whole ? e->whole_piece(s.curve, s.segment) : cuts[s.cut];
+        }
+        std::uint32_t curve(std::size_t k) const noexcept { return slots[k].curve; }
+        void resize(std::size_t n) { slots.resize(n); }  // a removed cut piece stays in `cuts`, unused
+    };
+    piece_store pieces;
     std::vector<std::size_t> first_piece;  // per curve, and one past the end
     decision out;
     bool record_pairs = true, first_crossing = false;
@@ -233,7 +266,9 @@ struct decision_engine {
     // Per curve: each segment's rank among the non-point segments, and its
     // neighbours (the next and previous non-point segments sharing its end
     // and start point exactly; npos if none).
-    std::vector<std::vector<std::size_t>> rank, next_seg, prev_seg;
+    // 32-bit (a piece's ids are): 12 bytes per segment, not 24.
+    static constexpr std::uint32_t none32 = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::vector<std::uint32_t>> rank, next_seg, prev_seg;
     std::vector<std::size_t> nonpoint;
     std::vector<std::array<std::array<double, 2>, 2>> crossing_range;  // per crossing: curve ranges (rank + u)
     // The proved crossings by the unit cells of curve coordinates that their
@@ -436,7 +471,8 @@ struct decision_engine {
         std::size_t f_seg, g_seg;
     };
     side_of make_side(const piece& p, bool chain) const {
-        const std::size_t nx = next_seg[p.curve][p.segment], pv = prev_seg[p.curve][p.segment];
+        const auto wide = [](std::uint32_t x) { return x == none32 ? npos : std::size_t(x); };
+        const std::size_t nx = wide(next_seg[p.curve][p.segment]), pv = wide(prev_seg[p.curve][p.segment]);
         const double r = double(rank[p.curve][p.segment]);
         const auto ex = [&](std::size_t s) { return enclosure(p.curve, s); };
         if (chain && p.u1 == 1 && nx != npos)
@@ -723,7 +759,21 @@ struct decision_engine {
         }
     }
 
+    // Segment s of curve ci as one piece, from its Bézier points g.
+    piece make_piece(const std::array<P, 4>& g, std::size_t ci, std::size_t s) const {
+        piece p;
+        for (std::size_t k = 0; k < 4; ++k) p.b[k] = g[k] - ref;
+        p.err = eps * M;
+        p.curve = std::uint32_t(ci);
+        p.segment = std::uint32_t(s);
+        while (p.start_mult < 3 && g[p.start_mult] == g[0]) ++p.start_mult;
+        while (p.end_mult < 3 && g[3u - p.end_mult] == g[3]) ++p.end_mult;
+        return p;
+    }
+    piece whole_piece(std::uint32_t ci, std::uint32_t s) const { return make_piece(curves[ci][s], ci, s); }
+
     void build() {
+        pieces.e = this;
         // 1. The reference point and the bound M (the enclosures of the
         // relative control points are made when Krawczyk's test needs them).
         for (const auto& c : curves)
@@ -743,20 +793,21 @@ struct decision_engine {
                 const auto g = c[s];
                 return g[0] == g[1] && g[1] == g[2] && g[2] == g[3];
             };
-            std::vector<std::size_t> order;
-            rank.emplace_back(n, npos);
-            next_seg.emplace_back(n, npos);
-            prev_seg.emplace_back(n, npos);
+            if (n >= none32) throw invalid_input("decision: curve " + std::to_string(ci) + " has 2^32 segments or more");
+            std::vector<std::uint32_t> order;
+            rank.emplace_back(n, none32);
+            next_seg.emplace_back(n, none32);
+            prev_seg.emplace_back(n, none32);
             for (std::size_t s = 0; s < n; ++s)
                 if (!point_seg(s)) {
-                    rank[ci][s] = order.size();
-                    order.push_back(s);
+                    rank[ci][s] = std::uint32_t(order.size());
+                    order.push_back(std::uint32_t(s));
                 }
             nonpoint.push_back(order.size());
             for (std::size_t k = 0; k < order.size(); ++k) {
                 const bool last = k + 1 == order.size();
                 if (last && !closed[ci]) continue;
-                const std::size_t s = order[k], t = order[last ? 0 : k + 1];
+                const std::uint32_t s = order[k], t = order[last ? 0 : k + 1];
                 if (s != t && c[s][3] == c[t][0]) {
                     next_seg[ci][s] = t;
                     prev_seg[ci][t] = s;
@@ -771,17 +822,9 @@ struct decision_engine {
             for (std::size_t s = 0; s < curves[ci].size(); ++s) {
                 const auto& g = curves[ci][s];
                 if (g[0] == g[1] && g[1] == g[2] && g[2] == g[3]) continue;
-                piece p;
-                for (std::size_t k = 0; k < 4; ++k) p.b[k] = g[k] - ref;
-                p.err = eps * M;
-                p.curve = std::uint32_t(ci);
-                p.segment = std::uint32_t(s);
-                while (p.start_mult < 3 && g[p.start_mult] == g[0]) ++p.start_mult;
-                while (p.end_mult < 3 && g[3u - p.end_mult] == g[3]) ++p.end_mult;
-                const std::size_t before = pieces.size();
+                const piece p = make_piece(g, ci, s);
                 cut(p);
                 flag(p, p, monotone);
-                (void)before;
             }
             // A closed curve of two pieces would have them adjacent at both ends.
             if (closed[ci] && pieces.size() - first_piece.back() == 2) {
@@ -793,7 +836,7 @@ struct decision_engine {
                     halves.push_back(h[1]);
                 }
                 pieces.resize(first_piece.back());
-                pieces.insert(pieces.end(), halves.begin(), halves.end());
+                for (const auto& h : halves) pieces.push_back(h);
             }
         }
         first_piece.push_back(pieces.size());
@@ -804,8 +847,8 @@ struct decision_engine {
     // Is the pair (p, q), p < q, consecutive? Returns 1 when p ends where q
     // starts, 2 when q ends where p starts (across a closed curve's seam).
     int adjacency(std::size_t p, std::size_t q) const {
-        const piece &a = pieces[p], &b = pieces[q];
-        if (a.curve != b.curve) return 0;
+        if (pieces.curve(p) != pieces.curve(q)) return 0;
+        const piece a = pieces[p], b = pieces[q];
         if (q == p + 1 && a.b[3] == b.b[0]) return 1;
         if (closed[a.curve] && p == first_piece[a.curve] && q + 1 == first_piece[a.curve + 1] && b.b[3] == a.b[0])
             return 2;
@@ -862,7 +905,7 @@ struct decision_engine {
             });
         };
         const auto wanted = [&](std::uint32_t i, std::uint32_t j) {
-            const bool same = pieces[i].curve == pieces[j].curve;
+            const bool same = pieces.curve(i) == pieces.curve(j);
             return (same && self) || (!same && between);
         };
         const auto decide_candidate = [&](std::uint32_t i, std::uint32_t j) {
