@@ -535,13 +535,20 @@ inline double segment_deviation(const std::array<p2, 4>& b) noexcept {
 // Whether the segment with Bézier points b is free of loops and cusps
 // cheaply: its Bézier points advance strictly along its chord (each step
 // by more than `slack`), so the curve's coordinate along the chord grows
-// strictly and the curve is a graph over the chord.
+// strictly and the curve is a graph over the chord. An end step that is
+// exactly zero (b1 == b0 or b2 == b3: that end at tension 1) is allowed:
+// the derivative 3 [(1-u)^2 h0 + 2 u (1-u) h1 + u^2 h2] of the coordinate
+// is still positive on (0, 1) and at the other end, so the coordinate still
+// grows strictly (decision.hpp's joint argument allows such points too).
 inline bool advances_along_chord(const std::array<p2, 4>& b, double slack) noexcept {
     const p2 d = b[3] - b[0];
     const double len = norm(d);
     if (!(len > 0)) return false;
     const p2 t = d / len;
-    return dot(b[1] - b[0], t) > slack && dot(b[2] - b[1], t) > slack && dot(b[3] - b[2], t) > slack;
+    const bool first_zero = b[1] == b[0], last_zero = b[2] == b[3];
+    if (first_zero && last_zero) return dot(b[2] - b[1], t) > slack;  // the chord itself
+    return (first_zero || dot(b[1] - b[0], t) > slack) && dot(b[2] - b[1], t) > slack &&
+           (last_zero || dot(b[3] - b[2], t) > slack);
 }
 
 // Two point sets, each with v, whose hulls meet only at v: their wedges at
