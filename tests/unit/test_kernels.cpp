@@ -172,8 +172,9 @@ TEST(Kernels, FloatWalkCrossesKnotsInsideSteps) {
     // the lanes. With about 4 points a segment (several knots a step), every
     // knot hit exactly, a repeated parameter, a coincident pair of points (a
     // zero interval) and all 16 output offsets mod 64 bytes (12-byte points
-    // shifted by 0..15), each point must equal the AVX2 runs' and the
-    // portable kernel's bit for bit, and positions the single-point path;
+    // shifted by 0..15), each point must equal the AVX2 walk's (8 lanes,
+    // sorted_walk3_256) and the portable kernel's bit for bit, and
+    // positions the single-point path;
     // input unsorted deep inside must fall back and still agree, a NaN must
     // give the unsorted path's out_of_domain error.
     CRSPLINE_SEEDED(s, 77);
@@ -190,8 +191,8 @@ TEST(Kernels, FloatWalkCrossesKnotsInsideSteps) {
         for (std::size_t k = 0; k < 4 * g.size(); ++k) t.push_back(std::min(U(rng), c.t_max()));
         t.push_back(t[t.size() / 2]);
         std::sort(t.begin(), t.end());
-        // Each path: the walk (where the CPU has AVX-512F), the AVX2 runs,
-        // the portable kernel; t from `from` to the end, out shifted.
+        // Each path: the 16-lane walk (where the CPU has AVX-512F), the
+        // 8-lane walk (where it has AVX2), the portable kernel; t from `from` to the end, out shifted.
         auto run = [&](int path, std::size_t from, std::size_t shift, int order) {
 #if CRSPLINE_X86_DISPATCH
             bool &avx2 = detail::avx2_enabled(), &wide = detail::avx512_enabled();
@@ -212,13 +213,13 @@ TEST(Kernels, FloatWalkCrossesKnotsInsideSteps) {
             for (int order : {0, 1}) {
                 // The whole batch, and short ones (head and tail steps only).
                 for (std::size_t from : {std::size_t(0), t.size() - 1 - shift, t.size() - 17 - shift}) {
-                    const auto walk = run(0, from, shift, order), runs = run(1, from, shift, order),
+                    const auto walk = run(0, from, shift, order), walk8 = run(1, from, shift, order),
                                portable = run(2, from, shift, order);
                     for (std::size_t k = 0; k < walk.size(); ++k) {
                         ASSERT_EQ(std::memcmp(&walk[k], &portable[k], sizeof(F3)), 0)
                             << "rep " << rep << " shift " << shift << " order " << order << " from " << from << " k " << k;
-                        ASSERT_EQ(std::memcmp(&runs[k], &portable[k], sizeof(F3)), 0)
-                            << "AVX2 runs: rep " << rep << " shift " << shift << " order " << order << " k " << k;
+                        ASSERT_EQ(std::memcmp(&walk8[k], &portable[k], sizeof(F3)), 0)
+                            << "8 lanes: rep " << rep << " shift " << shift << " order " << order << " k " << k;
                         if (order == 0) {
                             const F3 x = c.evaluate(t[from + k]);
                             ASSERT_EQ(std::memcmp(&walk[k], &x, sizeof(F3)), 0) << "rep " << rep << " k " << k;
@@ -228,18 +229,39 @@ TEST(Kernels, FloatWalkCrossesKnotsInsideSteps) {
                 }
             }
         }
-        // Unsorted deep inside (an adjacent pair swapped), then a NaN.
-        std::uniform_int_distribution<std::size_t> at(t.size() / 4, t.size() - 3);
-        std::size_t k0 = at(rng);
-        while (t[k0] == t[k0 + 1]) ++k0;
-        std::swap(t[k0], t[k0 + 1]);
-        const auto swapped = run(0, 0, 0, 0);
-        for (std::size_t k = 0; k < t.size(); ++k) {
-            const F3 x = c.evaluate(t[k]);
-            ASSERT_EQ(std::memcmp(&swapped[k], &x, sizeof(F3)), 0) << "k " << k << " (swapped at " << k0 << ")";
+        // Unsorted: an adjacent pair swapped across a knot (t[k0 + 1] a knot,
+        // so the swapped t[k0 + 1] lies on an earlier segment and a missed
+        // check would give other bits), at the first three knots and deep
+        // inside, in batches that start 0..17 points before the pair (the
+        // pair in every lane of the first step) and at 4 output offsets;
+        // then a NaN.
+        std::vector<std::size_t> across;
+        for (std::size_t k = 0; k + 1 < t.size(); ++k)
+            if (t[k] < t[k + 1] && std::binary_search(g.begin(), g.end(), t[k + 1])) across.push_back(k);
+        ASSERT_GT(across.size(), 10u);
+        std::uniform_int_distribution<std::size_t> deep(across.size() / 2, across.size() - 1);
+        std::size_t k0 = 0;
+        for (const std::size_t a : {std::size_t(0), std::size_t(1), std::size_t(2), deep(rng)}) {
+            k0 = across[a];
+            std::swap(t[k0], t[k0 + 1]);
+            for (std::size_t j = 0; j <= std::min<std::size_t>(k0, 17); ++j) {
+                for (std::size_t shift : {0u, 5u, 10u, 15u}) {
+                    for (int path : {0, 1}) {
+                        const auto swapped = run(path, k0 - j, shift, 0);
+                        for (std::size_t k = 0; k < swapped.size(); ++k) {
+                            const F3 x = c.evaluate(t[k0 - j + k]);
+                            ASSERT_EQ(std::memcmp(&swapped[k], &x, sizeof(F3)), 0)
+                                << "path " << path << " from " << k0 - j << " shift " << shift << " k " << k
+                                << " (swapped at " << k0 << ")";
+                        }
+                    }
+                }
+            }
+            std::swap(t[k0], t[k0 + 1]);
         }
         t[k0] = std::numeric_limits<float>::quiet_NaN();
         EXPECT_THROW(run(0, 0, 0, 0), out_of_domain) << "NaN at " << k0;
+        EXPECT_THROW(run(1, 0, 0, 0), out_of_domain) << "NaN at " << k0;
     }
     EXPECT_GT(checked, 4u * 16 * 2 * 200u);
 }

@@ -144,14 +144,19 @@ struct batch_kernels {
         const bool stream = n * sizeof(point) >= detail::streaming_threshold;
         std::size_t seg = c.locate(t[0]);
 #if CRSPLINE_X86_DISPATCH
-        // 3-D floats on a CPU with AVX-512F: the segments are walked inside
-        // the vector loop (no runs; detail::sorted_walk3_512).
+        // 3-D floats on a CPU with AVX2: the segments are walked inside the
+        // vector loop, 16 lanes with AVX-512F, else 8 (no runs;
+        // detail::sorted_walk3_512, sorted_walk3_256).
         if constexpr (D == 3 && std::is_same_v<T, float>)
-            if (order <= 1 && detail::avx2_enabled() && detail::avx512_enabled()) {
+            if (order <= 1 && detail::avx2_enabled()) {
                 T* o = reinterpret_cast<T*>(out.data());
+                const bool wide = detail::avx512_enabled();
                 const bool sorted =
-                    order == 0 ? detail::sorted_walk3_512<0>(walk_segments<0>{c}, seg, t.data(), o, n, stream)
-                               : detail::sorted_walk3_512<1>(walk_segments<1>{c}, seg, t.data(), o, n, stream);
+                    order == 0
+                        ? (wide ? detail::sorted_walk3_512<0>(walk_segments<0>{c}, seg, t.data(), o, n, stream)
+                                : detail::sorted_walk3_256<0>(walk_segments<0>{c}, seg, t.data(), o, n, stream))
+                        : (wide ? detail::sorted_walk3_512<1>(walk_segments<1>{c}, seg, t.data(), o, n, stream)
+                                : detail::sorted_walk3_256<1>(walk_segments<1>{c}, seg, t.data(), o, n, stream));
                 if (stream) detail::store_fence();
                 if (!sorted) return false;
                 if (order == 0) exact_last_points(c, t, out);
@@ -316,9 +321,8 @@ struct batch_kernels {
         return k;
     }
 #if CRSPLINE_X86_DISPATCH
-    // The AVX2 kernels (detail/x86_kernels.hpp) for 3-D doubles and floats:
-    // the same coefficients as run_kernel, the same operations 4 (double) or
-    // 8 (float) points at a time.
+    // The AVX2 kernel (detail/x86_kernels.hpp) for 3-D doubles: the same
+    // coefficients as run_kernel, the same operations 4 points at a time.
     template <int Order>
     static std::size_t run3_avx2(const segment_type& s, const T* t, point* out, std::size_t n, T& previous,
                                  bool stream, T t_end, bool& unsorted) noexcept {
@@ -408,7 +412,7 @@ struct batch_kernels {
     static std::size_t run(const segment_type& s, const T* t, point* out, std::size_t n, int order, T& previous,
                            bool stream, T t_end, bool& unsorted) noexcept {
 #if CRSPLINE_X86_DISPATCH
-        if constexpr (D == 3 && (std::is_same_v<T, double> || std::is_same_v<T, float>))
+        if constexpr (D == 3 && std::is_same_v<T, double>)  // (floats: the walk in evaluate_sorted)
             if (order <= 1 && detail::avx2_enabled())
                 return order == 0 ? run3_avx2<0>(s, t, out, n, previous, stream, t_end, unsorted)
                                   : run3_avx2<1>(s, t, out, n, previous, stream, t_end, unsorted);

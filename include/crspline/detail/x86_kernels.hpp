@@ -353,6 +353,135 @@ CRSPLINE_TARGET_AVX512 bool sorted_walk3_512(const Segments& segments, std::size
     return k == n || s.step(segments, seg, t + k, out + 3 * k, unsigned(n - k), false, false);
 }
 
+/// steps512 in 256-bit AVX2 lanes for CPUs without AVX-512F: 8 points a
+/// step, 24 floats in 3 registers laid out as in memory (lanes256<float>'s
+/// layout), masks as vectors (all ones or zero per lane), masked loads and
+/// stores by maskload / maskstore; the same operations, so the same bits.
+template <int Order>
+struct steps256 {
+    using L = lanes256<float>;
+    __m256 A0, A1, A2, B0, B1, B2, C0, C1, C2, O0, O1, O2, vt0, vih, vend;
+
+    /// Lanes 0 .. min(q, 8) - 1 all ones, the others zero.
+    CRSPLINE_TARGET_AVX2 static __m256i first_lanes(unsigned q) noexcept {
+        return _mm256_cmpgt_epi32(_mm256_set1_epi32(int(q < 8 ? q : 8)), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+    }
+
+    template <class Segments>
+    CRSPLINE_TARGET_AVX2 __attribute__((always_inline)) void load(const Segments& segments, std::size_t seg) noexcept {
+        float o[3], a[3], b[3], c[3], t0, ih, t_end;
+        segments.load(seg, o, a, b, c, t0, ih, t_end);
+        A0 = L::pattern(a, 0), A1 = L::pattern(a, 1), A2 = L::pattern(a, 2);
+        B0 = L::pattern(b, 0), B1 = L::pattern(b, 1), B2 = L::pattern(b, 2);
+        C0 = L::pattern(c, 0), C1 = L::pattern(c, 1), C2 = L::pattern(c, 2);
+        if constexpr (Order == 0) O0 = L::pattern(o, 0), O1 = L::pattern(o, 1), O2 = L::pattern(o, 2);
+        else O0 = O1 = O2 = _mm256_setzero_ps();
+        vt0 = L::set1(t0), vih = L::set1(ih), vend = L::set1(t_end);
+    }
+
+    /// The 8 points at parameters x on this segment, as 24 floats in r0 r1 r2.
+    CRSPLINE_TARGET_AVX2 void points(__m256 x, __m256& r0, __m256& r1, __m256& r2) const noexcept {
+        const __m256 u = L::mul(L::sub(x, vt0), vih);
+        const __m256 U0 = L::spread<0>(u), U1 = L::spread<1>(u), U2 = L::spread<2>(u);
+        r0 = L::add(A0, L::mul(U0, L::add(B0, L::mul(U0, C0))));
+        r1 = L::add(A1, L::mul(U1, L::add(B1, L::mul(U1, C1))));
+        r2 = L::add(A2, L::mul(U2, L::add(B2, L::mul(U2, C2))));
+        if constexpr (Order == 0) {
+            r0 = L::add(O0, L::mul(U0, r0));
+            r1 = L::add(O1, L::mul(U1, r1));
+            r2 = L::add(O2, L::mul(U2, r2));
+        }
+    }
+
+    /// steps512::step with 8 lanes (1 <= m <= 8; nt: m = 8, out 32-byte
+    /// aligned).
+    template <class Segments>
+    CRSPLINE_TARGET_AVX2 __attribute__((always_inline)) bool step(const Segments& segments, std::size_t& seg,
+                                                                  const float* t, float* out, unsigned m, bool first,
+                                                                  bool nt) noexcept {
+        const __m256i in = first_lanes(m);
+        const int in_bits = int((1u << m) - 1);
+        const __m256 x = _mm256_maskload_ps(t, in);
+        // Lane j's predecessor: t[j - 1]; for the batch's first step t[0]
+        // in lane 0 (x's lanes moved up one, lane 0 kept: t[-1] is not read).
+        const __m256 before = first ? _mm256_permutevar8x32_ps(x, _mm256_setr_epi32(0, 0, 1, 2, 3, 4, 5, 6))
+                                    : _mm256_maskload_ps(t - 1, in);
+        if ((L::mask(L::le(before, x)) & in_bits) != in_bits) return false;  // not sorted, or NaN
+        __m256 r0, r1, r2;
+        points(x, r0, r1, r2);
+        const __m256 X0 = L::spread<0>(x), X1 = L::spread<1>(x), X2 = L::spread<2>(x);
+        for (int past = L::mask(_mm256_cmp_ps(x, vend, _CMP_NLT_UQ)) & in_bits; past != 0;
+             past = L::mask(_mm256_cmp_ps(x, vend, _CMP_NLT_UQ)) & in_bits) {
+            const std::size_t next = segments.next(seg, t[__builtin_ctz(unsigned(past))]);
+            if (next == seg) break;  // (no later segment: cannot happen in the domain)
+            const __m256 end = vend;
+            seg = next;
+            load(segments, seg);
+            __m256 q0, q1, q2;
+            points(x, q0, q1, q2);
+            r0 = _mm256_blendv_ps(r0, q0, _mm256_cmp_ps(X0, end, _CMP_NLT_UQ));
+            r1 = _mm256_blendv_ps(r1, q1, _mm256_cmp_ps(X1, end, _CMP_NLT_UQ));
+            r2 = _mm256_blendv_ps(r2, q2, _mm256_cmp_ps(X2, end, _CMP_NLT_UQ));
+        }
+        if (nt) {
+            L::stream(out, r0), L::stream(out + 8, r1), L::stream(out + 16, r2);
+        } else {
+            const unsigned f = 3 * m;  // floats to store
+            _mm256_maskstore_ps(out, first_lanes(f), r0);
+            _mm256_maskstore_ps(out + 8, first_lanes(f > 8 ? f - 8 : 0), r1);
+            _mm256_maskstore_ps(out + 16, first_lanes(f > 16 ? f - 16 : 0), r2);
+        }
+        return true;
+    }
+};
+
+/// bulk512 in 8 lanes (out + 3 k 32-byte aligned when Stream).
+template <int Order, bool Stream>
+CRSPLINE_TARGET_AVX2 std::size_t bulk256(const steps256<Order> s, const float* t, float* out, std::size_t k,
+                                         std::size_t n) noexcept {
+    using L = lanes256<float>;
+    for (; k + 8 <= n; k += 8) {
+        const __m256 x = L::load(t + k);
+        if (L::mask(L::both(L::lt(x, s.vend), L::le(L::load(t + k - 1), x))) != 0xFF) break;
+        __m256 r0, r1, r2;
+        s.points(x, r0, r1, r2);
+        float* dst = out + 3 * k;
+        if constexpr (Stream) {
+            L::stream(dst, r0), L::stream(dst + 8, r1), L::stream(dst + 16, r2);
+        } else {
+            L::store(dst, r0), L::store(dst + 8, r1), L::store(dst + 16, r2);
+        }
+    }
+    return k;
+}
+
+/// sorted_walk3_512 for CPUs with AVX2 and not AVX-512F: steps of 8 points
+/// (96 bytes; two steps fill 3 cache lines, by non-temporal 32-byte stores
+/// when stream), after one step of up to 8 that brings out + 3 k to 32-byte
+/// alignment (12 h = -out mod 32 bytes, h in 1..8). The same bits.
+template <int Order, class Segments>
+CRSPLINE_TARGET_AVX2 bool sorted_walk3_256(const Segments& segments, std::size_t seg, const float* t, float* out,
+                                           std::size_t n, bool stream) noexcept {
+    if (n == 0) return true;
+    steps256<Order> s;
+    s.load(segments, seg);
+    // 3 h = -(out mod 32) / 4 (mod 8), and 3 = 1 / 3 (mod 8).
+    const unsigned quarter = unsigned(reinterpret_cast<std::uintptr_t>(out) % 32) / 4;
+    const unsigned h0 = (3 * ((8 - quarter) % 8)) % 8, h = h0 == 0 ? 8 : h0;
+    const unsigned m = unsigned(n < h ? n : h);
+    if (!s.step(segments, seg, t, out, m, true, stream && m == 8)) return false;
+    std::size_t k = m;
+    // out + 3 k is 32-byte aligned from here on.
+    while (k + 8 <= n) {
+        k = stream ? bulk256<Order, true>(s, t, out, k, n) : bulk256<Order, false>(s, t, out, k, n);
+        if (k + 8 <= n) {
+            if (!s.step(segments, seg, t + k, out + 3 * k, 8, false, stream)) return false;
+            k += 8;
+        }
+    }
+    return k == n || s.step(segments, seg, t + k, out + 3 * k, unsigned(n - k), false, false);
+}
+
 /// One sorted run of a 3-D segment (double or float), as catmull_rom's
 /// portable run_kernel: out[k] = o + u (a + u (b + u c)) (Order 0) or
 /// a + u (b + u c) (Order 1, o unused) with u = (t[k] - t0) ih, for t[0] and
