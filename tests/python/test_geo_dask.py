@@ -92,6 +92,13 @@ def test_arcs_are_shuffled_and_smoothed_once(client, world):
     assert counts["arcs"] == expected.attrs["crspline_stats"]["arcs"]
     assert len(counts["arcs_per_bucket"]) == 4 and min(counts["arcs_per_bucket"]) > 0
     assert counts["groups"] > 10  # islands, Americas, Australia, ... apart
+    # Groups placed largest first on the least loaded smoothing task: no task
+    # holds more than the average plus the largest group (list scheduling's
+    # bound); every arc vertex is in one task.
+    load, largest = counts["task_vertices"], counts["largest_group"]
+    assert len(load) == 4 and min(load) > 0
+    assert 0 < largest["arcs"] < counts["arcs"]
+    assert max(load) <= sum(load) / 4 + largest["vertices"], (load, largest)
     # Partitions of consecutive rows: borders between partitions exist.
     part = np.repeat(np.arange(6), np.diff(np.asarray(ddf.divisions[:-1] + (len(world),))))
     assert len(part) == 177

@@ -37,10 +37,13 @@ task-based shuffle does):
 5. shuffle back: each partition gets the smoothed arcs its parts use, and
    rebuilds its rings and measures as crspline.geo.smooth does.
 
-What this does not spread: a group is one task, and in a coverage (every
-country touching its neighbours) the touching features form one group, so
-step 4 for Natural Earth's Eurasia and Africa is one task. Separate lines
-and islands spread over the workers.
+Groups go to the smoothing tasks largest first, each to the least loaded
+task (by vertices), so no task holds more than the average plus the
+largest group. What this does not spread: a group is one task, and in a
+coverage (every country touching its neighbours) the touching features
+form one group, so step 4 for Natural Earth's Eurasia and Africa is one
+task (docs/geo.md says why cutting a group needs rounds across tasks).
+Separate lines and islands spread over the workers.
 
 ``write_partitions(result, directory, crs=...)`` writes one file per
 partition (GeoJSON by default; any fiona driver), each by a task on a worker.
@@ -311,6 +314,12 @@ def _slack(cleaned, tolerance):
     return 64 * np.finfo(float).eps * max(scale, float(tolerance))
 
 
+def _box_summary(d):
+    """What step 4's one task needs of a bucket of distinct arcs: their
+    boxes and vertex counts (not the arcs)."""
+    return {"boxes": d["boxes"], "sizes": np.asarray([len(d["arcs"][k]["xy"]) for k in d["keys"]], dtype=np.int64)}
+
+
 def _groups(slack, tolerance, buckets, *distinct):
     """Arcs linked when their boxes, padded by the largest flatness margin
     a piece may have, overlap; per distinct-arc bucket, the group task of
@@ -348,13 +357,32 @@ def _groups(slack, tolerance, buckets, *distinct):
                 parent[max(ri, rj)] = min(ri, rj)
                 ri = min(ri, rj)
     group = np.array([root(i) for i in range(n)], dtype=np.int64)
+    # Groups to tasks by their work (vertices), largest first, each to the
+    # least loaded task (ties: the lowest index): no task holds more than
+    # the average load plus the largest group, and the largest group shares
+    # its task only with groups that fit under the others' loads. Where a
+    # group goes changes nothing in its result (each group is smoothed by
+    # its own call of the core), only the balance.
+    weight = np.concatenate([d["sizes"] for d in distinct] + [np.zeros(0)]).astype(np.int64)
+    ids, inverse = np.unique(group, return_inverse=True)
+    group_weight = np.bincount(inverse, weights=weight, minlength=len(ids)).astype(np.int64)
+    group_arcs = np.bincount(inverse, minlength=len(ids)).astype(np.int64)
+    load = [0] * buckets
+    task_of = np.zeros(len(ids), dtype=np.int64)
+    for gi in sorted(range(len(ids)), key=lambda i: (-group_weight[i], ids[i])):
+        t = min(range(buckets), key=lambda j: (load[j], j))
+        task_of[gi] = t
+        load[t] += int(group_weight[gi])
+    task = task_of[inverse] if n else np.zeros(0, dtype=np.int64)
     out, k = [], 0
     for d in distinct:
         m = len(d["boxes"])
-        g = group[k:k + m]
-        out.append({"group": g, "task": g % buckets})
+        out.append({"group": group[k:k + m], "task": task[k:k + m]})
         k += m
-    return {"assign": out, "groups": int(len(np.unique(group)))}
+    largest = int(np.argmax(group_weight)) if len(ids) else 0
+    return {"assign": out, "groups": int(len(ids)), "task_vertices": load,
+            "largest_group": {"arcs": int(group_arcs[largest]) if len(ids) else 0,
+                              "vertices": int(group_weight[largest]) if len(ids) else 0}}
 
 
 def _to_group_task(d, groups, d_index, task):
@@ -548,7 +576,7 @@ def _stages(ddf, *, crs, geometry, alpha, tolerance, max_deviation, topology, bu
     cuts = [delayed(_cut)(c, info, B, *[junctions[j][i] for j in range(B)]) for i, c in enumerate(cleaned)]
     distinct = [delayed(_distinct_arcs)(alpha, *[delayed(_arc_split)(cut, j) for cut in cuts]) for j in range(B)]
     # 4. Groups of arcs that may meet (boxes only in one task), smoothed.
-    groups = delayed(_groups)(slack, tolerance, B, *distinct)
+    groups = delayed(_groups)(slack, tolerance, B, *[delayed(_box_summary)(d) for d in distinct])
     domain = info["frame"].domain
     smoothed = [delayed(_smooth_groups, nout=P)(options, domain, slack, groups, P,
                                                 *[delayed(_to_group_task)(d, groups, j, t)
@@ -583,7 +611,10 @@ def smooth(ddf, *, crs, geometry="geometry", alpha=0.5, tolerance=None, max_devi
 def arc_counts(ddf, *, crs, geometry="geometry", alpha=0.5, tolerance=None, buckets=None):
     """What the arc stages of smooth() (topology "preserve") see, computed:
     {"arcs": distinct arcs (each smoothed once), "arcs_per_bucket": [...],
-    "groups": groups of arcs that may meet (each smoothed in one task)}."""
+    "groups": groups of arcs that may meet (each smoothed in one task),
+    "task_vertices": the arc vertices each smoothing task holds (groups
+    placed largest first on the least loaded task), "largest_group":
+    {"arcs", "vertices"}}."""
     import dask
 
     _check_frame(ddf, geometry, alpha, tolerance, None, "preserve")
@@ -591,7 +622,8 @@ def arc_counts(ddf, *, crs, geometry="geometry", alpha=0.5, tolerance=None, buck
                  topology="preserve", buckets=buckets)
     distinct, groups = dask.compute(st["distinct"], st["groups"])
     per = [len(d["keys"]) for d in distinct]
-    return {"arcs": sum(per), "arcs_per_bucket": per, "groups": groups["groups"]}
+    return {"arcs": sum(per), "arcs_per_bucket": per, "groups": groups["groups"],
+            "task_vertices": groups["task_vertices"], "largest_group": groups["largest_group"]}
 
 
 def _write(df, path, crs, geometry, driver):
