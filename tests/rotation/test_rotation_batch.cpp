@@ -398,7 +398,7 @@ std::vector<std::pair<std::string, quaternion_spline<double>>> pyramid_curves(st
         o.closed = round % 3 == 1;
         o.keep_signs = round % 4 == 2;
         if (kind == spline_kind::kochanek_bartels) o.kb = {{tcb(rng), tcb(rng), tcb(rng)}};
-        out.emplace_back("kind " + std::to_string(int(kind)), quaternion_spline<double>(keys, o));
+        out.emplace_back("kind " + std::to_string(int(kind)) + " round " + std::to_string(round), quaternion_spline<double>(keys, o));
     }
     std::vector<std::vector<quat>> segs;
     for (std::size_t i = 0; i + 1 < keys.size(); ++i)
@@ -414,12 +414,16 @@ std::vector<std::pair<std::string, quaternion_spline<double>>> pyramid_curves(st
 // moderate and long-way steps (keep_signs, up to 3 rad), a repeated key (a
 // zero-length segment with alpha, where the curve rests), closed curves,
 // TCB, 4-control De Casteljau; sorted and shuffled t with every knot. The
-// tolerance is 32 eps: a pyramid is three levels of slerps, each within a
-// few ulps of the scalar one (atan2 within 2 ulps where the scalar log's
-// is within 1, the sine and cosine within 1, about ten products), and an
-// error in a level passes to the next at most doubled (a slerp is
-// Lipschitz-2 in its ends for the angles here); measured at most 12 eps
-// over seeds 2847-2860.
+// tolerance is 8 eps: a pyramid is three levels of slerps, each within a
+// few ulps of the scalar one (atan2 within 2 ulps, the scalar log's within
+// 1, the sine and cosine within 1 each, about ten products and sums), and
+// the levels' errors do not grow for the angles here; measured at most
+// 4.3 eps over seeds 2847-2866. Under keep_signs (every fourth round) keys
+// may be nearly antipodal and Squad's and Barry-Goldman's outer slerps then
+// join quaternions up to 2 pi apart as travelled, where the slerp's axis
+// is known only to eps / sin(angle / 2) and both evaluations' roundings are
+// amplified alike (measured up to 2.3e-13 over the same seeds): 1e-10 there,
+// still far below any wrong term.
 TEST(RotationBatch, PyramidAndSquadMatchScalar) {
     CRSPLINE_SEEDED(seed, 2847);
     std::mt19937_64 rng(seed);
@@ -430,7 +434,8 @@ TEST(RotationBatch, PyramidAndSquadMatchScalar) {
             for (bool sorted : {false, true}) {
                 const auto t = sample_t(rng, c.grid(), 300, sorted);
                 const auto r = run_batch(c, std::span<const double>(t), 0, frame::world);
-                checked += compare(c, t, r, 0, frame::world, [&](double x) { return c.locate(x); }, what, 32);
+                checked += compare(c, t, r, 0, frame::world, [&](double x) { return c.locate(x); }, what,
+                                   round % 4 == 2 ? 1e-10 / eps : 8);
             }
         }
     EXPECT_EQ(curves, 12 * 5);

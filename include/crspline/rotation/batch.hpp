@@ -80,58 +80,13 @@ using rows = batch_rows<T>;
 /// Two doubles in one 16-byte vector (one SSE2 register on the x86-64
 /// baseline, NEON on AArch64; plain code elsewhere) and its mask.
 typedef double v2 __attribute__((vector_size(16)));
-typedef long long m2 __attribute__((vector_size(16)));
-
-/// Four lanes as two such vectors. Each operation is two independent
-/// instructions side by side, so two chains of the long sine, cosine and
-/// product computation are in flight at once for the out-of-order core to
-/// overlap (one chain alone waits on each step's latency). A struct of two
-/// 16-byte vectors, not a 32-byte vector: passing that by value without AVX
-/// changes the ABI, which GCC warns about at every use.
-struct vm {
-    m2 lo, hi;
-    friend vm operator|(vm a, vm b) noexcept { return {a.lo | b.lo, a.hi | b.hi}; }
-    friend vm operator&(vm a, vm b) noexcept { return {a.lo & b.lo, a.hi & b.hi}; }
-    friend vm operator^(vm a, vm b) noexcept { return {a.lo ^ b.lo, a.hi ^ b.hi}; }
-};
-struct vd {
-    v2 lo, hi;
-    vd() = default;
-    constexpr vd(v2 l, v2 h) noexcept : lo(l), hi(h) {}
-    constexpr vd(double a, double b, double c, double d) noexcept : lo{a, b}, hi{c, d} {}
-    double operator[](int l) const noexcept { return l < 2 ? lo[l] : hi[l - 2]; }
-    void set(int l, double x) noexcept {
-        if (l < 2) lo[l] = x;
-        else hi[l - 2] = x;
-    }
-#define CRSPLINE_VD_OP(op)                                                                                       \
-    friend vd operator op(vd a, vd b) noexcept { return {a.lo op b.lo, a.hi op b.hi}; }                          \
-    friend vd operator op(vd a, double b) noexcept { return {a.lo op b, a.hi op b}; }                            \
-    friend vd operator op(double a, vd b) noexcept { return {a op b.lo, a op b.hi}; }
-    CRSPLINE_VD_OP(+)
-    CRSPLINE_VD_OP(-)
-    CRSPLINE_VD_OP(*)
-    CRSPLINE_VD_OP(/)
-#undef CRSPLINE_VD_OP
-#define CRSPLINE_VD_CMP(op)                                                                                      \
-    friend vm operator op(vd a, vd b) noexcept { return {a.lo op b.lo, a.hi op b.hi}; }                          \
-    friend vm operator op(vd a, double b) noexcept { return {a.lo op b, a.hi op b}; }
-    CRSPLINE_VD_CMP(<)
-    CRSPLINE_VD_CMP(>)
-    CRSPLINE_VD_CMP(>=)
-    CRSPLINE_VD_CMP(==)
-#undef CRSPLINE_VD_CMP
-    friend vd operator-(vd a) noexcept { return {-a.lo, -a.hi}; }
-};
-inline constexpr int vd_width = 4;
+typedef decltype(v2{} < v2{}) m2;  // what a comparison gives
 
 [[gnu::always_inline]] inline v2 sel(m2 m, v2 a, v2 b) noexcept { return (v2)((m & (m2)a) | (~m & (m2)b)); }
-[[gnu::always_inline]] inline vd sel(vm m, vd a, vd b) noexcept { return {sel(m.lo, a.lo, b.lo), sel(m.hi, a.hi, b.hi)}; }
 /// -x in the lanes where m holds (a sign flip: exact).
 [[gnu::always_inline]] inline v2 negate_if(m2 m, v2 x) noexcept {
-    return (v2)((m2)x ^ (m & static_cast<long long>(0x8000000000000000ULL)));
+    return (v2)((m2)x ^ (m & static_cast<std::int64_t>(0x8000000000000000ULL)));
 }
-[[gnu::always_inline]] inline vd negate_if(vm m, vd x) noexcept { return {negate_if(m.lo, x.lo), negate_if(m.hi, x.hi)}; }
 [[gnu::always_inline]] inline v2 vsqrt(v2 x) noexcept {
 #if defined(__SSE2__)
     return (v2)_mm_sqrt_pd((__m128d)x);  // correctly rounded: the bits of std::sqrt
@@ -139,13 +94,13 @@ inline constexpr int vd_width = 4;
     return v2{std::sqrt(x[0]), std::sqrt(x[1])};
 #endif
 }
-[[gnu::always_inline]] inline vd vsqrt(vd x) noexcept { return {vsqrt(x.lo), vsqrt(x.hi)}; }
-[[gnu::always_inline]] inline void set_lane(vd& v, int l, double x) noexcept { v.set(l, x); }
+/// Whether every lane of m holds.
+[[gnu::always_inline]] inline bool all_of(m2 m) noexcept { return (m[0] & m[1]) != 0; }
 #else
 #define CRSPLINE_ROTATION_LANES 0
 #endif
 
-// The AVX2 clone (x86-64 with GCC): the same kernels on four doubles in one
+// The AVX2 clone (x86-64 with GCC): the same kernels on four doubles per
 // 32-byte register (v4), compiled inside functions with target("avx2") and
 // chosen at run time by a CPUID test (run() below), as detail/x86_kernels.hpp
 // does for the point curves: nothing needs -mavx2 or -march. The target has
@@ -157,17 +112,145 @@ inline constexpr int vd_width = 4;
 #define CRSPLINE_ROTATION_AVX2 1
 typedef double v4 __attribute__((vector_size(32)));
 typedef decltype(v4{} < v4{}) m4;  // what a comparison gives
-// Templates, not functions: a function with a 32-byte vector argument or
-// result draws GCC's -Wpsabi note at the end of every translation unit,
-// outside this header's pragma; a template's only where it is instantiated
-// (inside the clone).
+// Templates, not functions: only ever instantiated inside the clone.
 #define CRSPLINE_V4 template <class V> requires std::is_same_v<V, v4> [[gnu::always_inline]] inline
 CRSPLINE_V4 V sel(m4 m, V a, V b) noexcept { return (V)((m & (m4)a) | (~m & (m4)b)); }
-CRSPLINE_V4 V negate_if(m4 m, V x) noexcept { return (V)((m4)x ^ (m & static_cast<long>(0x8000000000000000ULL))); }
+CRSPLINE_V4 V negate_if(m4 m, V x) noexcept { return (V)((m4)x ^ (m & static_cast<std::int64_t>(0x8000000000000000ULL))); }
 CRSPLINE_V4 V vsqrt(V x) noexcept { return __builtin_ia32_sqrtpd256(x); }  // correctly rounded
-CRSPLINE_V4 void set_lane(V& v, int l, double x) noexcept { v[l] = x; }
+template <class M> requires std::is_same_v<M, m4>
+[[gnu::always_inline]] inline bool all_of(M m) noexcept { return __builtin_ia32_movmskpd256((v4)m) == 0xF; }
 #else
 #define CRSPLINE_ROTATION_AVX2 0
+#endif
+
+#if CRSPLINE_ROTATION_LANES
+/// The lanes of a batch: N vectors H side by side (H = v2, N = 2: four
+/// lanes, the portable code; H = v4: the AVX2 clone). Each operation is N
+/// independent instructions, so N chains of the long sine, cosine, atan2
+/// and product computations are in flight at once for the out-of-order core
+/// to overlap (one chain alone waits on each step's latency; more than the
+/// registers hold spill). A struct of vectors, not one vector N times as
+/// wide: passing that by value without AVX changes the ABI, which GCC warns
+/// about at every use.
+template <class MH, int N>
+struct multi_mask {
+    MH h[N];
+#define CRSPLINE_VM_OP(op)                                                                                       \
+    friend multi_mask operator op(multi_mask a, multi_mask b) noexcept {                                         \
+        multi_mask r;                                                                                            \
+        for (int i = 0; i < N; ++i) r.h[i] = a.h[i] op b.h[i];                                                   \
+        return r;                                                                                                \
+    }
+    CRSPLINE_VM_OP(|)
+    CRSPLINE_VM_OP(&)
+    CRSPLINE_VM_OP(^)
+#undef CRSPLINE_VM_OP
+};
+template <class H, int N>
+struct multi {
+    using half = H;
+    using mask = multi_mask<decltype(H{} < H{}), N>;
+    static constexpr int half_width = int(sizeof(H) / sizeof(double));
+    static constexpr int width = N * half_width;
+    H h[N];
+    multi() = default;
+    constexpr multi(double a, double b, double c, double d) noexcept requires(width == 4 && half_width == 2) : h{{a, b}, {c, d}} {}
+    double operator[](int l) const noexcept { return h[l / half_width][l % half_width]; }
+    void set(int l, double x) noexcept { h[l / half_width][l % half_width] = x; }
+#define CRSPLINE_VD_OP(op)                                                                                       \
+    friend multi operator op(multi a, multi b) noexcept {                                                        \
+        multi r;                                                                                                 \
+        for (int i = 0; i < N; ++i) r.h[i] = a.h[i] op b.h[i];                                                   \
+        return r;                                                                                                \
+    }                                                                                                            \
+    friend multi operator op(multi a, double b) noexcept {                                                       \
+        multi r;                                                                                                 \
+        for (int i = 0; i < N; ++i) r.h[i] = a.h[i] op b;                                                        \
+        return r;                                                                                                \
+    }                                                                                                            \
+    friend multi operator op(double a, multi b) noexcept {                                                       \
+        multi r;                                                                                                 \
+        for (int i = 0; i < N; ++i) r.h[i] = a op b.h[i];                                                        \
+        return r;                                                                                                \
+    }
+    CRSPLINE_VD_OP(+)
+    CRSPLINE_VD_OP(-)
+    CRSPLINE_VD_OP(*)
+    CRSPLINE_VD_OP(/)
+#undef CRSPLINE_VD_OP
+#define CRSPLINE_VD_CMP(op)                                                                                      \
+    friend mask operator op(multi a, multi b) noexcept {                                                         \
+        mask r;                                                                                                  \
+        for (int i = 0; i < N; ++i) r.h[i] = a.h[i] op b.h[i];                                                   \
+        return r;                                                                                                \
+    }                                                                                                            \
+    friend mask operator op(multi a, double b) noexcept {                                                        \
+        mask r;                                                                                                  \
+        for (int i = 0; i < N; ++i) r.h[i] = a.h[i] op b;                                                        \
+        return r;                                                                                                \
+    }
+    CRSPLINE_VD_CMP(<)
+    CRSPLINE_VD_CMP(>)
+    CRSPLINE_VD_CMP(<=)
+    CRSPLINE_VD_CMP(>=)
+    CRSPLINE_VD_CMP(==)
+#undef CRSPLINE_VD_CMP
+    friend multi operator-(multi a) noexcept {
+        multi r;
+        for (int i = 0; i < N; ++i) r.h[i] = -a.h[i];
+        return r;
+    }
+};
+
+template <class H, class MH, int N>
+[[gnu::always_inline]] inline multi<H, N> sel(multi_mask<MH, N> m, multi<H, N> a, multi<H, N> b) noexcept {
+    multi<H, N> r;
+    for (int i = 0; i < N; ++i) r.h[i] = sel(m.h[i], a.h[i], b.h[i]);
+    return r;
+}
+template <class H, class MH, int N>
+[[gnu::always_inline]] inline multi<H, N> negate_if(multi_mask<MH, N> m, multi<H, N> x) noexcept {
+    multi<H, N> r;
+    for (int i = 0; i < N; ++i) r.h[i] = negate_if(m.h[i], x.h[i]);
+    return r;
+}
+template <class H, int N>
+[[gnu::always_inline]] inline multi<H, N> vsqrt(multi<H, N> x) noexcept {
+    multi<H, N> r;
+    for (int i = 0; i < N; ++i) r.h[i] = vsqrt(x.h[i]);
+    return r;
+}
+template <class MH, int N>
+[[gnu::always_inline]] inline bool all_of(multi_mask<MH, N> m) noexcept {
+    bool all = true;
+    for (int i = 0; i < N; ++i) all &= all_of(m.h[i]);
+    return all;
+}
+template <class H, int N>
+[[gnu::always_inline]] inline void set_lane(multi<H, N>& v, int l, double x) noexcept { v.set(l, x); }
+/// |x|, lane by lane (the sign bit cleared: exact).
+template <class H, int N>
+[[gnu::always_inline]] inline multi<H, N> vabs(multi<H, N> x) noexcept {
+    using MH = decltype(H{} < H{});
+    constexpr std::int64_t m = 0x7FFFFFFFFFFFFFFFLL;
+    multi<H, N> r;
+    for (int i = 0; i < N; ++i) r.h[i] = (H)((MH)x.h[i] & m);
+    return r;
+}
+
+/// The portable lanes: four doubles in two 16-byte vectors.
+using vd = multi<v2, 2>;
+using vm = vd::mask;
+inline constexpr int vd_width = vd::width;
+#if CRSPLINE_ROTATION_AVX2
+/// The AVX2 clone's lanes: CRSPLINE_ROTATION_AVX2_N 32-byte vectors
+/// (default 3: twelve doubles, three chains in flight; measured faster
+/// than two or four on the pyramids, whose chains are long).
+#ifndef CRSPLINE_ROTATION_AVX2_N
+#define CRSPLINE_ROTATION_AVX2_N 3
+#endif
+using vx = multi<v4, CRSPLINE_ROTATION_AVX2_N>;
+#endif
 #endif
 
 /// Which code runs a batch: the portable lanes, or the AVX2 clone.
@@ -205,21 +288,51 @@ template <class S>
 template <class S>
 [[gnu::always_inline]] inline S vsqrt(S x) noexcept { return std::sqrt(x); }
 
-/// The lanes a sample type T is computed in: two doubles, or one T.
+/// How many samples a lane type holds.
+template <class V>
+inline constexpr int width_of = 1;
+#if CRSPLINE_ROTATION_LANES
+template <class H, int N>
+inline constexpr int width_of<multi<H, N>> = multi<H, N>::width;
+#endif
+
+/// The lanes a sample type T is computed in by the portable code: four
+/// doubles, or one T.
 template <class T>
 struct pack {
     using V = T;
-    using M = bool;
-    static constexpr int width = 1;
 };
 #if CRSPLINE_ROTATION_LANES
 template <>
 struct pack<double> {
     using V = vd;
-    using M = vm;
-    static constexpr int width = vd_width;
 };
 #endif
+
+// ----- polynomials ---------------------------------------------------------------
+
+/// sum_{i < K} c[i] z^i by Estrin's scheme: pairs c[2i] + c[2i+1] z, then
+/// pairs of those with z^2, z^4, ...: about log2(K) multiply-adds deep
+/// instead of Horner's K, so that the lanes do not wait on each step's
+/// latency. Its roundings differ from Horner's in the high-order terms only.
+template <int H, class V>
+[[gnu::always_inline]] inline V power_of_two(V z) noexcept {  // z^H, H a power of two
+    if constexpr (H == 1) return z;
+    else {
+        const V h = power_of_two<H / 2>(z);
+        return h * h;
+    }
+}
+template <class T, int K, class V>
+[[gnu::always_inline]] inline V estrin(const double* c, V z) noexcept {
+    if constexpr (K == 1) return V{} + T(c[0]);
+    else if constexpr (K == 2) return T(c[0]) + z * T(c[1]);
+    else {
+        constexpr int H = K > 8 ? 8 : K > 4 ? 4 : 2;  // the largest power of two below K (K <= 16)
+        static_assert(K <= 16);
+        return estrin<T, H>(c, z) + estrin<T, K - H>(c + H, z) * power_of_two<H>(z);
+    }
+}
 
 // ----- sine and cosine ------------------------------------------------------------
 
@@ -243,11 +356,9 @@ inline constexpr double poly_sincos_limit = 1 << 19;
 /// true value (tested against std:: at random, tests/rotation/).
 template <class V>
 [[gnu::always_inline]] inline sin_cos<V> poly_sincos(V x) noexcept {
-    bool in_range = true;
-    for (int l = 0; l < vd_width; ++l) in_range &= std::abs(x[l]) <= poly_sincos_limit;
-    if (!in_range) [[unlikely]] {
+    if (!all_of(vabs(x) <= poly_sincos_limit)) [[unlikely]] {  // NaN fails the test too
         sin_cos<V> r{x, x};
-        for (int l = 0; l < vd_width; ++l) set_lane(r.s, l, std::sin(x[l])), set_lane(r.c, l, std::cos(x[l]));
+        for (int l = 0; l < V::width; ++l) set_lane(r.s, l, std::sin(x[l])), set_lane(r.c, l, std::cos(x[l]));
         return r;
     }
     const double magic = 6755399441055744.0;  // 1.5 * 2^52
@@ -257,17 +368,15 @@ template <class V>
     const V r = ((x - n * p1) - n * p2) - n * p3;
     const V z = r * r;
     // fdlibm __kernel_sin(r, 0, 0): r + r^3 (S1 + z S2 + ... + z^5 S6).
-    const V ps = 8.33333333332248946124e-03 +
-                  z * (-1.98412698298579493134e-04 +
-                       z * (2.75573137070700676789e-06 + z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)));
+    static constexpr double sin_poly[5] = {8.33333333332248946124e-03, -1.98412698298579493134e-04, 2.75573137070700676789e-06,
+                                           -2.50507602534068634195e-08, 1.58969099521155010221e-10};
+    const V ps = estrin<double, 5>(sin_poly, z);
     const V s = r + (z * r) * (-1.66666666666666324348e-01 + z * ps);
     // fdlibm __kernel_cos(r, 0): 1 - z/2 + z^2 (C1 + ... + z^5 C6), the
     // rounding of 1 - z/2 recovered as (1 - w) - z/2.
-    const V pc = z * (4.16666666666666019037e-02 +
-                       z * (-1.38888888888741095749e-03 +
-                            z * (2.48015872894767294178e-05 +
-                                 z * (-2.75573143513906633035e-07 +
-                                      z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
+    static constexpr double cos_poly[6] = {4.16666666666666019037e-02,  -1.38888888888741095749e-03, 2.48015872894767294178e-05,
+                                           -2.75573143513906633035e-07, 2.08757232129817482790e-09,  -1.13596475577881948265e-11};
+    const V pc = z * estrin<double, 6>(cos_poly, z);
     const V hz = 0.5 * z, w = 1.0 - hz;
     const V c = w + (((1.0 - w) - hz) + z * pc);
     // The quadrant j = n mod 4 (floor(n/4) = round(n/4 - 3/8) for integer n).
@@ -277,10 +386,8 @@ template <class V>
     return {negate_if(j >= 2.0, sel(odd, c, s)), negate_if((j == 1.0) | (j == 2.0), sel(odd, s, c))};
 }
 
-[[gnu::always_inline]] inline sin_cos<vd> sincos(vd x) noexcept { return poly_sincos(x); }
-#endif
-#if CRSPLINE_ROTATION_AVX2
-CRSPLINE_V4 sin_cos<V> sincos(V x) noexcept { return poly_sincos(x); }
+template <class H, int N>
+[[gnu::always_inline]] inline sin_cos<multi<H, N>> sincos(multi<H, N> x) noexcept { return poly_sincos(x); }
 #endif
 
 template <class S>
@@ -320,20 +427,12 @@ template <class V>
     const V cl = sel(k2, zero + 3.061616997868383e-17, sel(k1, zero + 2.2698777452961687e-17, zero));
     const V r = sel(hi == 0.0, zero, (lo - tk * hi) / (hi + tk * lo));  // y = x = 0: angle 0
     const V z = r * r;
-    // atan r = r + r z P(z), P(z) = sum_{k=1..13} (-1)^k z^(k-1)/(2k+1).
-    V p = zero - 0.037037037037037035;
-    p = p * z + 0.04;
-    p = p * z - 0.043478260869565216;
-    p = p * z + 0.047619047619047616;
-    p = p * z - 0.05263157894736842;
-    p = p * z + 0.058823529411764705;
-    p = p * z - 0.06666666666666667;
-    p = p * z + 0.07692307692307693;
-    p = p * z - 0.09090909090909091;
-    p = p * z + 0.1111111111111111;
-    p = p * z - 0.14285714285714285;
-    p = p * z + 0.2;
-    p = p * z - 0.3333333333333333;
+    // atan r = r + r z P(z), P(z) = sum_{k=1..13} (-1)^k z^(k-1)/(2k+1) (Estrin).
+    static constexpr double atan_series[13] = {-0.3333333333333333,   0.2,  -0.14285714285714285, 0.1111111111111111,
+                                               -0.09090909090909091,  0.07692307692307693,  -0.06666666666666667,
+                                               0.058823529411764705,  -0.05263157894736842, 0.047619047619047616,
+                                               -0.043478260869565216, 0.04, -0.037037037037037035};
+    const V p = estrin<double, 13>(atan_series, z);
     const V a = ch + (cl + (r + (r * z) * p));
     // The quadrant: a, pi/2 - a (y > |x|), pi - a (x < 0), pi/2 + a (both),
     // as b_hi + (b_lo +- a): one rounding for the sum.
@@ -343,10 +442,8 @@ template <class V>
 }
 
 #if CRSPLINE_ROTATION_LANES
-[[gnu::always_inline]] inline vd atan2_upper(vd y, vd x) noexcept { return poly_atan2(y, x); }
-#endif
-#if CRSPLINE_ROTATION_AVX2
-CRSPLINE_V4 V atan2_upper(V y, V x) noexcept { return poly_atan2(y, x); }
+template <class H, int N>
+[[gnu::always_inline]] inline multi<H, N> atan2_upper(multi<H, N> y, multi<H, N> x) noexcept { return poly_atan2(y, x); }
 #endif
 template <class S>
 [[gnu::always_inline]] inline S atan2_upper(S y, S x) noexcept {
@@ -378,9 +475,7 @@ inline constexpr jacobian_series series = make_jacobian_series();
 
 template <class T, class V>
 [[gnu::always_inline]] inline V horner16(const double (&c)[16], V z) noexcept {
-    V p = V{} + T(c[15]);
-    for (int m = 14; m >= 0; --m) p = p * z + T(c[m]);
-    return p;
+    return estrin<T, 16>(c, z);
 }
 
 // ----- 3-vectors and quaternions of lanes ---------------------------------------------
@@ -422,10 +517,8 @@ template <class V>
 template <class S>
 [[gnu::always_inline]] inline S lane(S x, int) noexcept { return x; }
 #if CRSPLINE_ROTATION_LANES
-[[gnu::always_inline]] inline double lane(vd x, int l) noexcept { return x[l]; }
-#endif
-#if CRSPLINE_ROTATION_AVX2
-CRSPLINE_V4 double lane(V x, int l) noexcept { return x[l]; }
+template <class H, int N>
+[[gnu::always_inline]] inline double lane(const multi<H, N>& x, int l) noexcept { return x[l]; }
 #endif
 
 template <class T, class V>
@@ -456,7 +549,15 @@ template <class V, class F>
 [[gnu::always_inline]] inline V make_lanes(F f) noexcept {
     if constexpr (std::is_floating_point_v<V>) return f(0);
 #if CRSPLINE_ROTATION_LANES
-    else return V{f(0), f(1), f(2), f(3)};
+    else {
+        V r;
+        constexpr int hw = V::half_width;
+        for (int i = 0; i < V::width / hw; ++i) {
+            if constexpr (hw == 2) r.h[i] = typename V::half{f(2 * i), f(2 * i + 1)};
+            else r.h[i] = typename V::half{f(4 * i), f(4 * i + 1), f(4 * i + 2), f(4 * i + 3)};
+        }
+        return r;
+    }
 #endif
 }
 
@@ -644,13 +745,14 @@ template <class T, class V = typename pack<T>::V>
 // ----- the De Casteljau family and Squad ---------------------------------------------------
 
 /// A slerp whose two ends do not depend on the sample, packed: slerp(a, b,
-/// s) = exp(s L) a with L = log(b a*) = angle * axis (half-angle units, as
-/// quaternion.hpp's exp and log).
+/// s) = exp(s L) a with L = log(b a*) = angle * n (half-angle units, as
+/// quaternion.hpp's exp and log), which is cos(s angle) a + sin(s angle) o
+/// with o = [0, n] a (a unit quaternion orthogonal to a).
 template <class T>
 struct fixed_slerp {
     T angle;
-    T axis[3];
     T a[4];
+    T o[4];
 };
 
 /// One segment of a De Casteljau pyramid of 4 controls (Catmull-Rom,
@@ -675,32 +777,37 @@ struct squad_packed {
     fixed_slerp<T> f[2];
 };
 
-/// exp(s L) a on lanes, L and a from each lane's fixed_slerp.
+/// exp(s L) a = cos(s angle) a + sin(s angle) o on lanes, from each lane's
+/// fixed_slerp.
 template <class T, class V, class Get>
 [[gnu::always_inline]] inline ql<V> fixed_lanes(Get get, V s) noexcept {
     auto g = [&](auto member) CRSPLINE_ROTATION_BLOCK { return make_lanes<V>([&](int l) { return member(get(l)); }); };
-    const V ang = s * g([](const fixed_slerp<T>& f) { return f.angle; });
-    const sin_cos<V> sc = sincos(ang);
-    const ql<V> e{sc.c, g([](const fixed_slerp<T>& f) { return f.axis[0]; }) * sc.s,
-                  g([](const fixed_slerp<T>& f) { return f.axis[1]; }) * sc.s, g([](const fixed_slerp<T>& f) { return f.axis[2]; }) * sc.s};
-    const ql<V> a{g([](const fixed_slerp<T>& f) { return f.a[0]; }), g([](const fixed_slerp<T>& f) { return f.a[1]; }),
-                  g([](const fixed_slerp<T>& f) { return f.a[2]; }), g([](const fixed_slerp<T>& f) { return f.a[3]; })};
-    return mul(e, a);
+    const sin_cos<V> sc = sincos(s * g([](const fixed_slerp<T>& f) { return f.angle; }));
+    const V aw = g([](const fixed_slerp<T>& f) { return f.a[0]; }), ax = g([](const fixed_slerp<T>& f) { return f.a[1]; }),
+            ay = g([](const fixed_slerp<T>& f) { return f.a[2]; }), az = g([](const fixed_slerp<T>& f) { return f.a[3]; });
+    const V ow = g([](const fixed_slerp<T>& f) { return f.o[0]; }), ox = g([](const fixed_slerp<T>& f) { return f.o[1]; }),
+            oy = g([](const fixed_slerp<T>& f) { return f.o[2]; }), oz = g([](const fixed_slerp<T>& f) { return f.o[3]; });
+    return {aw * sc.c + ow * sc.s, ax * sc.c + ox * sc.s, ay * sc.c + oy * sc.s, az * sc.c + oz * sc.s};
 }
 
 /// slerp(a, b, s) = exp(s log(b a*)) a on lanes whose ends depend on the
-/// sample: the log through atan2_upper (the half angle in [0, pi] along
-/// the vector part; [pi, 0, 0] for b a* = -1, as log() gives), the exp
-/// through sincos. No sign change: a negative a . b takes the long way, as
+/// sample. b a* = [w, v] with w = a . b, and v a = b - w a = o, so |v| =
+/// |o| and exp(s log(b a*)) a = cos(s h) a + sin(s h) o/|o|, h = atan2(|o|,
+/// w) in [0, pi] the half angle (atan2_upper, then sincos). Where o = 0 and
+/// w < 0 (b = -a exactly) log() takes the axis [1, 0, 0]: then o/|o| is
+/// [0, 1, 0, 0] a. No sign change: a negative a . b takes the long way, as
 /// slerp() does.
 template <class T, class V>
 [[gnu::always_inline]] inline ql<V> slerp_lanes(const ql<V>& a, const ql<V>& b, V s) noexcept {
-    const ql<V> c = mul(b, ql<V>{a.w, -a.x, -a.y, -a.z});
-    const V nv = vsqrt(c.x * c.x + c.y * c.y + c.z * c.z);
-    const sin_cos<V> sc = sincos(s * atan2_upper(nv, c.w));
-    const auto axis = nv > T(0);
-    const V f = sel(axis, sc.s / nv, V{});
-    return mul(ql<V>{sc.c, sel(axis, c.x * f, sc.s), c.y * f, c.z * f}, a);
+    const V w = a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z;
+    const ql<V> o{b.w - w * a.w, b.x - w * a.x, b.y - w * a.y, b.z - w * a.z};
+    const V no = vsqrt(o.w * o.w + o.x * o.x + o.y * o.y + o.z * o.z);
+    const sin_cos<V> sc = sincos(s * atan2_upper(no, w));
+    const auto axis = no > T(0);
+    const V f = sel(axis, sc.s / no, V{});
+    const V zero{};
+    return {a.w * sc.c + sel(axis, o.w * f, zero - a.x * sc.s), a.x * sc.c + sel(axis, o.x * f, a.w * sc.s),
+            a.y * sc.c + sel(axis, o.y * f, zero - a.z * sc.s), a.z * sc.c + sel(axis, o.z * f, a.y * sc.s)};
 }
 
 /// Samples k .. k + width - 1 of a pyramid curve (rotations only).
@@ -716,9 +823,13 @@ template <class T, class V, bool uniform>
         }
         s[j] = make_lanes<V>([&](int l) { return (t[l] - segs[seg[l]].ta[j]) * segs[seg[l]].inv[j]; });
     }
-    ql<V> F[3];
-    for (int j = 0; j < 3; ++j) F[j] = fixed_lanes<T>([&](int l) -> const fixed_slerp<T>& { return segs[seg[l]].f[j]; }, s[j]);
-    const ql<V> D0 = slerp_lanes<T>(F[0], F[1], s[3]), D1 = slerp_lanes<T>(F[1], F[2], s[4]);
+    auto fixed = [&](int j) CRSPLINE_ROTATION_BLOCK {
+        return fixed_lanes<T>([&](int l) -> const fixed_slerp<T>& { return segs[seg[l]].f[j]; }, s[j]);
+    };
+    // In the order that keeps the fewest quaternions alive (registers).
+    const ql<V> F1 = fixed(1);
+    const ql<V> D0 = slerp_lanes<T>(fixed(0), F1, s[3]);
+    const ql<V> D1 = slerp_lanes<T>(F1, fixed(2), s[4]);
     store<T, V>(out, k, valid, slerp_lanes<T>(D0, D1, s[5]), nullptr, nullptr);
 }
 
@@ -734,14 +845,14 @@ template <class T, class V>
 
 // ----- the driver -------------------------------------------------------------------------
 
-/// Runs block(lanes_of<V>{}, seg, t, k, valid) over samples t[0..n) four (a
-/// pack's width) at a time; the segment of each from locate(k, t[k]). The
+/// Runs block(lanes_of<V>{}, seg, t, k, valid) over samples t[0..n) a lane
+/// type's width (4 portable, 8 AVX2) at a time; the segment of each from locate(k, t[k]). The
 /// last, partial block repeats its last sample in the unused lanes and
 /// writes only the valid ones. The block must be always_inline (the AVX2
 /// clone compiles it inside its own body).
 template <class T, class V, class Locate, class Block>
 [[gnu::always_inline]] inline void run_lanes(std::span<const T> t, Locate& locate, Block& block) {
-    constexpr int W = pack<T>::width;
+    constexpr int W = width_of<V>;
     const std::size_t n = t.size();
     std::size_t seg[W];
     T tl[W];
@@ -759,7 +870,7 @@ template <class T, class V, class Locate, class Block>
 #if CRSPLINE_ROTATION_AVX2
 template <class Locate, class Block>
 __attribute__((target("avx2"))) void run_avx2(std::span<const double> t, Locate& locate, Block& block) {
-    run_lanes<double, v4>(t, locate, block);
+    run_lanes<double, vx>(t, locate, block);
 }
 #endif
 

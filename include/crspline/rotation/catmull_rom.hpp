@@ -245,14 +245,15 @@ private:
     std::vector<detail_batch::pyramid_packed<T>> pyramid_;  // batch: De Casteljau (4 controls) and Barry-Goldman
     std::vector<detail_batch::squad_packed<T>> squad_;      // batch: Squad
 
-    // exp(s log(rel(a, b))) a, packed: log's half angle and axis.
+    // exp(s log(rel(a, b))) a, packed: log's half angle, a, and [0, axis] a.
     static detail_batch::fixed_slerp<T> pack_slerp(const quat& a, const quat& b) {
         detail_batch::fixed_slerp<T> p{};
         const vec3<T> L = log(rel(a, b));
         const T ang = crspline::norm(L);
         p.angle = ang;
-        if (ang > 0) p.axis[0] = L[0] / ang, p.axis[1] = L[1] / ang, p.axis[2] = L[2] / ang;
+        const quat o = ang > 0 ? quat{0, L[0] / ang, L[1] / ang, L[2] / ang} * a : quat{0, 0, 0, 0};
         p.a[0] = a.w, p.a[1] = a.x, p.a[2] = a.y, p.a[3] = a.z;
+        p.o[0] = o.w, p.o[1] = o.x, p.o[2] = o.y, p.o[3] = o.z;
         return p;
     }
 
