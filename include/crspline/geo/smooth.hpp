@@ -894,6 +894,7 @@ struct proof {
             return;
         }
         std::vector<std::pair<std::uint64_t, proof_record>> previous;
+        std::vector<std::uint64_t> candidates;
         std::vector<std::uint8_t> dirty(n);
         constexpr std::size_t max_rounds = 64;
         for (std::size_t round = 1;; ++round) {
@@ -909,10 +910,14 @@ struct proof {
             if (opt.preserve_topology) {
                 for (std::uint32_t i = 0; i < n; ++i)
                     if (dirty[i]) self[i] = prove_arcs(i, i);
-                // Pairs of arcs whose boxes meet (arc_pairs: a grid).
+                // Pairs of arcs whose boxes meet (arc_pairs: a grid), found in
+                // the first round: tension only pulls a segment's inner Bezier
+                // points towards its ends, so later boxes lie inside the first
+                // ones, and a pair whose boxes no longer meet proves nothing.
+                if (round == 1) candidates = arc_pairs();
                 previous.swap(across);
                 across.clear();
-                for (const std::uint64_t key : arc_pairs()) {
+                for (const std::uint64_t key : candidates) {
                     const auto i = std::uint32_t(key >> 32), j = std::uint32_t(key & 0xffffffffu);
                     if (dirty[i] || dirty[j]) {
                         across.push_back({key, prove_arcs(i, j)});
