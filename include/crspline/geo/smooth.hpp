@@ -350,9 +350,12 @@ inline void tessellate_arc(arc_work& a, double tolerance) {
     a.vseg.assign(a.line.t.size(), 0);
     a.vu.assign(a.line.t.size(), 0);
     std::size_t s = 0;
+    auto seg = a.curve->segment(0);  // segment s, made once per segment
     for (std::size_t k = 0; k < a.line.t.size(); ++k) {
         const double t = a.line.t[k];
+        const std::size_t was = s;
         while (s + 1 < segs && t >= g[s + 1]) ++s;
+        if (s != was) seg = a.curve->segment(s);
         a.vseg[k] = std::uint32_t(s);
         if (t == g[s]) {
             a.line.points[k] = a.pts[s];
@@ -361,7 +364,7 @@ inline void tessellate_arc(arc_work& a, double tolerance) {
             a.line.points[k] = a.pts[a.next(s)];
             a.vu[k] = 1;
         } else {
-            a.vu[k] = a.curve->segment(s).local(t);
+            a.vu[k] = seg.local(t);
         }
     }
     // The parameters are in vseg and vu now; the room tessellate() reserved
