@@ -193,8 +193,9 @@ struct batch_kernels {
             out[q] = c.points_[c.closed_ ? 0 : c.points_.size() - 1];
     }
 
-    // The curve's segments as detail::sorted_walk3_512 takes them: next is
-    // the sorted walk's rule above, load the run kernels' coefficients.
+    // The curve's segments as detail::sorted_walk3_512 and _256 take them:
+    // next is the sorted walk's rule (next_segment), load the run kernels'
+    // coefficients.
     template <int Order>
     struct walk_segments {
         const curve& c;

@@ -3,10 +3,11 @@
 // The library is built for the x86-64 baseline (SSE2: 2 doubles per
 // instruction). On a CPU with AVX2 the batch evaluation of 3-D points
 // (sorted t: double and float; unsorted t: double) runs these kernels
-// instead, 4 doubles or 8 floats per instruction, selected once by a CPUID
-// test (GCC/Clang function targets: nothing needs -mavx2 or
-// -march). They use no FMA, so each result goes through the same roundings,
-// in the same order, as the portable code: the same bits on every CPU.
+// instead, 4 doubles or 8 floats per instruction (sorted floats: 16 where
+// the CPU has AVX-512F), selected once by a CPUID test (GCC/Clang function
+// targets: nothing needs -mavx2 or -march). They use no FMA, so each
+// result goes through the same roundings, in the same order, as the
+// portable code: the same bits on every CPU.
 //
 // detail::avx2_enabled() can be set to false (tests compare both paths).
 #pragma once
