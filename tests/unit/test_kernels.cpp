@@ -329,6 +329,53 @@ TEST(Kernels, ArcLengthRulesAgreeBitForBit) {
     EXPECT_GT(checked, 2u * (6 + 4) * 20u);
 }
 
+TEST(Kernels, ArcLengthHardSegmentsAgreeBitForBit) {
+    // The arc-length cases of issue 30's tail, through the batch (Halley in
+    // lanes, the rule choice, the halves' rules, the slower path) with AVX2
+    // and without: a speed zero at an end (tension 1), C'(u) = A + C (u -
+    // v)^2 (Halley's start on a line of symmetry), and near-cusps (branch
+    // points close to [0, 1]). Every piece's ends, length and rule, bit for
+    // bit.
+    CRSPLINE_SEEDED(s, 76);
+    std::mt19937_64 rng(s);
+    std::normal_distribution<double> g;
+    std::uniform_real_distribution<double> U(0, 1);
+    auto rv = [&] { return P3{{g(rng), g(rng), g(rng)}}; };
+    std::vector<cubic_segment<3>> segs;
+    for (int k = 0; k < 64; ++k) {
+        const P3 m = rv();
+        segs.push_back(cubic_segment<3>::hermite(rv(), rv(), k % 2 ? P3{} : m, k % 2 ? m : P3{}, 0.0, 1.0));
+        const P3 A = rv(), C0 = rv(), C = dot(A, C0) > 0 ? C0 : -1.0 * C0;
+        const double v = 0.25 * double(k % 5);
+        cubic_segment<3> e;
+        e.c1 = A + (v * v) * C, e.c2 = -v * C, e.c3 = C / 3.0, e.h = e.inv_h = 1;
+        segs.push_back(e);
+        const P3 n = rv(), E = rv(), F = rv();
+        const double w = -0.3 + 1.6 * U(rng), d = norm(E) * std::pow(10.0, -3 * U(rng));
+        cubic_segment<3> c;
+        c.c1 = (d / norm(n)) * n - w * E + (w * w) * F, c.c2 = (E - (2 * w) * F) / 2.0, c.c3 = F / 3.0;
+        c.h = c.inv_h = 1;
+        segs.push_back(c);
+    }
+    std::size_t checked = 0;
+    for (double acc : {1e-12, 1e-7}) {
+        const auto [fast, portable] = both_paths([&] {
+            std::vector<double> out;
+            detail::for_each_segment_length_piece(
+                segs.size(), [&](std::size_t i) { return segs[i]; }, acc,
+                [&](std::size_t i, double u0, double u1, double len, const detail::rule_choice& rc) {
+                    out.insert(out.end(), {double(i), u0, u1, len, double(rc.n), rc.bound});
+                });
+            return out;
+        });
+        ASSERT_EQ(fast.size(), portable.size()) << "acc " << acc;
+        for (std::size_t k = 0; k < fast.size(); ++k, ++checked)
+            ASSERT_EQ(std::memcmp(&fast[k], &portable[k], sizeof(double)), 0) << "acc " << acc << " value " << k;
+    }
+    // At least one piece per segment at each accuracy, six numbers each.
+    EXPECT_GE(checked, 2u * 6u * segs.size());
+}
+
 TEST(Kernels, MagnitudeReductionMatchesALoop) {
     // detail::max_abs_finite (SSE2, four accumulators; the construction's
     // checks, issue 30) against a plain loop: the same maximum, and "not

@@ -121,7 +121,11 @@ template <class V, class M, class S = sqrt_baseline>
     S::apply(root);
     n.xr = zero + 0.5, n.xi = zero + 0.6;
     const V inv2 = 1 / (2 * q2h);
-    lanes_set(n.xr, model, u - q1 * inv2);
+    // (The model's root moved by 1/128 of its imaginary part along the real
+    // axis: where q is even about the start, as when C'(u) = A + C u^2, the
+    // iteration would otherwise stay on the line Re u = const, which holds
+    // no root but a fixed point of Halley's method where q' = 0.)
+    lanes_set(n.xr, model, u - q1 * inv2 + root * inv2 * (1.0 / 128));
     lanes_set(n.xi, model, root * inv2);
     n.settled = n.moving;
     lanes_clear(n.settled, n.moving);
@@ -150,7 +154,16 @@ template <class V, class M>
     lanes_set(n.xr, n.moving, xr - sr);
     lanes_set(n.xi, n.moving, xi - si);
     const V step = sr * sr + si * si;
-    const M done = n.moving & ((step <= 1e-8 * (n.xi * n.xi)) | (step <= 1e-32 * (1 + n.xr * n.xr + n.xi * n.xi)));
+    // A short step settles only where |f / f'| is at most twice it, as
+    // near a simple root (step = f / f' (1 + O(f))). Halley's step also
+    // vanishes where f' = 0 and f does not, a fixed point of the iteration
+    // that is no root (it repels, |H'| = 3, but an iterate can pass close
+    // enough to stop there); deflating by it fails the rule's proof on
+    // every piece of the segment.
+    const V ff = fr * fr + fi * fi, dd1 = dr * dr + di * di;
+    const M near_root = ff <= 4 * step * dd1;
+    const M done = n.moving & near_root &
+                   ((step <= 1e-8 * (n.xi * n.xi)) | (step <= 1e-32 * (1 + n.xr * n.xr + n.xi * n.xi)));
     n.settled = n.settled | done;
     lanes_clear(n.moving, done);
 }
