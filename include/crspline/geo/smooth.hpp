@@ -74,6 +74,7 @@
 #include "../arc_length.hpp"
 #include "../catmull_rom.hpp"
 #include "../detail/format.hpp"
+#include "../detail/gauss_legendre.hpp"
 #include "../error.hpp"
 #include "../tessellate.hpp"
 #include "../vec.hpp"
