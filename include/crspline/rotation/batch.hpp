@@ -25,8 +25,10 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <type_traits>
+#include <utility>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -57,13 +59,14 @@ struct batch_rows {
 }  // namespace crspline::rotation
 
 #if defined(__GNUC__) && !defined(__clang__)
-// GCC notes (-Wpsabi) that a function taking or returning a 32-byte vector
-// is called differently with AVX than without. The AVX2 clone's helpers do
-// (v4), and are only ever inlined inside the clone, so the note says
-// nothing here; but GCC gives it for templates instantiated at the end of
-// the translation unit, outside any push/pop of this header. So it is
-// turned off from here to the end of the including file (it concerns ABI
-// differences between GCC versions and AVX settings only).
+// GCC warns (-Wpsabi) that a function returning a 32-byte vector is called
+// differently with AVX than without. The AVX2 clone's helpers do, and are
+// only ever inlined inside the clone (they take their vectors by
+// reference, which keeps GCC's note on argument passing away), so the
+// warning says nothing here; but GCC gives it for templates instantiated at
+// the end of the translation unit, outside any push/pop of this header. So
+// it is off from here to the end of the including file (it concerns
+// calling conventions between AVX settings only).
 #pragma GCC diagnostic ignored "-Wpsabi"
 #pragma GCC diagnostic push
 #endif
@@ -114,11 +117,11 @@ typedef double v4 __attribute__((vector_size(32)));
 typedef decltype(v4{} < v4{}) m4;  // what a comparison gives
 // Templates, not functions: only ever instantiated inside the clone.
 #define CRSPLINE_V4 template <class V> requires std::is_same_v<V, v4> [[gnu::always_inline]] inline
-CRSPLINE_V4 V sel(m4 m, V a, V b) noexcept { return (V)((m & (m4)a) | (~m & (m4)b)); }
-CRSPLINE_V4 V negate_if(m4 m, V x) noexcept { return (V)((m4)x ^ (m & static_cast<std::int64_t>(0x8000000000000000ULL))); }
-CRSPLINE_V4 V vsqrt(V x) noexcept { return __builtin_ia32_sqrtpd256(x); }  // correctly rounded
+CRSPLINE_V4 V sel(const m4& m, const V& a, const V& b) noexcept { return (V)((m & (m4)a) | (~m & (m4)b)); }
+CRSPLINE_V4 V negate_if(const m4& m, const V& x) noexcept { return (V)((m4)x ^ (m & static_cast<std::int64_t>(0x8000000000000000ULL))); }
+CRSPLINE_V4 V vsqrt(const V& x) noexcept { return __builtin_ia32_sqrtpd256(x); }  // correctly rounded
 template <class M> requires std::is_same_v<M, m4>
-[[gnu::always_inline]] inline bool all_of(M m) noexcept { return __builtin_ia32_movmskpd256((v4)m) == 0xF; }
+[[gnu::always_inline]] inline bool all_of(const M& m) noexcept { return __builtin_ia32_movmskpd256((v4)m) == 0xF; }
 #else
 #define CRSPLINE_ROTATION_AVX2 0
 #endif
@@ -136,7 +139,7 @@ template <class MH, int N>
 struct multi_mask {
     MH h[N];
 #define CRSPLINE_VM_OP(op)                                                                                       \
-    friend multi_mask operator op(multi_mask a, multi_mask b) noexcept {                                         \
+    friend multi_mask operator op(const multi_mask& a, const multi_mask& b) noexcept {                                         \
         multi_mask r;                                                                                            \
         for (int i = 0; i < N; ++i) r.h[i] = a.h[i] op b.h[i];                                                   \
         return r;                                                                                                \
@@ -155,20 +158,23 @@ struct multi {
     H h[N];
     multi() = default;
     constexpr multi(double a, double b, double c, double d) noexcept requires(width == 4 && half_width == 2) : h{{a, b}, {c, d}} {}
+    template <class... Hs>
+    requires(sizeof...(Hs) == N && (std::is_same_v<Hs, H> && ...))
+    constexpr explicit multi(const Hs&... hs) noexcept : h{hs...} {}
     double operator[](int l) const noexcept { return h[l / half_width][l % half_width]; }
     void set(int l, double x) noexcept { h[l / half_width][l % half_width] = x; }
 #define CRSPLINE_VD_OP(op)                                                                                       \
-    friend multi operator op(multi a, multi b) noexcept {                                                        \
+    friend multi operator op(const multi& a, const multi& b) noexcept {                                                        \
         multi r;                                                                                                 \
         for (int i = 0; i < N; ++i) r.h[i] = a.h[i] op b.h[i];                                                   \
         return r;                                                                                                \
     }                                                                                                            \
-    friend multi operator op(multi a, double b) noexcept {                                                       \
+    friend multi operator op(const multi& a, double b) noexcept {                                                       \
         multi r;                                                                                                 \
         for (int i = 0; i < N; ++i) r.h[i] = a.h[i] op b;                                                        \
         return r;                                                                                                \
     }                                                                                                            \
-    friend multi operator op(double a, multi b) noexcept {                                                       \
+    friend multi operator op(double a, const multi& b) noexcept {                                                       \
         multi r;                                                                                                 \
         for (int i = 0; i < N; ++i) r.h[i] = a op b.h[i];                                                        \
         return r;                                                                                                \
@@ -179,12 +185,12 @@ struct multi {
     CRSPLINE_VD_OP(/)
 #undef CRSPLINE_VD_OP
 #define CRSPLINE_VD_CMP(op)                                                                                      \
-    friend mask operator op(multi a, multi b) noexcept {                                                         \
+    friend mask operator op(const multi& a, const multi& b) noexcept {                                                         \
         mask r;                                                                                                  \
         for (int i = 0; i < N; ++i) r.h[i] = a.h[i] op b.h[i];                                                   \
         return r;                                                                                                \
     }                                                                                                            \
-    friend mask operator op(multi a, double b) noexcept {                                                        \
+    friend mask operator op(const multi& a, double b) noexcept {                                                        \
         mask r;                                                                                                  \
         for (int i = 0; i < N; ++i) r.h[i] = a.h[i] op b;                                                        \
         return r;                                                                                                \
@@ -195,7 +201,7 @@ struct multi {
     CRSPLINE_VD_CMP(>=)
     CRSPLINE_VD_CMP(==)
 #undef CRSPLINE_VD_CMP
-    friend multi operator-(multi a) noexcept {
+    friend multi operator-(const multi& a) noexcept {
         multi r;
         for (int i = 0; i < N; ++i) r.h[i] = -a.h[i];
         return r;
@@ -203,25 +209,25 @@ struct multi {
 };
 
 template <class H, class MH, int N>
-[[gnu::always_inline]] inline multi<H, N> sel(multi_mask<MH, N> m, multi<H, N> a, multi<H, N> b) noexcept {
+[[gnu::always_inline]] inline multi<H, N> sel(const multi_mask<MH, N>& m, const multi<H, N>& a, const multi<H, N>& b) noexcept {
     multi<H, N> r;
     for (int i = 0; i < N; ++i) r.h[i] = sel(m.h[i], a.h[i], b.h[i]);
     return r;
 }
 template <class H, class MH, int N>
-[[gnu::always_inline]] inline multi<H, N> negate_if(multi_mask<MH, N> m, multi<H, N> x) noexcept {
+[[gnu::always_inline]] inline multi<H, N> negate_if(const multi_mask<MH, N>& m, const multi<H, N>& x) noexcept {
     multi<H, N> r;
     for (int i = 0; i < N; ++i) r.h[i] = negate_if(m.h[i], x.h[i]);
     return r;
 }
 template <class H, int N>
-[[gnu::always_inline]] inline multi<H, N> vsqrt(multi<H, N> x) noexcept {
+[[gnu::always_inline]] inline multi<H, N> vsqrt(const multi<H, N>& x) noexcept {
     multi<H, N> r;
     for (int i = 0; i < N; ++i) r.h[i] = vsqrt(x.h[i]);
     return r;
 }
 template <class MH, int N>
-[[gnu::always_inline]] inline bool all_of(multi_mask<MH, N> m) noexcept {
+[[gnu::always_inline]] inline bool all_of(const multi_mask<MH, N>& m) noexcept {
     bool all = true;
     for (int i = 0; i < N; ++i) all &= all_of(m.h[i]);
     return all;
@@ -230,7 +236,7 @@ template <class H, int N>
 [[gnu::always_inline]] inline void set_lane(multi<H, N>& v, int l, double x) noexcept { v.set(l, x); }
 /// |x|, lane by lane (the sign bit cleared: exact).
 template <class H, int N>
-[[gnu::always_inline]] inline multi<H, N> vabs(multi<H, N> x) noexcept {
+[[gnu::always_inline]] inline multi<H, N> vabs(const multi<H, N>& x) noexcept {
     using MH = decltype(H{} < H{});
     constexpr std::int64_t m = 0x7FFFFFFFFFFFFFFFLL;
     multi<H, N> r;
@@ -316,7 +322,7 @@ struct pack<double> {
 /// instead of Horner's K, so that the lanes do not wait on each step's
 /// latency. Its roundings differ from Horner's in the high-order terms only.
 template <int H, class V>
-[[gnu::always_inline]] inline V power_of_two(V z) noexcept {  // z^H, H a power of two
+[[gnu::always_inline]] inline V power_of_two(const V& z) noexcept {  // z^H, H a power of two
     if constexpr (H == 1) return z;
     else {
         const V h = power_of_two<H / 2>(z);
@@ -324,7 +330,7 @@ template <int H, class V>
     }
 }
 template <class T, int K, class V>
-[[gnu::always_inline]] inline V estrin(const double* c, V z) noexcept {
+[[gnu::always_inline]] inline V estrin(const double* c, const V& z) noexcept {
     if constexpr (K == 1) return V{} + T(c[0]);
     else if constexpr (K == 2) return T(c[0]) + z * T(c[1]);
     else {
@@ -354,11 +360,21 @@ inline constexpr double poly_sincos_limit = 1 << 19;
 /// fdlibm's kernels (k_sin.c, k_cos.c), whose polynomials are within 2^-58
 /// of sin and cos on [-pi/4, pi/4], so the result is within 1 ulp of the
 /// true value (tested against std:: at random, tests/rotation/).
+/// std::sin and std::cos lane by lane, for arguments beyond the reduction:
+/// out of line, so that the kernels hold no call (every vector register is
+/// lost across a call, and a call inside a kernel makes the compiler keep
+/// its values in memory throughout).
 template <class V>
-[[gnu::always_inline]] inline sin_cos<V> poly_sincos(V x) noexcept {
+[[gnu::noinline, gnu::cold]] void libm_sincos(const V& x, sin_cos<V>& r) noexcept {
+    r = {x, x};
+    for (int l = 0; l < V::width; ++l) set_lane(r.s, l, std::sin(x[l])), set_lane(r.c, l, std::cos(x[l]));
+}
+
+template <class V>
+[[gnu::always_inline]] inline sin_cos<V> poly_sincos(const V& x) noexcept {
     if (!all_of(vabs(x) <= poly_sincos_limit)) [[unlikely]] {  // NaN fails the test too
-        sin_cos<V> r{x, x};
-        for (int l = 0; l < V::width; ++l) set_lane(r.s, l, std::sin(x[l])), set_lane(r.c, l, std::cos(x[l]));
+        sin_cos<V> r;
+        libm_sincos(x, r);
         return r;
     }
     const double magic = 6755399441055744.0;  // 1.5 * 2^52
@@ -387,7 +403,7 @@ template <class V>
 }
 
 template <class H, int N>
-[[gnu::always_inline]] inline sin_cos<multi<H, N>> sincos(multi<H, N> x) noexcept { return poly_sincos(x); }
+[[gnu::always_inline]] inline sin_cos<multi<H, N>> sincos(const multi<H, N>& x) noexcept { return poly_sincos(x); }
 #endif
 
 template <class S>
@@ -415,7 +431,7 @@ template <class S>
 /// NaN; x = -0 counts as +0 (atan2(0, -0) is 0 here, pi in std::; a unit
 /// quaternion never has both parts zero).
 template <class V>
-[[gnu::always_inline]] inline V poly_atan2(V y, V x) noexcept {
+[[gnu::always_inline]] inline V poly_atan2(const V& y, const V& x) noexcept {
     const auto neg = x < 0.0;
     const V ax = negate_if(neg, x);
     const auto swap = y > ax;
@@ -443,7 +459,7 @@ template <class V>
 
 #if CRSPLINE_ROTATION_LANES
 template <class H, int N>
-[[gnu::always_inline]] inline multi<H, N> atan2_upper(multi<H, N> y, multi<H, N> x) noexcept { return poly_atan2(y, x); }
+[[gnu::always_inline]] inline multi<H, N> atan2_upper(const multi<H, N>& y, const multi<H, N>& x) noexcept { return poly_atan2(y, x); }
 #endif
 template <class S>
 [[gnu::always_inline]] inline S atan2_upper(S y, S x) noexcept {
@@ -474,7 +490,7 @@ constexpr jacobian_series make_jacobian_series() {
 inline constexpr jacobian_series series = make_jacobian_series();
 
 template <class T, class V>
-[[gnu::always_inline]] inline V horner16(const double (&c)[16], V z) noexcept {
+[[gnu::always_inline]] inline V horner16(const double (&c)[16], const V& z) noexcept {
     return estrin<T, 16>(c, z);
 }
 
@@ -550,13 +566,58 @@ template <class V, class F>
     if constexpr (std::is_floating_point_v<V>) return f(0);
 #if CRSPLINE_ROTATION_LANES
     else {
-        V r;
+        using H = typename V::half;
+        return [&]<int... I>(std::integer_sequence<int, I...>) CRSPLINE_ROTATION_BLOCK {
+            if constexpr (V::half_width == 2) return V(H{f(2 * I), f(2 * I + 1)}...);
+            else return V(H{f(4 * I), f(4 * I + 1), f(4 * I + 2), f(4 * I + 3)}...);
+        }(std::make_integer_sequence<int, V::width / V::half_width>{});
+    }
+#endif
+}
+
+/// The quaternions at ptr(l) (4 consecutive values each) as lanes: rows
+/// loaded whole and transposed (two or four lanes at a time), instead of
+/// one value at a time.
+#if CRSPLINE_ROTATION_LANES
+template <class P>
+[[gnu::always_inline]] inline void transpose_rows(P ptr, int l0, v2& w, v2& x, v2& y, v2& z) noexcept {
+    v2 a, b, c, d;
+    std::memcpy(&a, ptr(l0), sizeof a), std::memcpy(&b, ptr(l0 + 1), sizeof b);
+    std::memcpy(&c, ptr(l0) + 2, sizeof c), std::memcpy(&d, ptr(l0 + 1) + 2, sizeof d);
+#if defined(__clang__)
+    w = __builtin_shufflevector(a, b, 0, 2), x = __builtin_shufflevector(a, b, 1, 3);
+    y = __builtin_shufflevector(c, d, 0, 2), z = __builtin_shufflevector(c, d, 1, 3);
+#else
+    w = __builtin_shuffle(a, b, m2{0, 2}), x = __builtin_shuffle(a, b, m2{1, 3});
+    y = __builtin_shuffle(c, d, m2{0, 2}), z = __builtin_shuffle(c, d, m2{1, 3});
+#endif
+}
+#endif
+#if CRSPLINE_ROTATION_AVX2
+template <class P, class H>
+requires std::is_same_v<H, v4>
+[[gnu::always_inline]] inline void transpose_rows(P ptr, int l0, H& w, H& x, H& y, H& z) noexcept {
+    H r0, r1, r2, r3;
+    std::memcpy(&r0, ptr(l0), sizeof r0), std::memcpy(&r1, ptr(l0 + 1), sizeof r1);
+    std::memcpy(&r2, ptr(l0 + 2), sizeof r2), std::memcpy(&r3, ptr(l0 + 3), sizeof r3);
+    const H t0 = __builtin_shuffle(r0, r1, m4{0, 4, 2, 6}), t1 = __builtin_shuffle(r0, r1, m4{1, 5, 3, 7});
+    const H t2 = __builtin_shuffle(r2, r3, m4{0, 4, 2, 6}), t3 = __builtin_shuffle(r2, r3, m4{1, 5, 3, 7});
+    w = __builtin_shuffle(t0, t2, m4{0, 1, 4, 5}), x = __builtin_shuffle(t1, t3, m4{0, 1, 4, 5});
+    y = __builtin_shuffle(t0, t2, m4{2, 3, 6, 7}), z = __builtin_shuffle(t1, t3, m4{2, 3, 6, 7});
+}
+#endif
+template <class V, class P>
+[[gnu::always_inline]] inline ql<V> gather_quat(P ptr) noexcept {
+    if constexpr (std::is_floating_point_v<V>) {
+        const auto* p = ptr(0);
+        return {p[0], p[1], p[2], p[3]};
+    }
+#if CRSPLINE_ROTATION_LANES
+    else {
+        ql<V> q{};  // every half assigned below
         constexpr int hw = V::half_width;
-        for (int i = 0; i < V::width / hw; ++i) {
-            if constexpr (hw == 2) r.h[i] = typename V::half{f(2 * i), f(2 * i + 1)};
-            else r.h[i] = typename V::half{f(4 * i), f(4 * i + 1), f(4 * i + 2), f(4 * i + 3)};
-        }
-        return r;
+        for (int i = 0; i < V::width / hw; ++i) transpose_rows(ptr, i * hw, q.w.h[i], q.x.h[i], q.y.h[i], q.z.h[i]);
+        return q;
     }
 #endif
 }
@@ -599,7 +660,7 @@ struct c2_packed {
 /// seg(l) the packed segment of lane l. Each step is
 /// c2_rotation_spline::evaluate_on's, on lanes.
 template <class T, class V, class Seg>
-[[gnu::always_inline]] inline void c2_lanes(Seg seg, V tau, int order, frame f, ql<V>& q, v3l<V>& w, v3l<V>& acc) noexcept {
+[[gnu::always_inline]] inline void c2_lanes(Seg seg, const V& tau, int order, frame f, ql<V>& q, v3l<V>& w, v3l<V>& acc) noexcept {
     auto g = [&](auto member) CRSPLINE_ROTATION_BLOCK { return make_lanes<V>([&](int l) { return member(seg(l)); }); };
     v3l<V> c3, c2, c1;
     c3.x = g([](const c2_packed<T>& s) { return s.c3[0]; }), c3.y = g([](const c2_packed<T>& s) { return s.c3[1]; }),
@@ -780,14 +841,12 @@ struct squad_packed {
 /// exp(s L) a = cos(s angle) a + sin(s angle) o on lanes, from each lane's
 /// fixed_slerp.
 template <class T, class V, class Get>
-[[gnu::always_inline]] inline ql<V> fixed_lanes(Get get, V s) noexcept {
+[[gnu::always_inline]] inline ql<V> fixed_lanes(Get get, const V& s) noexcept {
     auto g = [&](auto member) CRSPLINE_ROTATION_BLOCK { return make_lanes<V>([&](int l) { return member(get(l)); }); };
     const sin_cos<V> sc = sincos(s * g([](const fixed_slerp<T>& f) { return f.angle; }));
-    const V aw = g([](const fixed_slerp<T>& f) { return f.a[0]; }), ax = g([](const fixed_slerp<T>& f) { return f.a[1]; }),
-            ay = g([](const fixed_slerp<T>& f) { return f.a[2]; }), az = g([](const fixed_slerp<T>& f) { return f.a[3]; });
-    const V ow = g([](const fixed_slerp<T>& f) { return f.o[0]; }), ox = g([](const fixed_slerp<T>& f) { return f.o[1]; }),
-            oy = g([](const fixed_slerp<T>& f) { return f.o[2]; }), oz = g([](const fixed_slerp<T>& f) { return f.o[3]; });
-    return {aw * sc.c + ow * sc.s, ax * sc.c + ox * sc.s, ay * sc.c + oy * sc.s, az * sc.c + oz * sc.s};
+    const ql<V> a = gather_quat<V>([&](int l) CRSPLINE_ROTATION_BLOCK { return get(l).a; });
+    const ql<V> o = gather_quat<V>([&](int l) CRSPLINE_ROTATION_BLOCK { return get(l).o; });
+    return {a.w * sc.c + o.w * sc.s, a.x * sc.c + o.x * sc.s, a.y * sc.c + o.y * sc.s, a.z * sc.c + o.z * sc.s};
 }
 
 /// slerp(a, b, s) = exp(s log(b a*)) a on lanes whose ends depend on the
@@ -798,16 +857,16 @@ template <class T, class V, class Get>
 /// [0, 1, 0, 0] a. No sign change: a negative a . b takes the long way, as
 /// slerp() does.
 template <class T, class V>
-[[gnu::always_inline]] inline ql<V> slerp_lanes(const ql<V>& a, const ql<V>& b, V s) noexcept {
+[[gnu::always_inline]] inline ql<V> slerp_lanes(const ql<V>& a, const ql<V>& b, const V& s) noexcept {
     const V w = a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z;
     const ql<V> o{b.w - w * a.w, b.x - w * a.x, b.y - w * a.y, b.z - w * a.z};
     const V no = vsqrt(o.w * o.w + o.x * o.x + o.y * o.y + o.z * o.z);
     const sin_cos<V> sc = sincos(s * atan2_upper(no, w));
     const auto axis = no > T(0);
-    const V f = sel(axis, sc.s / no, V{});
     const V zero{};
-    return {a.w * sc.c + sel(axis, o.w * f, zero - a.x * sc.s), a.x * sc.c + sel(axis, o.x * f, a.w * sc.s),
-            a.y * sc.c + sel(axis, o.y * f, zero - a.z * sc.s), a.z * sc.c + sel(axis, o.z * f, a.y * sc.s)};
+    const ql<V> u{sel(axis, o.w, zero - a.x), sel(axis, o.x, a.w), sel(axis, o.y, zero - a.z), sel(axis, o.z, a.y)};
+    const V f = sc.s / sel(axis, no, zero + T(1));
+    return {a.w * sc.c + u.w * f, a.x * sc.c + u.x * f, a.y * sc.c + u.y * f, a.z * sc.c + u.z * f};
 }
 
 /// Samples k .. k + width - 1 of a pyramid curve (rotations only).
