@@ -1,0 +1,103 @@
+// Issue 30: eval_sorted_float against its floors, each case timed in turn
+// in one process (interleaved), CPU time of the thread, the minimum and the
+// median over the repetitions. On a machine shared with other jobs Google
+// Benchmark's repetitions average hundreds of iterations each, preemptions
+// included; the minimum of single interleaved timings is the measure that
+// stays comparable (BENCHMARKS.md, issue 30, float evaluation).
+//
+//   crspline_float_probe [repetitions=30]
+//
+// Cases, 10^7 points on the benchmark curve (1000 control points, float):
+// memset of the output (store_floor_float, the target's floor); reading t
+// and writing (t, t, t) with whole-line non-temporal stores (the kernel's
+// own traffic; 64-byte stores where the CPU has AVX-512F, else none);
+// crspline's sorted evaluation with the kernel the dispatch chose, and with
+// the 8-lane AVX2 walk where the CPU has AVX-512F too.
+#include <crspline/catmull_rom.hpp>
+
+#include "walk.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <functional>
+#include <vector>
+
+namespace {
+
+double cpu_ms() {
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) * 1e-6;
+}
+
+#if CRSPLINE_X86_DISPATCH
+__attribute__((target("avx512f"))) void read_stream_512(const float* t, float* p, std::size_t n) {
+    std::size_t k = 0;
+    for (; k < n && reinterpret_cast<std::uintptr_t>(p + 3 * k) % 64 != 0; ++k) p[3 * k] = p[3 * k + 1] = p[3 * k + 2] = t[k];
+    const __m512i i0 = _mm512_setr_epi32(0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3, 4, 4, 4, 5);
+    const __m512i i1 = _mm512_setr_epi32(5, 5, 6, 6, 6, 7, 7, 7, 8, 8, 8, 9, 9, 9, 10, 10);
+    const __m512i i2 = _mm512_setr_epi32(10, 11, 11, 11, 12, 12, 12, 13, 13, 13, 14, 14, 14, 15, 15, 15);
+    for (; k + 16 <= n; k += 16) {
+        const __m512 a = _mm512_loadu_ps(t + k);
+        _mm512_stream_ps(p + 3 * k, _mm512_maskz_permutexvar_ps(0xFFFF, i0, a));
+        _mm512_stream_ps(p + 3 * k + 16, _mm512_maskz_permutexvar_ps(0xFFFF, i1, a));
+        _mm512_stream_ps(p + 3 * k + 32, _mm512_maskz_permutexvar_ps(0xFFFF, i2, a));
+    }
+    _mm_sfence();
+    for (; k < n; ++k) p[3 * k] = p[3 * k + 1] = p[3 * k + 2] = t[k];
+}
+#endif
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    using F3 = crspline::vec<3, float>;
+    const int reps = argc > 1 ? std::max(1, std::atoi(argv[1])) : 30;
+    constexpr std::size_t n = 10'000'000;
+    const crspline::catmull_rom<3, float> c(crspline_bench::walk<float>(1000));
+    std::vector<float> t(n);
+    for (std::size_t k = 0; k < n; ++k) t[k] = std::min(c.t_max(), c.t_min() + (c.t_max() - c.t_min()) * (float(k) / float(n - 1)));
+    t.back() = c.t_max();
+    std::vector<F3> out(n, F3{});
+    struct timed {
+        const char* name;
+        std::function<void()> run;
+        std::vector<double> ms;
+    };
+    std::vector<timed> cases;
+    cases.push_back({"memset (store_floor_float)", [&] { std::memset(static_cast<void*>(out.data()), 0x3f, n * sizeof(F3)); }, {}});
+    auto evaluate = [&] { c.evaluate(std::span<const float>(t), std::span<F3>(out), 0); };
+#if CRSPLINE_X86_DISPATCH
+    const bool wide = crspline::detail::avx512_enabled(), avx2 = crspline::detail::avx2_enabled();
+    if (wide) cases.push_back({"read t, stream (t, t, t)", [&] { read_stream_512(t.data(), out.data()->data(), n); }, {}});
+    cases.push_back({wide ? "eval_sorted_float, AVX-512" : avx2 ? "eval_sorted_float, AVX2" : "eval_sorted_float, SSE2", evaluate, {}});
+    if (wide)
+        cases.push_back({"eval_sorted_float, AVX2", [&] {
+                             crspline::detail::avx512_enabled() = false;
+                             evaluate();
+                             crspline::detail::avx512_enabled() = true;
+                         }, {}});
+#else
+    cases.push_back({"eval_sorted_float", evaluate, {}});
+#endif
+    for (int r = 0; r < reps; ++r)
+        for (auto& x : cases) {
+            const double a = cpu_ms();
+            x.run();
+            x.ms.push_back(cpu_ms() - a);
+        }
+    auto median = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+    };
+    const double floor_min = *std::min_element(cases[0].ms.begin(), cases[0].ms.end()), floor_median = median(cases[0].ms);
+    std::printf("%d repetitions, CPU time, 10^7 points; ratios: memset's time / the case's (throughput of the floor)\n", reps);
+    for (const auto& x : cases) {
+        const double lo = *std::min_element(x.ms.begin(), x.ms.end()), mid = median(x.ms);
+        std::printf("%-30s min %7.3f ms (%.3f)   median %7.3f ms (%.3f)\n", x.name, lo, floor_min / lo, mid, floor_median / mid);
+    }
+}
