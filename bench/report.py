@@ -282,6 +282,9 @@ def main():
     if ef and ff:
         target("eval_sorted_float / store_floor_float throughput", f"{ff / ef:.2f}", ">= 0.8", ff / ef >= 0.8,
                f"by {0.8 / (ff / ef):.2f}x")
+    rwf = ns("store_floor_float/read_write")
+    if ef and rwf:
+        p(f"| (info) eval_sorted_float / store_floor_float/read_write throughput (reads t too) | {rwf / ef:.2f} | (info) | |")
     if ef and efb:
         p(f"| (float) speed-up over Boost | {efb / ef:.1f}x | (info) | |")
     us, ug = ns("uniform_segment/crspline"), ns("uniform_segment/glm")
