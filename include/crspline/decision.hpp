@@ -55,20 +55,25 @@
 // Krawczyk's test runs in interval arithmetic with outward rounding
 // (detail/interval.hpp) from an exact enclosure of the control points.
 //
-// The floor: delta = 2^-32 M (about 2.3e-10 of the curve's extent M from
-// its first point). Two pieces, each no larger than delta, neither
-// separated nor proved to cross, are a contact: they are within delta
-// sqrt(2) plus the margins of each other, below 1e-9 of the curve's size.
-// Separation itself is decided at the margins' scale, a few hundred eps M
-// (at most about 2 (2 eps M depth + 10 eps M) |n|_1 for pieces split depth
-// times): pieces further apart than that are separated once they are short
-// enough that their hulls no longer overlap (a gap g between arcs of
-// curvature k: pieces of length about sqrt(8 g / k), far above delta), so
-// only contacts closer than the margins, and exact contacts (tangencies,
-// cusps, a vertex visited twice), reach the floor. Why not a floor of a
-// few ulps: along an exact tangency every piece within sqrt(margin / k) of
-// the contact stays unseparated, and their number is that length over the
-// floor. A work budget (decision_options::budget, pair_budget) bounds the
+// The floor: delta = 2^-42 M (about 2.3e-13 of the curve's extent M from
+// its first point, 1024 ulps of M). Two pieces, each no larger than delta,
+// neither separated nor proved to cross, are a contact: they are within
+// delta sqrt(2) plus the margins of each other, far below 1e-9 of the
+// curve's size. Separation itself is decided at the margins' scale, a few
+// hundred eps M (at most about 2 (2 eps M depth + 10 eps M) |n|_1 for
+// pieces split depth times): pieces further apart than that are separated
+// once they are short enough that their hulls no longer overlap (a gap g
+// between arcs of curvature k: pieces of length about sqrt(8 g / k), far
+// above delta), so only contacts closer than the margins, and exact
+// contacts (tangencies, cusps, a vertex visited twice), reach the floor.
+// Pieces running along each other within their margins are a contact at
+// once (along()), within 2 (err) + 16 eps M <= 600 eps M < 4 delta; a
+// lower floor would let such contacts exceed 4 delta, and does not decide
+// more: the margins do not shrink with the pieces. At the floor (and
+// before an along-contact) a crossing is tried with Krawczyk's test in
+// boxes wider than the pieces too (try_crossing): a shallow crossing needs
+// a box wider than the rounding of F over the Jacobian's conditioning.
+// A work budget (decision_options::budget, pair_budget) bounds the
 // time anyway; a pair that exhausts it is reported as a contact with
 // budget_exhausted set.
 #pragma once
@@ -508,7 +513,8 @@ struct decision_engine {
         // on one curve, by less than a third of the gap between them, so
         // that the boxes never hold a point paired with itself (u = v: a
         // zero of F that is no crossing).
-        double ia = (A.s1 - A.s0) / 4, ib = (B.s1 - B.s0) / 4;
+        const double ia0 = (A.s1 - A.s0) / 4, ib0 = (B.s1 - B.s0) / 4;
+        double cap = std::numeric_limits<double>::infinity();
         if (same) {
             const double x0 = A.base + A.s0, x1 = A.base + A.s1, y0 = B.base + B.s0, y1 = B.base + B.s1;
             double gap = std::numeric_limits<double>::infinity();
@@ -518,14 +524,31 @@ struct decision_engine {
                 if (x0 <= y1 + k && y0 + k <= x1) gap = 0;
             }
             if (!(gap > 0)) return false;
-            ia = std::min(ia, gap / 3);
-            ib = std::min(ib, gap / 3);
+            cap = gap / 3;
         }
-        interval U{std::max(0.0, A.s0 - ia), std::min(A.dom, A.s1 + ia)};
-        interval V{std::max(0.0, B.s0 - ib), std::min(B.dom, B.s1 + ib)};
-        if (same && overlap(A.base + U.lo, A.base + U.hi, B.base + V.lo, B.base + V.hi, closed[a.curve], n)) return false;
-        std::array<interval, 2> X{U, V};
-        if (!krawczyk(A.sd, B.sd, X)) return false;
+        // Krawczyk's box must be wider than the rounding of F over the
+        // Jacobian's conditioning: pieces at the floor (2^-42 of the extent)
+        // can be narrower than that at a shallow crossing, so at the floor
+        // (`chain`) wider boxes are tried too, at least 2^-36, 2^-28 and
+        // 2^-20 of a segment's parameter range (capped as above): a proof
+        // in any box is a proof; a box holding two zeros or a singular
+        // Jacobian only fails.
+        std::array<interval, 2> X;
+        bool proved = false;
+        for (const double least : {0.0, 0x1p-36, 0x1p-28, 0x1p-20}) {
+            if (least > 0 && !chain) break;
+            const double ia = std::min(std::max(ia0, least), cap), ib = std::min(std::max(ib0, least), cap);
+            if (least > 0 && ia <= ia0 && ib <= ib0) break;  // capped: no wider box to try
+            const interval U{std::max(0.0, A.s0 - ia), std::min(A.dom, A.s1 + ia)};
+            const interval V{std::max(0.0, B.s0 - ib), std::min(B.dom, B.s1 + ib)};
+            if (same && overlap(A.base + U.lo, A.base + U.hi, B.base + V.lo, B.base + V.hi, closed[a.curve], n)) return false;
+            X = {U, V};
+            if (krawczyk(A.sd, B.sd, X)) {
+                proved = true;
+                break;
+            }
+        }
+        if (!proved) return false;
         // One crossing per zero: a neighbouring pair of pieces may prove the same one.
         const std::array<std::array<double, 2>, 2> g{{{A.base + X[0].lo, A.base + X[0].hi}, {B.base + X[1].lo, B.base + X[1].hi}}};
         bool known = false;
@@ -703,7 +726,13 @@ struct decision_engine {
                 f |= crossing;
                 continue;
             }
-            if (!t.corner && along(t.a, t.b)) {  // an overlap or a tangency along a stretch: a contact
+            if (!t.corner && along(t.a, t.b)) {  // an overlap or a tangency along a stretch: a contact,
+                // unless a (shallow) crossing is proved in a box around them
+                // (pieces shorter than the margins over the angle look along)
+                if (try_crossing(t.a, t.b, true)) {
+                    f |= crossing;
+                    continue;
+                }
                 add_contact(t.a, t.b, false);
                 f |= unresolved;
                 continue;
@@ -814,7 +843,7 @@ struct decision_engine {
                 }
             }
         }
-        floor = std::ldexp(M, -32);
+        floor = std::ldexp(M, -42);
         out.floor = floor;
         // 2. Monotone pieces of every segment that is not a single point.
         for (std::size_t ci = 0; ci < curves.size(); ++ci) {
