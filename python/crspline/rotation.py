@@ -280,8 +280,9 @@ class RotationSpline:
         # One call into the batch kernels (GIL released): the segment of each
         # t found there (t before the first or after the last time takes the
         # end segment, as SciPy's searchsorted does), the rotations written
-        # in SciPy's x, y, z, w order when a Rotation is to be made.
-        out = self._c.evaluate(flat, order, "body", True, order == 0 and self._scipy)[order]
+        # in SciPy's x, y, z, w order when a Rotation is to be made; with
+        # order 1 or 2 the rates alone (no rotations formed or written).
+        out = self._c.evaluate(flat, order, "body", True, order == 0 and self._scipy, order == 0)[order]
         if order == 0:
             return _to_rotations(out, self._scipy, ta.ndim == 0, xyzw=self._scipy)
         return out[0] if ta.ndim == 0 else out

@@ -86,19 +86,25 @@ py::tuple evaluate_on_many(const Curve& c, const farray& t, const py::array_t<lo
 }
 
 /// Evaluates a rotation curve at every t through its batch kernels
-/// (batch.hpp), the GIL released: (q (m, 4), omega (m, 3) or None, alpha
-/// (m, 3) or None); q as rows [x, y, z, w] with xyzw (SciPy's order).
-/// Only the arrays the order asks for are made.
+/// (batch.hpp), the GIL released: (q (m, 4) or None, omega (m, 3) or None,
+/// alpha (m, 3) or None); q as rows [x, y, z, w] with xyzw (SciPy's order).
+/// Only the arrays the order asks for are made, and q only with rotations
+/// (SciPy's spline(t, 1) wants the rates alone).
 template <class Curve, class... Extra>
 py::tuple evaluate_many(const Curve& c, const farray& t, int order, const std::string& frame_name, bool xyzw,
-                        Extra... extra) {
+                        bool rotations, Extra... extra) {
     if (order < 0 || order > 2) throw invalid_input("derivative order must be 0, 1 or 2, got " + std::to_string(order));
     const frame f = to_frame(frame_name);
     const auto m = py::ssize_t(t.size());
-    farray q({m, py::ssize_t(4)});
+    py::object qo = py::none();
     py::object w = py::none(), a = py::none();
     batch_rows<double> rows;
-    rows.q = q.mutable_data(), rows.xyzw = xyzw;
+    rows.xyzw = xyzw;
+    if (rotations || order == 0) {
+        farray q({m, py::ssize_t(4)});
+        rows.q = q.mutable_data();
+        qo = q;
+    }
     if (order >= 1) {
         farray x({m, py::ssize_t(3)});
         rows.omega = x.mutable_data();
@@ -114,7 +120,7 @@ py::tuple evaluate_many(const Curve& c, const farray& t, int order, const std::s
         py::gil_scoped_release release;
         c.evaluate(ts, rows, order, f, extra...);
     }
-    return py::make_tuple(q, w, a);
+    return py::make_tuple(qo, w, a);
 }
 
 spline_kind to_kind(const std::string& k) {
@@ -212,7 +218,7 @@ void bind_rotation(py::module_& m) {
                                })
         .def("evaluate",
              [](const QS& c, const farray& t, int order, const std::string& f, bool xyzw) {
-                 return evaluate_many(c, t, order, f, xyzw);
+                 return evaluate_many(c, t, order, f, xyzw, true);
              },
              py::arg("t"), py::arg("order") = 0, py::arg("frame") = "world", py::arg("xyzw") = false)
         .def("evaluate_on",
@@ -255,11 +261,11 @@ void bind_rotation(py::module_& m) {
                                    return a;
                                })
         .def("evaluate",
-             [](const C2& c, const farray& t, int order, const std::string& f, bool extrapolate, bool xyzw) {
-                 return evaluate_many(c, t, order, f, xyzw, extrapolate);
+             [](const C2& c, const farray& t, int order, const std::string& f, bool extrapolate, bool xyzw, bool rotations) {
+                 return evaluate_many(c, t, order, f, xyzw, rotations, extrapolate);
              },
              py::arg("t"), py::arg("order") = 0, py::arg("frame") = "world", py::arg("extrapolate") = false,
-             py::arg("xyzw") = false)
+             py::arg("xyzw") = false, py::arg("rotations") = true)
         .def("evaluate_on",
              [](const C2& c, const py::array_t<long long>& seg, const farray& t, int order, const std::string& f) {
                  return evaluate_on_many(c, t, seg, order, f);

@@ -501,3 +501,35 @@ TEST(RotationBatch, Avx2AndPortableGiveTheSameBits) {
     }
     EXPECT_GE(compared, 6 * (12 + 5 + 3));
 }
+
+// The rates alone (batch_rows without q or quats, as SciPy's spline(t, 1)
+// asks): the same bits as the rates of a call that writes the rotations
+// too, in both frames and at orders 1 and 2 (the body frame skips forming
+// the rotation, the world frame needs it for the frame change).
+TEST(RotationBatch, RatesAloneEqualTheFullCall) {
+    CRSPLINE_SEEDED(seed, 2849);
+    std::mt19937_64 rng(seed);
+    int compared = 0;
+    for (int round = 0; round < 4; ++round) {
+        const std::size_t n = 3 + rng() % 10;
+        const auto keys = random_keys(rng, n, 0.1, 2.5);
+        const auto times = random_times(rng, n);
+        const c2_rotation_spline<double> c{std::span<const double>(times), std::span<const quat>(keys)};
+        const auto t = sample_t(rng, times, 333, false);
+        for (int order = 1; order <= 2; ++order)
+            for (frame f : {frame::world, frame::body}) {
+                const auto full = run_batch(c, std::span<const double>(t), order, f);
+                std::vector<double> w(3 * t.size()), a(3 * t.size());
+                batch_rows<double> rows;
+                rows.omega = w.data();
+                if (order >= 2) rows.alpha = a.data();
+                c.evaluate(std::span<const double>(t), rows, order, f);
+                EXPECT_EQ(0, std::memcmp(w.data(), full.w.data(), w.size() * sizeof(double))) << "omega, order " << order;
+                if (order >= 2) {
+                    EXPECT_EQ(0, std::memcmp(a.data(), full.a.data(), a.size() * sizeof(double))) << "alpha";
+                }
+                ++compared;
+            }
+    }
+    EXPECT_EQ(compared, 4 * 2 * 2);
+}

@@ -45,8 +45,10 @@ namespace crspline::rotation {
 
 /// Where a batch evaluation writes, per sample: the rotation as 4 values
 /// [w, x, y, z] (or [x, y, z, w], SciPy's order, with xyzw) at q, or as a
-/// quaternion at quats; the angular velocity and acceleration as 3 values
-/// at omega and alpha (null when the order does not ask for them).
+/// quaternion at quats (both null: the rotations are not written, for a
+/// call that wants the rates alone); the angular velocity and acceleration
+/// as 3 values at omega and alpha (null when the order does not ask for
+/// them).
 template <class T>
 struct batch_rows {
     T* q = nullptr;
@@ -544,7 +546,7 @@ template <class T, class V>
         const T qw = lane(q.w, l), qx = lane(q.x, l), qy = lane(q.y, l), qz = lane(q.z, l);
         if (out.quats) {
             out.quats[k + std::size_t(l)] = {qw, qx, qy, qz};
-        } else {
+        } else if (out.q) {
             T* p = out.q + 4 * (k + std::size_t(l));
             if (out.xyzw) p[0] = qx, p[1] = qy, p[2] = qz, p[3] = qw;
             else p[0] = qw, p[1] = qx, p[2] = qy, p[3] = qz;
@@ -658,27 +660,30 @@ struct c2_packed {
 /// The C2 spline's rotation (and with order >= 1 its angular velocity,
 /// order 2 its acceleration, in frame f) on lanes: tau = t - t0 per lane,
 /// seg(l) the packed segment of lane l. Each step is
-/// c2_rotation_spline::evaluate_on's, on lanes.
+/// c2_rotation_spline::evaluate_on's, on lanes. With rotation false and the
+/// body frame the rotation is not formed (the rates do not need it).
 template <class T, class V, class Seg>
-[[gnu::always_inline]] inline void c2_lanes(Seg seg, const V& tau, int order, frame f, ql<V>& q, v3l<V>& w, v3l<V>& acc) noexcept {
-    auto g = [&](auto member) CRSPLINE_ROTATION_BLOCK { return make_lanes<V>([&](int l) { return member(seg(l)); }); };
-    v3l<V> c3, c2, c1;
-    c3.x = g([](const c2_packed<T>& s) { return s.c3[0]; }), c3.y = g([](const c2_packed<T>& s) { return s.c3[1]; }),
-    c3.z = g([](const c2_packed<T>& s) { return s.c3[2]; });
-    c2.x = g([](const c2_packed<T>& s) { return s.c2[0]; }), c2.y = g([](const c2_packed<T>& s) { return s.c2[1]; }),
-    c2.z = g([](const c2_packed<T>& s) { return s.c2[2]; });
-    c1.x = g([](const c2_packed<T>& s) { return s.c1[0]; }), c1.y = g([](const c2_packed<T>& s) { return s.c1[1]; }),
-    c1.z = g([](const c2_packed<T>& s) { return s.c1[2]; });
-    const ql<V> key{g([](const c2_packed<T>& s) { return s.q[0]; }), g([](const c2_packed<T>& s) { return s.q[1]; }),
-                    g([](const c2_packed<T>& s) { return s.q[2]; }), g([](const c2_packed<T>& s) { return s.q[3]; })};
-    // theta = ((c3 tau + c2) tau + c1) tau; R = key Exp(theta) = key exp(theta/2).
+[[gnu::always_inline]] inline void c2_lanes(Seg seg, const V& tau, int order, frame f, ql<V>& q, v3l<V>& w, v3l<V>& acc,
+                                            bool rotation = true) noexcept {
+    // The packed segment as four rows of four values, transposed:
+    // [t0 c3], [c2 c1.x], [c1.y c1.z q.w q.x], [q.y q.z pad].
+    static_assert(sizeof(c2_packed<T>) == 16 * sizeof(T));
+    auto row = [&](int r) CRSPLINE_ROTATION_BLOCK {
+        return gather_quat<V>([&, r](int l) CRSPLINE_ROTATION_BLOCK { return &seg(l).t0 + 4 * r; });
+    };
+    const ql<V> r0 = row(0), r1 = row(1), r2 = row(2);
+    const v3l<V> c3{r0.x, r0.y, r0.z}, c2{r1.w, r1.x, r1.y}, c1{r1.z, r2.w, r2.x};
     const v3l<V> th{((c3.x * tau + c2.x) * tau + c1.x) * tau, ((c3.y * tau + c2.y) * tau + c1.y) * tau,
                     ((c3.z * tau + c2.z) * tau + c1.z) * tau};
     const v3l<V> h{th.x * T(0.5), th.y * T(0.5), th.z * T(0.5)};
     const V a = vsqrt(dot(h, h));  // half the angle
     const sin_cos<V> sc = sincos(a);
     const V sinc = sel(a > T(0), sc.s / a, V{} + T(1));  // sin(a)/a
-    q = mul(key, ql<V>{sc.c, h.x * sinc, h.y * sinc, h.z * sinc});
+    if (rotation || f == frame::world) {
+        const ql<V> r3 = row(3);
+        const ql<V> key{r2.y, r2.z, r3.w, r3.x};
+        q = mul(key, ql<V>{sc.c, h.x * sinc, h.y * sinc, h.z * sinc});
+    }
     if (order == 0) return;
     // Body frame: omega = J_r(theta) theta', alpha = J_r(theta) theta'' + N_r(theta, theta').
     const v3l<V> d1{(T(3) * c3.x * tau + T(2) * c2.x) * tau + c1.x, (T(3) * c3.y * tau + T(2) * c2.y) * tau + c1.y,
@@ -718,9 +723,10 @@ template <class T, class V = typename pack<T>::V>
 [[gnu::always_inline]] inline void c2_block(const c2_packed<T>* segs, const std::size_t* seg, const T* t, std::size_t k,
                                             int valid, int order, frame f, const rows<T>& out) noexcept {
     const V tau = make_lanes<V>([&](int l) { return t[l] - segs[seg[l]].t0; });
-    ql<V> q;
+    ql<V> q{};
     v3l<V> w, acc;
-    c2_lanes<T>([&](int l) -> const c2_packed<T>& { return segs[seg[l]]; }, tau, order, f, q, w, acc);
+    c2_lanes<T>([&](int l) -> const c2_packed<T>& { return segs[seg[l]]; }, tau, order, f, q, w, acc,
+                out.q != nullptr || out.quats != nullptr);
     store<T, V>(out, k, valid, q, order >= 1 ? &w : nullptr, order >= 2 ? &acc : nullptr);
 }
 
