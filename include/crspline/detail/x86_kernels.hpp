@@ -316,7 +316,7 @@ CRSPLINE_TARGET_AVX512 std::size_t bulk512(const steps512<Order> s, const float*
 /// A whole sorted batch of 3-D floats on a CPU with AVX-512F, the segments
 /// walked inside the vector loop (issue 30): the positions (Order 0) or
 /// velocities (Order 1) at t[0..n) into out (3 n floats), the same bits as
-/// the runs of sorted_run3 and of the portable kernel. seg: t[0]'s segment.
+/// the portable kernel's runs. seg: t[0]'s segment.
 /// Segments gives the curve's segments: next(seg, x), the segment of x
 /// from seg on (the sorted walk's rule: while x >= the next knot, the next
 /// segment), and load(seg, o, a, b, c, t0, ih, t_end), the coefficients
@@ -325,10 +325,11 @@ CRSPLINE_TARGET_AVX512 std::size_t bulk512(const steps512<Order> s, const float*
 /// then every step is 16 points, its stores whole cache lines
 /// (non-temporal when stream); a step that crosses a knot is computed on
 /// both segments and blended, so there are no short runs at the knots: a
-/// knot costs its segment's coefficients and one step computed twice.
-/// (With runs per segment, the partial cache lines at each run's two ends,
-/// the scalar or masked head and tail and a run's set-up cost about 60 ns
-/// a run, 0.15 ms of the benchmark's 3.3 ms.) Returns false as soon as a
+/// knot costs its segment's coefficients and one step computed twice
+/// (about 35-45 ns on the AMD EPYC, from the step's chain of dependent
+/// work; the runs per segment this replaces, capped at 4096 points, cost
+/// about 140 ns each in set-up, scalar ends and partially written lines:
+/// BENCHMARKS.md, issue 30). Returns false as soon as a
 /// step is not sorted (or holds NaN): the caller starts over; out is then
 /// partly written.
 template <int Order, class Segments>
