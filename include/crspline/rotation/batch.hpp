@@ -295,6 +295,7 @@ template <class S>
 [[gnu::always_inline]] inline S negate_if(bool m, S x) noexcept { return m ? -x : x; }
 template <class S>
 [[gnu::always_inline]] inline S vsqrt(S x) noexcept { return std::sqrt(x); }
+[[gnu::always_inline]] inline bool all_of(bool m) noexcept { return m; }
 
 /// How many samples a lane type holds.
 template <class V>
@@ -695,7 +696,11 @@ template <class T, class V, class Seg>
     const V sin_t = T(2) * sc.s * sc.c, cos_t = sc.c * sc.c - sc.s * sc.s;
     const V big = sel(small, V{} + T(1), theta);  // keeps the unused closed forms finite at theta = 0
     const V zb = big * big;
-    const V k2 = sel(small, horner16<T>(series.k2, z), (big - sin_t) / (zb * big));
+    // The closed forms only where a lane needs them (rarely: segments turn
+    // less than 2 rad about their key); sel keeps the bits either way.
+    const bool all_small = all_of(small);
+    V k2 = horner16<T>(series.k2, z);
+    if (!all_small) k2 = sel(small, k2, (big - sin_t) / (zb * big));
     auto jr = [&](const v3l<V>& v) CRSPLINE_ROTATION_BLOCK {
         const v3l<V> pv = cross(th, v), ppv = cross(th, pv);
         return v3l<V>{v.x - k1 * pv.x + k2 * ppv.x, v.y - k1 * pv.y + k2 * ppv.y, v.z - k1 * pv.z + k2 * ppv.z};
@@ -703,8 +708,11 @@ template <class T, class V, class Seg>
     w = jr(d1);
     if (order >= 2) {
         const v3l<V> d2{T(6) * c3.x * tau + T(2) * c2.x, T(6) * c3.y * tau + T(2) * c2.y, T(6) * c3.z * tau + T(2) * c2.z};
-        const V K1 = sel(small, horner16<T>(series.K1, z), (T(2) * (T(1) - cos_t) - big * sin_t) / (zb * zb));
-        const V K2 = sel(small, horner16<T>(series.K2, z), (T(3) * sin_t - T(2) * big - big * cos_t) / (zb * zb * big));
+        V K1 = horner16<T>(series.K1, z), K2 = horner16<T>(series.K2, z);
+        if (!all_small) {
+            K1 = sel(small, K1, (T(2) * (T(1) - cos_t) - big * sin_t) / (zb * zb));
+            K2 = sel(small, K2, (T(3) * sin_t - T(2) * big - big * cos_t) / (zb * zb * big));
+        }
         const V dp = dot(th, d1);
         const v3l<V> cp = cross(th, d1), ccp = cross(th, cp), dccp = cross(d1, cp);
         const v3l<V> j2 = jr(d2);
