@@ -342,11 +342,14 @@ void for_each_length_piece(const cubic_segment<D, T>& s, T a, T b, T acc, F&& em
     auto slow = [&](T u0, T u1) { slow_length_pieces(s, u0, u1, eff, emit); };
     const speed_model sm(s);
     const branch_points bp = speed_branch_points(sm);
-    if (!bp.ok) {
+    const rule_choice rc = bp.ok ? first_rule(sm, bp, a, b, eff) : rule_choice{};
+    // (No rule proved from a point that is no branch point: halving would
+    // fail on every piece. As for_each_segment_length_piece does.)
+    if (!bp.ok || (!rc.n && !branch_point_is_root(sm, bp))) {
         slow(a, b);
         return;
     }
-    fast_length_pieces(s, sm, bp, a, b, eff, emit, slow, 0, first_rule(sm, bp, a, b, eff));
+    fast_length_pieces(s, sm, bp, a, b, eff, emit, slow, 0, rc);
 }
 
 /// for_each_length_piece over the whole of segments 0 .. n-1 (segment_at(i)
@@ -380,7 +383,8 @@ void for_each_segment_length_piece(std::size_t n, const SegmentAt& segment_at, T
         // fast_length_pieces' first step for each segment over [0, 1].
         int nh = 0;
         for (int l = 0; l < count; ++l) {
-            how[l] = bp[l].ok ? next_piece_step(seg[l], rc[l], T(0), T(1), eff, 0, whole[l], cut[l]) : piece_step::slow;
+            const bool fast = bp[l].ok && (rc[l].n || branch_point_is_root(sm[l], bp[l]));
+            how[l] = fast ? next_piece_step(seg[l], rc[l], T(0), T(1), eff, 0, whole[l], cut[l]) : piece_step::slow;
             if (how[l] != piece_step::halves) continue;
             half_pieces[nh++] = {&sm[l], &bp[l], 0.0, double(cut[l])};
             half_pieces[nh++] = {&sm[l], &bp[l], double(cut[l]), 1.0};

@@ -159,29 +159,26 @@ template <class V, class M>
     lanes_clear(n.moving, done);
 }
 
-/// Unsettles the lanes whose root is no root: Halley's step also vanishes
-/// where f' = 0 and f does not, a fixed point of the iteration (it repels,
-/// |H'| = 3, but an iterate can pass close enough to stop there), and
-/// deflating by such a point fails the rule's proof on every piece of the
-/// segment. A lane stays settled where Newton's step from its root, f / f',
-/// is within the stop's own bounds (1e-4 of the imaginary part, or 1e-15 of
-/// the size): true at a simple root and at a double or triple one (Newton's
-/// step is then a half or a third of the distance to it), false where f' is
-/// near zero and f is not. (Checked once after the iteration, not in each
-/// step: in the step it cost 2% of arc length's time.)
-template <class V, class M>
-[[gnu::always_inline]] inline void branch_root_check(branch_root<V, M>& n) noexcept {
-    const V xr = n.xr, xi = n.xi;
-    const V(&c)[4] = n.c;
-    V fr = xr + c[3], fi = xi, dr = 4 * xr + 3 * c[3], di = 4 * xi, t;
-    t = fr * xr - fi * xi + c[2], fi = fr * xi + fi * xr, fr = t;
-    t = dr * xr - di * xi + 2 * c[2], di = dr * xi + di * xr, dr = t;
-    t = fr * xr - fi * xi + c[1], fi = fr * xi + fi * xr, fr = t;
-    t = dr * xr - di * xi + c[1], di = dr * xi + di * xr, dr = t;
-    t = fr * xr - fi * xi + c[0], fi = fr * xi + fi * xr, fr = t;
-    const V ff = fr * fr + fi * fi, dd = dr * dr + di * di;
-    const M near_root = ff <= (1e-8 * (xi * xi) + 1e-30 * (1 + xr * xr + xi * xi)) * dd;
-    n.settled = n.settled & near_root;
+/// Whether the branch point Halley settled on (bp.z[0]) is a root of q:
+/// Halley's step also vanishes where q' = 0 and q does not, a fixed point
+/// of the iteration (it repels, |H'| = 3, but an iterate can pass close
+/// enough to stop there), and deflating by such a point fails the rule's
+/// proof on every piece of the segment. True where Newton's step from it,
+/// q / q', is within Halley's stop (1e-4 of the imaginary part, or 1e-15
+/// of the size): at a simple root, and at a double or triple one (Newton's
+/// step is then a half or a third of the distance to it); false where q' is
+/// near zero and q is not. Asked only of segments whose first rule was not
+/// proved (checked in every step or after the iteration, in lanes, the
+/// same test cost 1.5-2% of arc_length_walk20k's time).
+inline bool branch_point_is_root(const speed_model& sm, const branch_points& bp) noexcept {
+    const std::complex<double> z = bp.z[0];
+    std::complex<double> f = 0, d = 0;
+    for (std::size_t k = 5; k-- > 0;) {
+        d = d * z + f;
+        f = f * z + sm.q[k];
+    }
+    const double xi = z.imag(), size2 = 1 + std::norm(z);
+    return std::norm(f) <= (1e-8 * xi * xi + 1e-30 * size2) * std::norm(d);
 }
 
 /// G groups of lanes side by side (independent chains the processor
@@ -197,7 +194,6 @@ template <int G, class V, class M>
             }
         if (!any) break;
     }
-    for (int g = 0; g < G; ++g) branch_root_check(n[g]);
 }
 
 /// The branch points from settled Halley roots (xr, xi) of the monic
