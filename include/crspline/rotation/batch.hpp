@@ -578,24 +578,9 @@ template <class V, class F>
 #endif
 }
 
-/// The quaternions at ptr(l) (4 consecutive values each) as lanes: rows
-/// loaded whole and transposed (two or four lanes at a time), instead of
-/// one value at a time.
-#if CRSPLINE_ROTATION_LANES
-template <class P>
-[[gnu::always_inline]] inline void transpose_rows(P ptr, int l0, v2& w, v2& x, v2& y, v2& z) noexcept {
-    v2 a, b, c, d;
-    std::memcpy(&a, ptr(l0), sizeof a), std::memcpy(&b, ptr(l0 + 1), sizeof b);
-    std::memcpy(&c, ptr(l0) + 2, sizeof c), std::memcpy(&d, ptr(l0 + 1) + 2, sizeof d);
-#if defined(__clang__)
-    w = __builtin_shufflevector(a, b, 0, 2), x = __builtin_shufflevector(a, b, 1, 3);
-    y = __builtin_shufflevector(c, d, 0, 2), z = __builtin_shufflevector(c, d, 1, 3);
-#else
-    w = __builtin_shuffle(a, b, m2{0, 2}), x = __builtin_shuffle(a, b, m2{1, 3});
-    y = __builtin_shuffle(c, d, m2{0, 2}), z = __builtin_shuffle(c, d, m2{1, 3});
-#endif
-}
-#endif
+/// The quaternions at ptr(l) (4 consecutive values each) as lanes; on the
+/// AVX2 clone as rows loaded whole and transposed four lanes at a time
+/// (shorter than one value at a time).
 #if CRSPLINE_ROTATION_AVX2
 template <class P, class H>
 requires std::is_same_v<H, v4>
@@ -616,7 +601,12 @@ template <class V, class P>
         return {p[0], p[1], p[2], p[3]};
     }
 #if CRSPLINE_ROTATION_LANES
-    else {
+    else if constexpr (V::half_width == 2) {
+        // Two lanes per vector: value by value (a load and a load-high per
+        // vector) is as short as a transpose.
+        return {make_lanes<V>([&](int l) { return ptr(l)[0]; }), make_lanes<V>([&](int l) { return ptr(l)[1]; }),
+                make_lanes<V>([&](int l) { return ptr(l)[2]; }), make_lanes<V>([&](int l) { return ptr(l)[3]; })};
+    } else {
         ql<V> q{};  // every half assigned below
         constexpr int hw = V::half_width;
         for (int i = 0; i < V::width / hw; ++i) transpose_rows(ptr, i * hw, q.w.h[i], q.x.h[i], q.y.h[i], q.z.h[i]);
@@ -666,25 +656,25 @@ struct c2_packed {
 template <class T, class V, class Seg>
 [[gnu::always_inline]] inline void c2_lanes(Seg seg, const V& tau, int order, frame f, ql<V>& q, v3l<V>& w, v3l<V>& acc,
                                             bool rotation = true) noexcept {
-    // The packed segment as four rows of four values, transposed:
-    // [t0 c3], [c2 c1.x], [c1.y c1.z q.w q.x], [q.y q.z pad].
-    static_assert(sizeof(c2_packed<T>) == 16 * sizeof(T));
-    auto row = [&](int r) CRSPLINE_ROTATION_BLOCK {
-        return gather_quat<V>([&, r](int l) CRSPLINE_ROTATION_BLOCK { return &seg(l).t0 + 4 * r; });
-    };
-    const ql<V> r0 = row(0), r1 = row(1), r2 = row(2);
-    const v3l<V> c3{r0.x, r0.y, r0.z}, c2{r1.w, r1.x, r1.y}, c1{r1.z, r2.w, r2.x};
+    // (Gathered value by value: rows loaded whole and transposed measured
+    // slower here, on both paths.)
+    auto g = [&](auto member) CRSPLINE_ROTATION_BLOCK { return make_lanes<V>([&](int l) { return member(seg(l)); }); };
+    v3l<V> c3, c2, c1;
+    c3.x = g([](const c2_packed<T>& s) { return s.c3[0]; }), c3.y = g([](const c2_packed<T>& s) { return s.c3[1]; }),
+    c3.z = g([](const c2_packed<T>& s) { return s.c3[2]; });
+    c2.x = g([](const c2_packed<T>& s) { return s.c2[0]; }), c2.y = g([](const c2_packed<T>& s) { return s.c2[1]; }),
+    c2.z = g([](const c2_packed<T>& s) { return s.c2[2]; });
+    c1.x = g([](const c2_packed<T>& s) { return s.c1[0]; }), c1.y = g([](const c2_packed<T>& s) { return s.c1[1]; }),
+    c1.z = g([](const c2_packed<T>& s) { return s.c1[2]; });
+    const ql<V> key{g([](const c2_packed<T>& s) { return s.q[0]; }), g([](const c2_packed<T>& s) { return s.q[1]; }),
+                    g([](const c2_packed<T>& s) { return s.q[2]; }), g([](const c2_packed<T>& s) { return s.q[3]; })};
     const v3l<V> th{((c3.x * tau + c2.x) * tau + c1.x) * tau, ((c3.y * tau + c2.y) * tau + c1.y) * tau,
                     ((c3.z * tau + c2.z) * tau + c1.z) * tau};
     const v3l<V> h{th.x * T(0.5), th.y * T(0.5), th.z * T(0.5)};
     const V a = vsqrt(dot(h, h));  // half the angle
     const sin_cos<V> sc = sincos(a);
     const V sinc = sel(a > T(0), sc.s / a, V{} + T(1));  // sin(a)/a
-    if (rotation || f == frame::world) {
-        const ql<V> r3 = row(3);
-        const ql<V> key{r2.y, r2.z, r3.w, r3.x};
-        q = mul(key, ql<V>{sc.c, h.x * sinc, h.y * sinc, h.z * sinc});
-    }
+    if (rotation || f == frame::world) q = mul(key, ql<V>{sc.c, h.x * sinc, h.y * sinc, h.z * sinc});
     if (order == 0) return;
     // Body frame: omega = J_r(theta) theta', alpha = J_r(theta) theta'' + N_r(theta, theta').
     const v3l<V> d1{(T(3) * c3.x * tau + T(2) * c2.x) * tau + c1.x, (T(3) * c3.y * tau + T(2) * c2.y) * tau + c1.y,
@@ -731,7 +721,7 @@ template <class T, class V = typename pack<T>::V>
 [[gnu::always_inline]] inline void c2_block(const c2_packed<T>* segs, const std::size_t* seg, const T* t, std::size_t k,
                                             int valid, int order, frame f, const rows<T>& out) noexcept {
     const V tau = make_lanes<V>([&](int l) { return t[l] - segs[seg[l]].t0; });
-    ql<V> q{};
+    ql<V> q;
     v3l<V> w, acc;
     c2_lanes<T>([&](int l) -> const c2_packed<T>& { return segs[seg[l]]; }, tau, order, f, q, w, acc,
                 out.q != nullptr || out.quats != nullptr);
