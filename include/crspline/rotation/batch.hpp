@@ -471,10 +471,12 @@ template <class S>
 
 // ----- series of the Jacobian coefficients (so3.hpp) -------------------------------
 
-/// Coefficients of z^m (z = theta^2), m = 0..15, of k2 = (theta - sin)/theta^3,
-/// K1 and K2 (so3::jacobian_coefficients): the same terms as its loop.
+/// Coefficients of z^m (z = theta^2), m = 0..15, of k1 = (1 - cos)/theta^2,
+/// k2 = (theta - sin)/theta^3, K1 and K2 (so3::jacobian_coefficients: the
+/// same terms as its loop; k1 there is 2 sin^2(theta/2)/theta^2). The last
+/// term left out is below 4^16/34! ~ 1e-29 of the first at theta = 2.
 struct jacobian_series {
-    double k2[16], K1[16], K2[16];
+    double k1[16], k2[16], K1[16], K2[16];
 };
 
 constexpr jacobian_series make_jacobian_series() {
@@ -484,6 +486,7 @@ constexpr jacobian_series make_jacobian_series() {
     for (int k = 1; k < 40; ++k) f[k] = f[k - 1] * k;
     for (int m = 0; m < 16; ++m) {
         const double sign = m % 2 == 0 ? 1 : -1;
+        s.k1[m] = sign / f[2 * m + 2];
         s.k2[m] = sign / f[2 * m + 3];
         s.K1[m] = sign * 2 * (m + 1) / f[2 * m + 4];
         s.K2[m] = -sign * 2 * (m + 1) / f[2 * m + 5];
@@ -671,26 +674,43 @@ template <class T, class V, class Seg>
     const v3l<V> th{((c3.x * tau + c2.x) * tau + c1.x) * tau, ((c3.y * tau + c2.y) * tau + c1.y) * tau,
                     ((c3.z * tau + c2.z) * tau + c1.z) * tau};
     const v3l<V> h{th.x * T(0.5), th.y * T(0.5), th.z * T(0.5)};
-    const V a = vsqrt(dot(h, h));  // half the angle
-    const sin_cos<V> sc = sincos(a);
-    const V sinc = sel(a > T(0), sc.s / a, V{} + T(1));  // sin(a)/a
-    if (rotation || f == frame::world) q = mul(key, ql<V>{sc.c, h.x * sinc, h.y * sinc, h.z * sinc});
+    const V hh = dot(h, h);
+    const bool form_q = rotation || f == frame::world;
+    // The half angle a, its sine and cosine, and sin(a)/a: for the rotation,
+    // and for the rates' closed forms where a lane turns 2 rad or more.
+    V a{}, sinc{};
+    sin_cos<V> sc{};
+    auto trig = [&]() CRSPLINE_ROTATION_BLOCK {
+        a = vsqrt(hh);
+        sc = sincos(a);
+        sinc = sel(a > T(0), sc.s / a, V{} + T(1));  // sin(a)/a
+    };
+    if (form_q || order == 0) {
+        trig();
+        q = mul(key, ql<V>{sc.c, h.x * sinc, h.y * sinc, h.z * sinc});
+    }
     if (order == 0) return;
     // Body frame: omega = J_r(theta) theta', alpha = J_r(theta) theta'' + N_r(theta, theta').
     const v3l<V> d1{(T(3) * c3.x * tau + T(2) * c2.x) * tau + c1.x, (T(3) * c3.y * tau + T(2) * c2.y) * tau + c1.y,
                     (T(3) * c3.z * tau + T(2) * c2.z) * tau + c1.z};
-    const V theta = T(2) * a, z = theta * theta;
-    const V k1 = sinc * sinc / T(2);
-    const auto small = theta < T(2);
-    // theta >= 2: the closed forms, with sin theta = 2 s c, cos theta = c^2 - s^2.
-    const V sin_t = T(2) * sc.s * sc.c, cos_t = sc.c * sc.c - sc.s * sc.s;
-    const V big = sel(small, V{} + T(1), theta);  // keeps the unused closed forms finite at theta = 0
-    const V zb = big * big;
-    // The closed forms only where a lane needs them (rarely: segments turn
-    // less than 2 rad about their key); sel keeps the bits either way.
+    // theta < 2 (z = theta^2 = 4 |h|^2 < 4): k1 and k2 from their series in
+    // z, so the rates alone need no square root, sine or cosine there;
+    // theta >= 2: the closed forms (sel keeps the series' bits elsewhere).
+    const V z = T(4) * hh;
+    const auto small = z < T(4);
     const bool all_small = all_of(small);
-    V k2 = horner16<T>(series.k2, z);
-    if (!all_small) k2 = sel(small, k2, (big - sin_t) / (zb * big));
+    V k1 = horner16<T>(series.k1, z), k2 = horner16<T>(series.k2, z);
+    V theta{}, sin_t{}, cos_t{}, big{}, zb{};
+    if (!all_small) {
+        if (!(form_q || order == 0)) trig();
+        theta = T(2) * a;
+        // sin theta = 2 s c, cos theta = c^2 - s^2.
+        sin_t = T(2) * sc.s * sc.c, cos_t = sc.c * sc.c - sc.s * sc.s;
+        big = sel(small, V{} + T(1), theta);  // keeps the unused closed forms finite at theta = 0
+        zb = big * big;
+        k1 = sel(small, k1, sinc * sinc / T(2));
+        k2 = sel(small, k2, (big - sin_t) / (zb * big));
+    }
     auto jr = [&](const v3l<V>& v) CRSPLINE_ROTATION_BLOCK {
         const v3l<V> pv = cross(th, v), ppv = cross(th, pv);
         return v3l<V>{v.x - k1 * pv.x + k2 * ppv.x, v.y - k1 * pv.y + k2 * ppv.y, v.z - k1 * pv.z + k2 * ppv.z};
