@@ -110,7 +110,10 @@ typedef decltype(v2{} < v2{}) m2;  // what a comparison gives
 // chosen at run time by a CPUID test (run() below), as detail/x86_kernels.hpp
 // does for the point curves: nothing needs -mavx2 or -march. The target has
 // no FMA, so every operation rounds as the portable code's does: the two
-// paths give the same bits (tests/rotation/test_rotation_batch.cpp). Clang
+// paths give the same bits (tests/rotation/test_rotation_batch.cpp; a build
+// with -mfma or -march=native lets GCC fuse products and sums, possibly
+// differently on the two paths: the results stay within their tolerances,
+// the bits may differ). Clang
 // takes the portable path (it refuses 32-byte vectors in functions without
 // AVX even when they are inlined into one that has it).
 #if CRSPLINE_ROTATION_LANES && defined(__x86_64__) && !defined(__clang__) && !defined(CRSPLINE_NO_X86_DISPATCH)
