@@ -2,7 +2,9 @@
 //   rotation/eval/<kind>: batch evaluation of 10^6 samples of a rotation
 //       curve (100 random keys), per sample; the goal is at most 4x the
 //       time of euclid4/eval below. c2_velocity: rotation and body-frame
-//       angular velocity (SciPy's (t, 1)); */scalar: the same samples one
+//       angular velocity; c2_rates: the body-frame angular velocity alone,
+//       as Python's RotationSpline(t, 1) asks for it (SciPy's (t, 1));
+//       */scalar: the same samples one
 //       evaluate_on() call at a time, the kernels' baseline.
 //   rotation/euclid4/eval: crspline's own 4-D Euclidean Catmull-Rom through
 //       the same keys as points, batch-evaluated at the same t: the floor.
@@ -111,15 +113,16 @@ rot::c2_rotation_spline<double> c2_curve() {
     return rot::c2_rotation_spline<double>{std::span<const double>(times), std::span<const quat>(keys)};
 }
 
-// Rotation and body-frame angular velocity, as SciPy's RotationSpline(t, 1)
-// needs (order 1), or the rotation alone in the same arrays (order 0, as
-// Python's spline(t) writes it); on the path the CPU takes, or the portable one.
-void eval_c2_rows(benchmark::State& state, int order, bool portable) {
+// Rotation and body-frame angular velocity (order 1), or the rotation alone
+// in the same arrays (order 0, as Python's spline(t) writes it), or with
+// rates_only the angular velocity alone (as Python's spline(t, 1), SciPy's
+// call, asks for it); on the path the CPU takes, or the portable one.
+void eval_c2_rows(benchmark::State& state, int order, bool portable, bool rates_only = false) {
     const auto c = c2_curve();
     const auto t = random_t(c.grid().front(), c.grid().back(), samples);
     std::vector<double> q(4 * samples), w(3 * samples);
     rot::batch_rows<double> rows;
-    rows.q = q.data();
+    if (!rates_only) rows.q = q.data();
     if (order >= 1) rows.omega = w.data();
     const auto path = portable ? rot::detail_batch::isa::portable : rot::detail_batch::best_isa();
     for (auto _ : state) {
@@ -212,6 +215,9 @@ BENCHMARK_CAPTURE(eval_quaternion, slerp, rot::spline_kind::piecewise_slerp)
 BENCHMARK_CAPTURE(eval_quaternion, squad, rot::spline_kind::squad)->Name("rotation/eval/squad")->Unit(benchmark::kMillisecond);
 BENCHMARK(eval_c2)->Name("rotation/eval/c2")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(eval_c2_rows, velocity, 1, false)->Name("rotation/eval/c2_velocity")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(eval_c2_rows, rates, 1, false, true)->Name("rotation/eval/c2_rates")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(eval_c2_rows, rates_portable, 1, true, true)
+    ->Name("rotation/eval/c2_rates/portable")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(eval_c2_rows, velocity_portable, 1, true)
     ->Name("rotation/eval/c2_velocity/portable")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(eval_c2_rows, rows_portable, 0, true)->Name("rotation/eval/c2/portable")->Unit(benchmark::kMillisecond);

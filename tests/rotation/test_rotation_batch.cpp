@@ -168,6 +168,54 @@ TEST(RotationBatch, PolySinCos) {
 }
 #endif
 
+// The short tier of the Jacobian coefficients' series (c2_lanes: the first
+// jacobian_short_terms terms of k1 = (1 - cos)/theta^2 and k2 = (theta -
+// sin)/theta^3 for z = theta^2 < 2) against the sum of 20 terms in long
+// double (the first term left out below 2^20/42! ~ 7e-46 of either), and
+// against the 16 terms the next tier takes. Bound: 3 eps relative (the
+// truncation is below 1% of an ulp by c2_lanes' comment; the rest is
+// Estrin's roundings: the last sum's half ulp, and the inner sums' on
+// terms at most z/12 of the first; measured 1.8 eps at seed 2848), and
+// within an ulp and a half of the 16 terms (measured 0.83; their sums
+// share the first 8 terms' Estrin group and differ in the last roundings
+// only). z runs over [0, 2) at random, with both ends and tiny values.
+TEST(RotationBatch, JacobianSeriesTiers) {
+    namespace db = crspline::rotation::detail_batch;
+    CRSPLINE_SEEDED(seed, 2848);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> uz(0, 2);
+    auto truth = [](long double z, int first) {  // sum_m (-1)^m z^m / (2m + first)!
+        long double term = 1, sum = 0;
+        for (int k = 2; k <= first; ++k) term /= k;
+        for (int m = 0; m < 20; ++m) {
+            sum += term;
+            term *= -z / ((2.0L * m + first + 1) * (2.0L * m + first + 2));
+        }
+        return sum;
+    };
+    double worst = 0, worst16 = 0;
+    int checked = 0;
+    for (int i = 0; i < 100000; ++i) {
+        const double z = i == 0 ? 0.0 : i == 1 ? std::nextafter(2.0, 0.0) : i == 2 ? 1e-300 : i % 100 == 3 ? uz(rng) * 1e-9 : uz(rng);
+        const double k1 = db::estrin<double, db::jacobian_short_terms>(db::series.k1, z);
+        const double k2 = db::estrin<double, db::jacobian_short_terms>(db::series.k2, z);
+        const long double t1 = truth(z, 2), t2 = truth(z, 3);
+        const double e1 = double(std::abs(k1 - t1) / t1) / eps, e2 = double(std::abs(k2 - t2) / t2) / eps;
+        worst = std::max({worst, e1, e2});
+        EXPECT_LE(e1, 3.0) << "k1 at z = " << z;
+        EXPECT_LE(e2, 3.0) << "k2 at z = " << z;
+        const double d1 = std::abs(k1 - db::horner16<double>(db::series.k1, z)) / (k1 * eps);
+        const double d2 = std::abs(k2 - db::horner16<double>(db::series.k2, z)) / (k2 * eps);
+        worst16 = std::max({worst16, d1, d2});
+        EXPECT_LE(d1, 1.5) << "k1 at z = " << z << " against 16 terms";
+        EXPECT_LE(d2, 1.5) << "k2 at z = " << z << " against 16 terms";
+        ++checked;
+    }
+    EXPECT_EQ(checked, 100000);
+    std::printf("jacobian series, %d terms on z < 2: worst %.2f eps from the truth, %.2f from 16 terms\n",
+                db::jacobian_short_terms, worst, worst16);
+}
+
 // The C2 spline's batch against evaluate_on: every end condition, closed,
 // steps up to 170 degrees, and tiny ones (the series side of the Jacobian
 // coefficients), long-way steps (keep_signs, up to 2 pi), sorted and

@@ -15,7 +15,7 @@
 // Every path computes what the scalar evaluate_on() computes, in the same
 // order of operations, except sine and cosine (poly_sincos: within 1 ulp of
 // the correctly rounded value, std:: within 1 ulp too) and the series for
-// the Jacobian coefficients (the same terms, summed in Horner's order): the
+// the Jacobian coefficients (the first 10 or 16 terms, by Estrin's scheme): the
 // results agree with the scalar ones to a few ulps of their size
 // (tests/rotation/test_rotation_batch.cpp).
 #pragma once
@@ -498,6 +498,9 @@ constexpr jacobian_series make_jacobian_series() {
 }
 inline constexpr jacobian_series series = make_jacobian_series();
 
+/// The terms of k1 and k2 taken for z < 2 (c2_lanes: the truncation bound).
+inline constexpr int jacobian_short_terms = 10;
+
 template <class T, class V>
 [[gnu::always_inline]] inline V horner16(const double (&c)[16], const V& z) noexcept {
     return estrin<T, 16>(c, z);
@@ -600,6 +603,22 @@ requires std::is_same_v<H, v4>
     y = __builtin_shuffle(t0, t2, m4{2, 3, 6, 7}), z = __builtin_shuffle(t1, t3, m4{2, 3, 6, 7});
 }
 #endif
+#if CRSPLINE_ROTATION_AVX2
+/// Four lanes' 3-vectors (x, y, z: one value per lane) written as four
+/// consecutive rows [x, y, z] at o: six shuffles and three 32-byte stores
+/// instead of twelve single ones (the values' bits unchanged).
+template <class H>
+requires std::is_same_v<H, v4>
+[[gnu::always_inline]] inline void store_rows3(const H& x, const H& y, const H& z, double* o) noexcept {
+    const H xy = __builtin_shuffle(x, y, m4{0, 4, 2, 6});  // x0 y0 x2 y2
+    const H zx = __builtin_shuffle(z, x, m4{0, 5, 2, 7});  // z0 x1 z2 x3
+    const H yz = __builtin_shuffle(y, z, m4{1, 5, 3, 7});  // y1 z1 y3 z3
+    const H r0 = __builtin_shuffle(xy, zx, m4{0, 1, 4, 5}), r1 = __builtin_shuffle(yz, xy, m4{0, 1, 6, 7}),
+            r2 = __builtin_shuffle(zx, yz, m4{2, 3, 6, 7});
+    std::memcpy(o, &r0, sizeof r0), std::memcpy(o + 4, &r1, sizeof r1), std::memcpy(o + 8, &r2, sizeof r2);
+}
+#endif
+
 template <class V, class P>
 [[gnu::always_inline]] inline ql<V> gather_quat(P ptr) noexcept {
     if constexpr (std::is_floating_point_v<V>) {
@@ -635,8 +654,19 @@ struct locator {
     std::size_t last = 0;
 
     std::size_t operator()(T t) noexcept {
-        // One branch on both tests (& not &&: random t passes the first half
-        // the time, which a branch of its own would mispredict).
+        // One branch on both tests: random t passes the first half the
+        // time, which a branch of its own would mispredict. (GCC splits
+        // int(a) & int(b) into two branches, so for double both compares
+        // are one vector compare: g[last] <= t and not g[last + 1] <= t,
+        // lane mask 0b01; NaN fails it, as it fails the scalar tests.)
+#if defined(__SSE2__) && CRSPLINE_ROTATION_LANES
+        if constexpr (std::is_same_v<T, double>) {
+            v2 ends;
+            std::memcpy(&ends, g + last, sizeof ends);
+            if (_mm_movemask_pd((__m128d)(ends <= (v2{} + t))) != 1) last = index->locate(t, g, nseg);
+            return last;
+        }
+#endif
         if (!(int(g[last] <= t) & int(t < g[last + 1]))) last = index->locate(t, g, nseg);
         return last;
     }
@@ -672,47 +702,65 @@ template <class T, class V, class Seg>
     c2.z = g([](const c2_packed<T>& s) { return s.c2[2]; });
     c1.x = g([](const c2_packed<T>& s) { return s.c1[0]; }), c1.y = g([](const c2_packed<T>& s) { return s.c1[1]; }),
     c1.z = g([](const c2_packed<T>& s) { return s.c1[2]; });
-    const ql<V> key{g([](const c2_packed<T>& s) { return s.q[0]; }), g([](const c2_packed<T>& s) { return s.q[1]; }),
-                    g([](const c2_packed<T>& s) { return s.q[2]; }), g([](const c2_packed<T>& s) { return s.q[3]; })};
     const v3l<V> th{((c3.x * tau + c2.x) * tau + c1.x) * tau, ((c3.y * tau + c2.y) * tau + c1.y) * tau,
                     ((c3.z * tau + c2.z) * tau + c1.z) * tau};
-    const v3l<V> h{th.x * T(0.5), th.y * T(0.5), th.z * T(0.5)};
-    const V hh = dot(h, h);
     const bool form_q = rotation || f == frame::world;
     // The half angle a, its sine and cosine, and sin(a)/a: for the rotation,
     // and for the rates' closed forms where a lane turns 2 rad or more.
+    // (h = th/2 and |h|^2 only there: the rates alone need z = |th|^2.)
+    v3l<V> h{};
     V a{}, sinc{};
     sin_cos<V> sc{};
     auto trig = [&]() CRSPLINE_ROTATION_BLOCK {
-        a = vsqrt(hh);
+        h = {th.x * T(0.5), th.y * T(0.5), th.z * T(0.5)};
+        a = vsqrt(dot(h, h));
         sc = sincos(a);
         sinc = sel(a > T(0), sc.s / a, V{} + T(1));  // sin(a)/a
     };
     if (form_q || order == 0) {
         trig();
+        // The key is gathered here only: the body-frame rates alone never
+        // read it.
+        const ql<V> key{g([](const c2_packed<T>& s) { return s.q[0]; }), g([](const c2_packed<T>& s) { return s.q[1]; }),
+                        g([](const c2_packed<T>& s) { return s.q[2]; }), g([](const c2_packed<T>& s) { return s.q[3]; })};
         q = mul(key, ql<V>{sc.c, h.x * sinc, h.y * sinc, h.z * sinc});
     }
     if (order == 0) return;
     // Body frame: omega = J_r(theta) theta', alpha = J_r(theta) theta'' + N_r(theta, theta').
     const v3l<V> d1{(T(3) * c3.x * tau + T(2) * c2.x) * tau + c1.x, (T(3) * c3.y * tau + T(2) * c2.y) * tau + c1.y,
                     (T(3) * c3.z * tau + T(2) * c2.z) * tau + c1.z};
-    // theta < 2 (z = theta^2 = 4 |h|^2 < 4): k1 and k2 from their series in
-    // z, so the rates alone need no square root, sine or cosine there;
-    // theta >= 2: the closed forms (sel keeps the series' bits elsewhere).
-    const V z = T(4) * hh;
-    const auto small = z < T(4);
-    const bool all_small = all_of(small);
-    V k1 = horner16<T>(series.k1, z), k2 = horner16<T>(series.k2, z);
+    // z = theta^2 (|th|^2: the same bits as 4 |th/2|^2, a power of two
+    // apart). Three tiers, chosen lane by lane (so every path gives a lane
+    // the same bits whatever its neighbours): theta < sqrt(2) (z < 2), k1
+    // and k2 from the first 10 terms of their series; sqrt(2) <= theta < 2,
+    // the first 16; theta >= 2, the closed forms. The rates alone need no
+    // square root, sine or cosine below theta = 2, and the common small
+    // turns the shorter series only (a lane group pays for a longer tier
+    // only when one of its lanes needs it; sel keeps each lane's own bits).
+    // The 10 terms' truncation: both series alternate with decreasing
+    // terms for z < 2, so the error is below the first term left out,
+    // z^10/22! < 2^10/22! = 9.1e-19 for k1 (>= (1 - cos sqrt 2)/2 = 0.42:
+    // 2.2e-18 relative, 1% of an ulp) and 2^10/23! = 4.0e-20 for k2 (>=
+    // 0.15: 2.6e-19 relative); tested against the 16 terms
+    // (tests/rotation/test_rotation_batch.cpp, JacobianSeriesTiers).
+    const V z = dot(th, th);
+    const auto small = z < T(2), mid = z < T(4);
+    V k1 = estrin<T, jacobian_short_terms>(series.k1, z), k2 = estrin<T, jacobian_short_terms>(series.k2, z);
+    bool all_mid = true;
     V theta{}, sin_t{}, cos_t{}, big{}, zb{};
-    if (!all_small) {
+    if (!all_of(small)) {
+        k1 = sel(small, k1, horner16<T>(series.k1, z)), k2 = sel(small, k2, horner16<T>(series.k2, z));
+        all_mid = all_of(mid);
+    }
+    if (!all_mid) {
         if (!(form_q || order == 0)) trig();
         theta = T(2) * a;
         // sin theta = 2 s c, cos theta = c^2 - s^2.
         sin_t = T(2) * sc.s * sc.c, cos_t = sc.c * sc.c - sc.s * sc.s;
-        big = sel(small, V{} + T(1), theta);  // keeps the unused closed forms finite at theta = 0
+        big = sel(mid, V{} + T(1), theta);  // keeps the unused closed forms finite at theta = 0
         zb = big * big;
-        k1 = sel(small, k1, sinc * sinc / T(2));
-        k2 = sel(small, k2, (big - sin_t) / (zb * big));
+        k1 = sel(mid, k1, sinc * sinc / T(2));
+        k2 = sel(mid, k2, (big - sin_t) / (zb * big));
     }
     auto jr = [&](const v3l<V>& v) CRSPLINE_ROTATION_BLOCK {
         const v3l<V> pv = cross(th, v), ppv = cross(th, pv);
@@ -722,9 +770,9 @@ template <class T, class V, class Seg>
     if (order >= 2) {
         const v3l<V> d2{T(6) * c3.x * tau + T(2) * c2.x, T(6) * c3.y * tau + T(2) * c2.y, T(6) * c3.z * tau + T(2) * c2.z};
         V K1 = horner16<T>(series.K1, z), K2 = horner16<T>(series.K2, z);
-        if (!all_small) {
-            K1 = sel(small, K1, (T(2) * (T(1) - cos_t) - big * sin_t) / (zb * zb));
-            K2 = sel(small, K2, (T(3) * sin_t - T(2) * big - big * cos_t) / (zb * zb * big));
+        if (!all_mid) {
+            K1 = sel(mid, K1, (T(2) * (T(1) - cos_t) - big * sin_t) / (zb * zb));
+            K2 = sel(mid, K2, (T(3) * sin_t - T(2) * big - big * cos_t) / (zb * zb * big));
         }
         const V dp = dot(th, d1);
         const v3l<V> cp = cross(th, d1), ccp = cross(th, cp), dccp = cross(d1, cp);
@@ -746,8 +794,18 @@ template <class T, class V = typename pack<T>::V>
     const V tau = make_lanes<V>([&](int l) { return t[l] - segs[seg[l]].t0; });
     ql<V> q;
     v3l<V> w, acc;
-    c2_lanes<T>([&](int l) -> const c2_packed<T>& { return segs[seg[l]]; }, tau, order, f, q, w, acc,
-                out.q != nullptr || out.quats != nullptr);
+    const bool rotation = out.q != nullptr || out.quats != nullptr;
+    c2_lanes<T>([&](int l) -> const c2_packed<T>& { return segs[seg[l]]; }, tau, order, f, q, w, acc, rotation);
+#if CRSPLINE_ROTATION_AVX2
+    // The rates alone (SciPy's spline(t, 1)) from a full block of the AVX2
+    // clone: whole rows.
+    if constexpr (std::is_same_v<V, vx>)
+        if (!rotation && order == 1 && valid == V::width) {
+            for (int i = 0; i < V::width / V::half_width; ++i)
+                store_rows3(w.x.h[i], w.y.h[i], w.z.h[i], out.omega + 3 * (k + std::size_t(i * V::half_width)));
+            return;
+        }
+#endif
     store<T, V>(out, k, valid, q, order >= 1 ? &w : nullptr, order >= 2 ? &acc : nullptr);
 }
 
