@@ -71,12 +71,16 @@ py::dict geo_smooth(carray<double> xy, carray<double> extra, carray<std::int64_t
     {
         py::gil_scoped_release release;
         r = geo::smooth(l, opt);
+        l = {};  // the input's copy, before the output's
     }
-    const auto& o = r.output;
-    py::array_t<double> oxy({py::ssize_t(o.vertex_count()), py::ssize_t(2)});
+    auto& o = r.output;
+    const std::size_t out_vertices = o.vertex_count();
+    py::array_t<double> oxy({py::ssize_t(out_vertices), py::ssize_t(2)});
     if (!o.xy.empty()) std::copy(o.xy.begin(), o.xy.end(), oxy.mutable_data());
-    py::array_t<double> oextra({py::ssize_t(o.vertex_count()), py::ssize_t(o.extra_dims)});
+    std::vector<double>().swap(o.xy);  // each array held once, not twice
+    py::array_t<double> oextra({py::ssize_t(out_vertices), py::ssize_t(o.extra_dims)});
     if (!o.extra.empty()) std::copy(o.extra.begin(), o.extra.end(), oextra.mutable_data());
+    std::vector<double>().swap(o.extra);
     std::vector<std::int64_t> offs(o.part_offsets.begin(), o.part_offsets.end());
     std::vector<std::uint8_t> status, verdict;
     std::vector<double> length, deviation;

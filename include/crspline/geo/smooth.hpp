@@ -301,6 +301,7 @@ struct arc_work {
     double length = 0;                    // set where the curve is measured early (no topology)
     bool measured = false;                // length is set
     bool has_line = false;                // line, vseg, vu, first_piece are this curve's
+    std::size_t pieces = 0;               // pieces of this curve's polyline (0: none made); kept when released
 
     std::size_t segments() const noexcept { return closed ? pts.size() : pts.size() - 1; }
     std::size_t next(std::size_t i) const noexcept { return i + 1 == pts.size() ? 0 : i + 1; }
@@ -653,6 +654,7 @@ struct proof {
         arc_work& a = arcs[i];
         build_arc_curve(a, opt.alpha);
         a.has_line = false;
+        a.pieces = 0;
         if (opt.polylines) ensure_line(i);
         const std::size_t segs = a.segments();
         a.hull.resize(segs);
@@ -703,6 +705,7 @@ struct proof {
         for (std::size_t k = a.line.points.size() - 1; k-- > 0;) a.first_piece[a.vseg[k]] = k;
         a.first_piece[segs] = a.line.points.size() - 1;
         a.has_line = true;
+        a.pieces = a.line.points.size() - 1;
     }
 
     void fail(const piece& pc) {
@@ -887,52 +890,139 @@ struct proof {
         return out;
     }
 
-    // Rounds: rebuild the dirty arcs, prove the pairs that involve one,
-    // raise tension where a proof failed; until every pair is proved.
-    // Pairs of clean arcs keep the record of the round that proved them.
+    // The bounds of the arc's first curve, the union of its segments' hull
+    // boxes as prepare() finds them: arc_pairs() needs every arc's before
+    // any arc is proved. The curve is kept (prepare() takes it as it is);
+    // the hulls are not.
+    void first_bounds(std::uint32_t i) {
+        arc_work& a = arcs[i];
+        build_arc_curve(a, opt.alpha);
+        for (std::size_t s = 0; s < a.segments(); ++s) {
+            const auto b = segment_bezier(a, s);
+            box<2> bx = box<2>::of(b[0]);
+            for (int j = 1; j < 4; ++j) bx.expand(b[j]);
+            if (s == 0) a.bounds = bx;
+            a.bounds.expand(bx);
+        }
+    }
+
+    // An arc whose component is proved: its length taken; its curve (unless
+    // smooth_result::curves wants it), its hulls and, without output
+    // polylines, its polyline released.
+    void finish(std::uint32_t i) {
+        arc_work& a = arcs[i];
+        a.length = arc_curve_length(a);
+        a.measured = true;
+        std::vector<std::array<p2, 4>>().swap(a.hull);
+        std::vector<crspline::box<2>>().swap(a.hull_box);
+        std::vector<std::size_t>().swap(a.first_piece);
+        if (!opt.keep_curves) {
+            a.curve.reset();
+            a.base.reset();
+        }
+        if (!opt.polylines) {
+            a.line = {};
+            std::vector<std::uint32_t>().swap(a.vseg);
+            std::vector<double>().swap(a.vu);
+            a.has_line = false;  // a.pieces keeps the count
+        }
+    }
+
+    // Rounds, component by component. Arcs are joined (directly or through
+    // others) by their candidate pairs, those whose first boxes meet; only
+    // arcs of one component can raise each other's tension, so each
+    // component runs its rounds to the end alone and then releases its
+    // curves and hulls (finish). The levels, round by round, are those of
+    // rounds over the whole layer (the same candidates; a component with
+    // nothing left to prove does nothing in later rounds), and so is every
+    // number out; what changes is memory: one component's curves and hulls
+    // at a time beside the polylines, not every arc's at once (10^6 walks:
+    // 5 GB less; BENCHMARKS.md).
     void run() {
         const std::size_t n = arcs.size();
         self.assign(n, {});
+        crossing.assign(n, 0);
         if (!opt.preserve_topology) {
             run_alone();
             return;
         }
-        std::vector<std::pair<std::uint64_t, proof_record>> previous;
-        std::vector<std::uint64_t> candidates;
-        std::vector<std::uint8_t> dirty(n);
+        rounds = 1;  // an empty layer too: one round with nothing to prove
+        for (std::uint32_t i = 0; i < n; ++i) first_bounds(i);
+        std::vector<std::uint64_t> candidates = arc_pairs();
+        // Components: union-find over the candidate pairs; a root is the
+        // smallest arc of its component.
+        std::vector<std::uint32_t> parent(n);
+        for (std::uint32_t i = 0; i < n; ++i) parent[i] = i;
+        auto find = [&](std::uint32_t x) {
+            while (parent[x] != x) x = parent[x] = parent[parent[x]];
+            return x;
+        };
+        for (const std::uint64_t key : candidates) {
+            const std::uint32_t x = find(std::uint32_t(key >> 32)), y = find(std::uint32_t(key & 0xffffffffu));
+            if (x != y) parent[std::max(x, y)] = std::min(x, y);
+        }
+        // Each component's arcs and candidates (in key order), listed by root.
+        std::vector<std::size_t> arc_start(n + 1, 0), key_start(n + 1, 0);
+        for (std::uint32_t i = 0; i < n; ++i) ++arc_start[(parent[i] = find(i)) + 1];
+        for (const std::uint64_t key : candidates) ++key_start[parent[std::uint32_t(key >> 32)] + 1];
+        for (std::size_t r = 0; r < n; ++r) {
+            arc_start[r + 1] += arc_start[r];
+            key_start[r + 1] += key_start[r];
+        }
+        std::vector<std::uint32_t> members(n);
+        std::vector<std::uint64_t> keys(candidates.size());
+        {
+            std::vector<std::size_t> at(arc_start.begin(), arc_start.end() - 1);
+            for (std::uint32_t i = 0; i < n; ++i) members[at[parent[i]]++] = i;
+            at.assign(key_start.begin(), key_start.end() - 1);
+            for (const std::uint64_t key : candidates) keys[at[parent[std::uint32_t(key >> 32)]]++] = key;
+        }
+        std::vector<std::uint64_t>().swap(candidates);
+        dirty.assign(n, 0);
+        for (std::size_t r = 0; r < n; ++r) {
+            const std::size_t first = arc_start[r], size = arc_start[r + 1] - first;
+            if (size == 0) continue;
+            // The proof is 80% of the work; a report where the count of
+            // arcs done passes a multiple of 4096 (as in run_alone()).
+            if (opt.progress && (first + 4095) / 4096 != (first + size + 4095) / 4096)
+                opt.progress(0.8 * double(first) / double(n));
+            const std::span<const std::uint32_t> m(members.data() + first, size);
+            run_component(m, std::span<const std::uint64_t>(keys.data() + key_start[r], key_start[r + 1] - key_start[r]));
+            for (const std::uint32_t i : m) finish(i);
+        }
+    }
+
+    // One component's rounds: rebuild its dirty arcs, prove the pairs that
+    // involve one, raise tension where a proof failed; until every pair is
+    // proved. Pairs of clean arcs keep the record of the round that proved
+    // them.
+    void run_component(std::span<const std::uint32_t> members, std::span<const std::uint64_t> candidates) {
         constexpr std::size_t max_rounds = 64;
+        previous.clear();
+        across.clear();
         for (std::size_t round = 1;; ++round) {
-            rounds = round;
-            for (std::uint32_t i = 0; i < n; ++i) {
-                // The first round does nearly all the work: 80% of it.
-                if (opt.progress && round == 1 && i % 4096 == 0) opt.progress(0.8 * double(i) / double(n));
+            rounds = std::max(rounds, round);
+            for (const std::uint32_t i : members) {
                 auto& a = arcs[i];
                 dirty[i] = a.dirty;
                 std::fill(a.raise.begin(), a.raise.end(), 0);
                 if (a.dirty) prepare(i);
             }
-            if (opt.preserve_topology) {
-                for (std::uint32_t i = 0; i < n; ++i)
-                    if (dirty[i]) self[i] = prove_arcs(i, i);
-                // Pairs of arcs whose boxes meet (arc_pairs: a grid), found in
-                // the first round: tension only pulls a segment's inner Bezier
-                // points towards its ends, so later boxes lie inside the first
-                // ones, and a pair whose boxes no longer meet proves nothing.
-                if (round == 1) candidates = arc_pairs();
-                previous.swap(across);
-                across.clear();
-                for (const std::uint64_t key : candidates) {
-                    const auto i = std::uint32_t(key >> 32), j = std::uint32_t(key & 0xffffffffu);
-                    if (dirty[i] || dirty[j]) {
-                        across.push_back({key, prove_arcs(i, j)});
-                    } else {
-                        // Unchanged since the round that proved them.
-                        auto it = std::lower_bound(previous.begin(), previous.end(), key,
-                                                   [](const auto& e, std::uint64_t k) { return e.first < k; });
-                        across.push_back({key, it != previous.end() && it->first == key ? it->second : prove_arcs(i, j)});
-                    }
+            for (const std::uint32_t i : members)
+                if (dirty[i]) self[i] = prove_arcs(i, i);
+            // The candidates come in key order, and so does `across`.
+            previous.swap(across);
+            across.clear();
+            for (const std::uint64_t key : candidates) {
+                const auto i = std::uint32_t(key >> 32), j = std::uint32_t(key & 0xffffffffu);
+                if (dirty[i] || dirty[j]) {
+                    across.push_back({key, prove_arcs(i, j)});
+                } else {
+                    // Unchanged since the round that proved them.
+                    auto it = std::lower_bound(previous.begin(), previous.end(), key,
+                                               [](const auto& e, std::uint64_t k) { return e.first < k; });
+                    across.push_back({key, it != previous.end() && it->first == key ? it->second : prove_arcs(i, j)});
                 }
-                std::sort(across.begin(), across.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
             }
             // Raise tension where needed.
             bool failed = false;
@@ -942,7 +1032,8 @@ struct proof {
                 a.level[s] = a.level[a.next(s)] = linear_level;
             }
             jumps.clear();
-            for (auto& a : arcs) {
+            for (const std::uint32_t i : members) {
+                auto& a = arcs[i];
                 a.dirty = false;
                 for (std::size_t s = 0; s < a.segments(); ++s) {
                     if (!a.raise[s]) continue;
@@ -958,7 +1049,6 @@ struct proof {
             if (!failed || round >= max_rounds) break;  // the cap cannot be reached: levels only grow
         }
         // What the final proof found.
-        crossing.assign(n, 0);
         auto note = [&](std::uint32_t i, const proof_record& r) {
             if (r.crossings) crossing[i] = 2;
             else if (r.touches) crossing[i] = std::max<std::uint8_t>(crossing[i], 1);
@@ -968,7 +1058,7 @@ struct proof {
             crossings += r.crossings;
             touches += r.touches;
         };
-        for (std::uint32_t i = 0; i < n; ++i) {
+        for (const std::uint32_t i : members) {
             count(self[i]);
             note(i, self[i]);
         }
@@ -983,6 +1073,8 @@ struct proof {
     std::vector<std::pair<std::uint32_t, std::size_t>> jumps;   // (arc, segment) to take to the input
     std::vector<proof_record> self;                              // per arc, with itself
     std::vector<std::pair<std::uint64_t, proof_record>> across;  // per pair of arcs whose boxes meet, by key
+    std::vector<std::pair<std::uint64_t, proof_record>> previous;  // the round before's
+    std::vector<std::uint8_t> dirty;                             // per arc: rebuilt this round
     std::vector<std::uint8_t> crossing;                          // per arc: 2 an input crossing, 1 a touch
     std::size_t rounds = 0, pairs = 0, crossings = 0, touches = 0;
 };
@@ -1078,6 +1170,7 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
     }
     // 2. Arcs.
     const topology topo = build_topology(clean, opt.preserve_topology);
+    std::vector<clean_part>().swap(clean);  // the topology has what is needed of it
     std::vector<detail::arc_work> arcs(topo.arcs.size());
     for (std::size_t i = 0; i < arcs.size(); ++i) {
         auto& a = arcs[i];
@@ -1101,7 +1194,7 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
     res.stats.pairs_checked = pr.pairs;
     res.stats.input_crossings = pr.crossings;
     res.stats.input_touches = pr.touches;
-    for (const auto& a : arcs) res.stats.pieces += a.has_line ? a.line.points.size() - 1 : 0;
+    for (const auto& a : arcs) res.stats.pieces += a.pieces;
     const std::vector<std::uint8_t>& arc_crossing = pr.crossing;
 
     // 4. Extras along the arcs, lengths, the output layer.
@@ -1130,6 +1223,27 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
         out.xy.push_back(p[1]);
         for (std::size_t k = 0; k < E; ++k) out.extra.push_back(ex[k]);
     };
+    // The output's size is known now: reserved at once, not grown by
+    // doubling (at 10^6 walks the polylines are 10^8 vertices). Each arc's
+    // polyline is released once its last part has been written.
+    std::vector<std::size_t> uses_left(arcs.size(), 0);
+    {
+        std::size_t total = 0;
+        for (std::size_t p = 0; p < nparts; ++p) {
+            if (clean_of[p] == SIZE_MAX || !opt.polylines) {
+                total += in.part_size(p);
+                continue;
+            }
+            for (const auto& [ai, reversed] : topo.parts[clean_of[p]].arcs) {
+                total += arcs[ai].line.points.size();
+                ++uses_left[ai];
+            }
+            ++total;  // a ring's closing vertex (at most)
+        }
+        out.xy.reserve(2 * total);
+        out.extra.reserve(E * total);
+        out.part_offsets.reserve(nparts + 1);
+    }
     std::vector<double> ex(E);
     for (std::size_t p = 0; p < nparts; ++p) {
         const std::size_t f = in.part_features[p];
@@ -1168,6 +1282,12 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
                 emit(a.line.points[k], ex.data());
             }
             first_arc = false;
+            if (--uses_left[ai] == 0) {
+                auto& done = arcs[ai];
+                done.line = {};
+                std::vector<std::uint32_t>().swap(done.vseg);
+                std::vector<double>().swap(done.vu);
+            }
         }
         // A ring ends at its first vertex (it does already when its last arc closes it).
         if (in.part_kinds[p] == part_kind::ring) {
