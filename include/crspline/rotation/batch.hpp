@@ -642,6 +642,25 @@ template <class V, class P>
 
 // ----- locating samples -----------------------------------------------------------------
 
+/// Whether g[i] <= t < g[i + 1], as one branch for the caller: random t
+/// passes the first test half the time, which a branch of its own would
+/// mispredict, and GCC splits int(a) & int(b) into two branches; so for
+/// double both compares are one vector compare (g[i] <= t and not g[i + 1]
+/// <= t: lane mask 0b01; NaN fails it, as it fails the scalar tests). It
+/// took about 7 ns per sample off every class's batch on random t (the C2
+/// rates alone: 17 -> 10 ns per sample, AVX2).
+template <class T>
+[[gnu::always_inline]] inline bool in_segment(const T* g, std::size_t i, T t) noexcept {
+#if defined(__SSE2__) && CRSPLINE_ROTATION_LANES
+    if constexpr (std::is_same_v<T, double>) {
+        v2 ends;
+        std::memcpy(&ends, g + i, sizeof ends);
+        return _mm_movemask_pd((__m128d)(ends <= (v2{} + t))) == 1;
+    }
+#endif
+    return int(g[i] <= t) & int(t < g[i + 1]);
+}
+
 /// The segment of each sample: the one before (sorted input stays in a
 /// segment for many samples, so one well-predicted test usually settles
 /// it), else the knot index (O(1), knot_index.hpp), which random input
@@ -654,20 +673,7 @@ struct locator {
     std::size_t last = 0;
 
     std::size_t operator()(T t) noexcept {
-        // One branch on both tests: random t passes the first half the
-        // time, which a branch of its own would mispredict. (GCC splits
-        // int(a) & int(b) into two branches, so for double both compares
-        // are one vector compare: g[last] <= t and not g[last + 1] <= t,
-        // lane mask 0b01; NaN fails it, as it fails the scalar tests.)
-#if defined(__SSE2__) && CRSPLINE_ROTATION_LANES
-        if constexpr (std::is_same_v<T, double>) {
-            v2 ends;
-            std::memcpy(&ends, g + last, sizeof ends);
-            if (_mm_movemask_pd((__m128d)(ends <= (v2{} + t))) != 1) last = index->locate(t, g, nseg);
-            return last;
-        }
-#endif
-        if (!(int(g[last] <= t) & int(t < g[last + 1]))) last = index->locate(t, g, nseg);
+        if (!in_segment(g, last, t)) last = index->locate(t, g, nseg);
         return last;
     }
 };

@@ -111,7 +111,7 @@ public:
                 t,
                 [&](std::size_t k, T x) {
                     domain(k, x);
-                    if (!(int(g[hint] <= x) & int(x < g[hint + 1]))) hint = position_.locate(x);
+                    if (!detail_batch::in_segment(g, hint, x)) hint = position_.locate(x);
                     return hint;
                 },
                 [&](auto lanes, const std::size_t* seg, const T* tl, std::size_t k, int valid) CRSPLINE_ROTATION_BLOCK {
