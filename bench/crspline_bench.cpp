@@ -18,6 +18,7 @@
 #include <benchmark/benchmark.h>
 
 #include "memory_policy.hpp"
+#include "read_stream_floor.hpp"
 #include "walk.hpp"
 
 #include <boost/math/interpolators/catmull_rom.hpp>
@@ -365,24 +366,7 @@ void eval_sorted_float_crspline(benchmark::State& state) {
 /// stores where the CPU has AVX-512F (the kernel's own width there; 16 t,
 /// 3 permutes, 3 stores), else 16-byte SSE2 ones (4 t, 3 shuffles, 3
 /// stores; on the EPYC these reach less than the kernel). What the kernel
-/// can reach at best; reported, not a target.
-#if CRSPLINE_X86_DISPATCH
-__attribute__((target("avx512f"))) std::size_t read_write_float_512(const float* t, float* p, std::size_t k,
-                                                                   std::size_t n) {
-    for (; k < n && reinterpret_cast<std::uintptr_t>(p + 3 * k) % 64 != 0; ++k) p[3 * k] = p[3 * k + 1] = p[3 * k + 2] = t[k];
-    const __m512i i0 = _mm512_setr_epi32(0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3, 4, 4, 4, 5);
-    const __m512i i1 = _mm512_setr_epi32(5, 5, 6, 6, 6, 7, 7, 7, 8, 8, 8, 9, 9, 9, 10, 10);
-    const __m512i i2 = _mm512_setr_epi32(10, 11, 11, 11, 12, 12, 12, 13, 13, 13, 14, 14, 14, 15, 15, 15);
-    for (; k + 16 <= n; k += 16) {
-        const __m512 a = _mm512_loadu_ps(t + k);
-        _mm512_stream_ps(p + 3 * k, _mm512_maskz_permutexvar_ps(0xFFFF, i0, a));
-        _mm512_stream_ps(p + 3 * k + 16, _mm512_maskz_permutexvar_ps(0xFFFF, i1, a));
-        _mm512_stream_ps(p + 3 * k + 32, _mm512_maskz_permutexvar_ps(0xFFFF, i2, a));
-    }
-    return k;
-}
-#endif
-
+/// can reach at best; reported, not a target (read_stream_floor.hpp).
 void store_floor_float_read_write(benchmark::State& state) {
     auto& out = output<vec<3, float>>(big);
     const auto& t = t_sorted_f();
@@ -391,7 +375,7 @@ void store_floor_float_read_write(benchmark::State& state) {
         std::size_t k = 0;
 #if defined(__SSE2__)
 #if CRSPLINE_X86_DISPATCH
-        if (crspline::detail::avx512_enabled()) k = read_write_float_512(t.data(), p, k, big);
+        if (crspline::detail::avx512_enabled()) k = crspline_bench::read_write_float_512(t.data(), p, k, big);
 #endif
         for (; k < big && reinterpret_cast<std::uintptr_t>(p + 3 * k) % 16 != 0; ++k) p[3 * k] = p[3 * k + 1] = p[3 * k + 2] = t[k];
         for (; k + 4 <= big; k += 4) {

@@ -15,6 +15,7 @@
 // the 8-lane AVX2 walk where the CPU has AVX-512F too.
 #include <crspline/catmull_rom.hpp>
 
+#include "read_stream_floor.hpp"
 #include "walk.hpp"
 
 #include <algorithm>
@@ -35,18 +36,8 @@ double cpu_ms() {
 }
 
 #if CRSPLINE_X86_DISPATCH
-__attribute__((target("avx512f"))) void read_stream_512(const float* t, float* p, std::size_t n) {
-    std::size_t k = 0;
-    for (; k < n && reinterpret_cast<std::uintptr_t>(p + 3 * k) % 64 != 0; ++k) p[3 * k] = p[3 * k + 1] = p[3 * k + 2] = t[k];
-    const __m512i i0 = _mm512_setr_epi32(0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3, 4, 4, 4, 5);
-    const __m512i i1 = _mm512_setr_epi32(5, 5, 6, 6, 6, 7, 7, 7, 8, 8, 8, 9, 9, 9, 10, 10);
-    const __m512i i2 = _mm512_setr_epi32(10, 11, 11, 11, 12, 12, 12, 13, 13, 13, 14, 14, 14, 15, 15, 15);
-    for (; k + 16 <= n; k += 16) {
-        const __m512 a = _mm512_loadu_ps(t + k);
-        _mm512_stream_ps(p + 3 * k, _mm512_maskz_permutexvar_ps(0xFFFF, i0, a));
-        _mm512_stream_ps(p + 3 * k + 16, _mm512_maskz_permutexvar_ps(0xFFFF, i1, a));
-        _mm512_stream_ps(p + 3 * k + 32, _mm512_maskz_permutexvar_ps(0xFFFF, i2, a));
-    }
+void read_stream_512(const float* t, float* p, std::size_t n) {
+    std::size_t k = crspline_bench::read_write_float_512(t, p, 0, n);
     _mm_sfence();
     for (; k < n; ++k) p[3 * k] = p[3 * k + 1] = p[3 * k + 2] = t[k];
 }
