@@ -876,10 +876,12 @@ struct decision_engine {
     // Is the pair (p, q), p < q, consecutive? Returns 1 when p ends where q
     // starts, 2 when q ends where p starts (across a closed curve's seam).
     int adjacency(std::size_t p, std::size_t q) const {
-        if (pieces.curve(p) != pieces.curve(q)) return 0;
-        const piece a = pieces[p], b = pieces[q];
-        if (q == p + 1 && a.b[3] == b.b[0]) return 1;
-        if (closed[a.curve] && p == first_piece[a.curve] && q + 1 == first_piece[a.curve + 1] && b.b[3] == a.b[0])
+        // The index tests first: a piece that is a whole segment is rebuilt
+        // from the curve when read, and most candidate pairs are neither.
+        const std::uint32_t c = pieces.curve(p);
+        if (pieces.curve(q) != c) return 0;
+        if (q == p + 1 && pieces[p].b[3] == pieces[q].b[0]) return 1;
+        if (closed[c] && p == first_piece[c] && q + 1 == first_piece[c + 1] && pieces[q].b[3] == pieces[p].b[0])
             return 2;
         return 0;
     }
