@@ -33,7 +33,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <map>
@@ -75,33 +77,43 @@ const curve3& curve() { static const curve3 c(points()); return c; }
 const boost_curve& bcurve() { static const boost_curve b(to_boost(points()), false, 0.5); return b; }
 
 /// n evenly spaced increasing t over [a, b], the last exactly b.
-template <class T>
-std::vector<T> linspace(T a, T b, std::size_t n) {
-    std::vector<T> t(n);
+template <class T, class V = std::vector<T>>
+V linspace(T a, T b, std::size_t n) {
+    V t(n);
     for (std::size_t k = 0; k < n; ++k) t[k] = std::min(b, a + (b - a) * (T(k) / T(n - 1)));
     t.back() = b;
     return t;
 }
-template <class T>
-std::vector<T> uniform_random(T a, T b, std::size_t n) {
+template <class T, class V = std::vector<T>>
+V uniform_random(T a, T b, std::size_t n) {
     std::mt19937_64 rng(seed + 1);
     std::uniform_real_distribution<T> U(a, b);
-    std::vector<T> t(n);
+    V t(n);
     for (auto& x : t) x = std::min(b, U(rng));
     return t;
 }
-const std::vector<double>& t_sorted() { static const auto t = linspace(curve().t_min(), curve().t_max(), big); return t; }
-const std::vector<double>& t_random() { static const auto t = uniform_random(curve().t_min(), curve().t_max(), big); return t; }
+// The batches' parameters and outputs are eval_vectors: 2 MiB pages
+// (bench/memory_policy.hpp says why; --pages=4k for 4 KiB ones).
+using crspline_bench::eval_vector;
+const eval_vector<double>& t_sorted() {
+    static const auto t = linspace<double, eval_vector<double>>(curve().t_min(), curve().t_max(), big);
+    return t;
+}
+const eval_vector<double>& t_random() {
+    static const auto t = uniform_random<double, eval_vector<double>>(curve().t_min(), curve().t_max(), big);
+    return t;
+}
 
 // Boost's parameter is the raw knot value, the same cumulative chord^alpha
 // as crspline's grid (to rounding): clamp into its own domain.
 double boost_t(double t) { return std::min(t, bcurve().max_parameter()); }
 
 /// The output buffer, reused across iterations and cases (its pages are
-/// already mapped: no case pays page faults; see store_floor/fresh).
+/// already mapped: no case pays page faults; see store_floor/fresh), one
+/// per point type: the floors and the kernels of a type share it.
 template <class P>
-std::vector<P>& output(std::size_t n) {
-    static std::vector<P> out;
+eval_vector<P>& output(std::size_t n) {
+    static eval_vector<P> out;
     if (out.size() != n) out.assign(n, P{});
     return out;
 }
@@ -138,11 +150,11 @@ double agreement_with_boost() {
 
 /// A plain store loop: std::fill of the output with a constant point. GCC
 /// makes it one 16-byte and one 8-byte store per point (movups + movsd).
+void fill_pass(eval_vector<v3>& out) { std::fill(out.begin(), out.end(), v3{{1.0, 2.0, 3.0}}); }
 void store_floor(benchmark::State& state) {
     auto& out = output<v3>(big);
-    const v3 x{{1.0, 2.0, 3.0}};
     for (auto _ : state) {
-        std::fill(out.begin(), out.end(), x);
+        fill_pass(out);
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
@@ -155,10 +167,12 @@ void store_floor(benchmark::State& state) {
 /// is the floor the targets use. Zero bytes are special-cased by this machine
 /// (store_floor/memset_zero runs 2.5x faster than any other write of the same
 /// size), so they are reported apart and not taken as the floor.
+template <class P>
+void memset_pass(eval_vector<P>& out, int byte) { std::memset(static_cast<void*>(out.data()), byte, out.size() * sizeof(P)); }
 void store_floor_memset(benchmark::State& state, int byte) {
     auto& out = output<v3>(big);
     for (auto _ : state) {
-        std::memset(static_cast<void*>(out.data()), byte, out.size() * sizeof(v3));
+        memset_pass(out, byte);
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
@@ -195,23 +209,27 @@ void store_floor_stream(benchmark::State& state) {
 /// write a 24-byte point for each, (t, t, t), with non-temporal stores (the
 /// fastest write found above). store_floor counts only the write; this floor
 /// counts the 8 bytes of input per point that eval_sorted must also read.
+void read_write_pass(const eval_vector<double>& t, eval_vector<v3>& out) {
+    double* p = out.data()->data();
+    const std::size_t n = t.size();
+    std::size_t k = 0;
+#if defined(__SSE2__)
+    for (; k < n && reinterpret_cast<std::uintptr_t>(p + 3 * k) % 16 != 0; ++k) p[3 * k] = p[3 * k + 1] = p[3 * k + 2] = t[k];
+    for (; k + 2 <= n; k += 2) {
+        const __m128d a = _mm_loadu_pd(t.data() + k);         // t0 t1
+        _mm_stream_pd(p + 3 * k, _mm_unpacklo_pd(a, a));      // t0 t0
+        _mm_stream_pd(p + 3 * k + 2, a);                      // t0 t1
+        _mm_stream_pd(p + 3 * k + 4, _mm_unpackhi_pd(a, a));  // t1 t1
+    }
+    _mm_sfence();
+#endif
+    for (; k < n; ++k) p[3 * k] = p[3 * k + 1] = p[3 * k + 2] = t[k];
+}
 void store_floor_read_write(benchmark::State& state) {
     auto& out = output<v3>(big);
     const auto& t = t_sorted();
     for (auto _ : state) {
-        double* p = out.data()->data();
-        std::size_t k = 0;
-#if defined(__SSE2__)
-        for (; k < big && reinterpret_cast<std::uintptr_t>(p + 3 * k) % 16 != 0; ++k) p[3 * k] = p[3 * k + 1] = p[3 * k + 2] = t[k];
-        for (; k + 2 <= big; k += 2) {
-            const __m128d a = _mm_loadu_pd(t.data() + k);  // t0 t1
-            _mm_stream_pd(p + 3 * k, _mm_unpacklo_pd(a, a));   // t0 t0
-            _mm_stream_pd(p + 3 * k + 2, a);                   // t0 t1
-            _mm_stream_pd(p + 3 * k + 4, _mm_unpackhi_pd(a, a));  // t1 t1
-        }
-        _mm_sfence();
-#endif
-        for (; k < big; ++k) p[3 * k] = p[3 * k + 1] = p[3 * k + 2] = t[k];
+        read_write_pass(t, out);
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
@@ -239,7 +257,7 @@ template <class T>
 void store_floor_float(benchmark::State& state) {
     auto& out = output<vec<3, T>>(big);
     for (auto _ : state) {
-        std::memset(static_cast<void*>(out.data()), 0x3f, out.size() * sizeof(vec<3, T>));
+        memset_pass(out, 0x3f);
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
@@ -251,7 +269,7 @@ void store_floor_float(benchmark::State& state) {
 
 /// crspline's batch evaluation of t (position or first derivative) into
 /// the shared output buffer.
-void crspline_batch(benchmark::State& state, const std::vector<double>& t, int order) {
+void crspline_batch(benchmark::State& state, std::span<const double> t, int order) {
     const auto& c = curve();
     auto& out = output<v3>(big);
     for (auto _ : state) {
@@ -264,7 +282,7 @@ void crspline_batch(benchmark::State& state, const std::vector<double>& t, int o
 
 /// Boost, one call per point (it has no batch evaluation): f(curve, t).
 template <class F>
-void boost_loop(benchmark::State& state, const std::vector<double>& t, F f) {
+void boost_loop(benchmark::State& state, std::span<const double> t, F f) {
     const auto& b = bcurve();
     auto& out = output<boost_point>(big);
     for (auto _ : state) {
@@ -341,8 +359,8 @@ void deriv_sorted_boost(benchmark::State& state) {
 const std::vector<vec<3, float>>& points_f() { static const auto p = walk<float>(control_points); return p; }
 const crspline::catmull_rom<3, float>& curve_f() { static const crspline::catmull_rom<3, float> c(points_f()); return c; }
 
-const std::vector<float>& t_sorted_f() {
-    static const auto t = linspace(curve_f().t_min(), curve_f().t_max(), big);
+const eval_vector<float>& t_sorted_f() {
+    static const auto t = linspace<float, eval_vector<float>>(curve_f().t_min(), curve_f().t_max(), big);
     return t;
 }
 
@@ -367,26 +385,30 @@ void eval_sorted_float_crspline(benchmark::State& state) {
 /// 3 permutes, 3 stores), else 16-byte SSE2 ones (4 t, 3 shuffles, 3
 /// stores; on the EPYC these reach less than the kernel). What the kernel
 /// can reach at best; reported, not a target (read_stream_floor.hpp).
+void read_write_float_pass(const eval_vector<float>& t, eval_vector<vec<3, float>>& out) {
+    float* p = out.data()->data();
+    const std::size_t n = t.size();
+    std::size_t k = 0;
+#if defined(__SSE2__)
+#if CRSPLINE_X86_DISPATCH
+    if (crspline::detail::avx512_enabled()) k = crspline_bench::read_write_float_512(t.data(), p, k, n);
+#endif
+    for (; k < n && reinterpret_cast<std::uintptr_t>(p + 3 * k) % 16 != 0; ++k) p[3 * k] = p[3 * k + 1] = p[3 * k + 2] = t[k];
+    for (; k + 4 <= n; k += 4) {
+        const __m128 a = _mm_loadu_ps(t.data() + k);               // t0 t1 t2 t3
+        _mm_stream_ps(p + 3 * k, _mm_shuffle_ps(a, a, 0x40));      // t0 t0 t0 t1
+        _mm_stream_ps(p + 3 * k + 4, _mm_shuffle_ps(a, a, 0xA5));  // t1 t1 t2 t2
+        _mm_stream_ps(p + 3 * k + 8, _mm_shuffle_ps(a, a, 0xFE));  // t2 t3 t3 t3
+    }
+    _mm_sfence();
+#endif
+    for (; k < n; ++k) p[3 * k] = p[3 * k + 1] = p[3 * k + 2] = t[k];
+}
 void store_floor_float_read_write(benchmark::State& state) {
     auto& out = output<vec<3, float>>(big);
     const auto& t = t_sorted_f();
     for (auto _ : state) {
-        float* p = out.data()->data();
-        std::size_t k = 0;
-#if defined(__SSE2__)
-#if CRSPLINE_X86_DISPATCH
-        if (crspline::detail::avx512_enabled()) k = crspline_bench::read_write_float_512(t.data(), p, k, big);
-#endif
-        for (; k < big && reinterpret_cast<std::uintptr_t>(p + 3 * k) % 16 != 0; ++k) p[3 * k] = p[3 * k + 1] = p[3 * k + 2] = t[k];
-        for (; k + 4 <= big; k += 4) {
-            const __m128 a = _mm_loadu_ps(t.data() + k);                       // t0 t1 t2 t3
-            _mm_stream_ps(p + 3 * k, _mm_shuffle_ps(a, a, 0x40));              // t0 t0 t0 t1
-            _mm_stream_ps(p + 3 * k + 4, _mm_shuffle_ps(a, a, 0xA5));          // t1 t1 t2 t2
-            _mm_stream_ps(p + 3 * k + 8, _mm_shuffle_ps(a, a, 0xFE));          // t2 t3 t3 t3
-        }
-        _mm_sfence();
-#endif
-        for (; k < big; ++k) p[3 * k] = p[3 * k + 1] = p[3 * k + 2] = t[k];
+        read_write_float_pass(t, out);
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
@@ -409,6 +431,99 @@ void eval_sorted_float_boost(benchmark::State& state) {
         benchmark::ClobberMemory();
     }
     state.SetItemsProcessed(std::int64_t(state.iterations() * big));
+}
+
+// ---------------------------------------------------------------------------
+// Issue 30: the memory-bound targets measured interleaved. A kernel and its
+// floors, each one whole pass over the 10^7 points, are timed in turn
+// inside every iteration (thread CPU time, as crspline_float_probe), the
+// order reversed every other iteration, on the same buffers as the
+// separate cases (the shared output and t, 2 MiB pages). Each ratio is
+// taken pass by pass, the floor's time over the kernel's beside it, then
+// the median over the repetition's pairs: the machine's memory bandwidth
+// moves by up to 40% from one minute to the next, and the separate cases,
+// seconds to minutes apart, measured that as much as the kernel. These
+// ratios are the targets' (bench/report.py); the separate cases stay for
+// the time per point. Counters: vs_<floor>, the floor's time over the
+// kernel's (the kernel's share of the floor's throughput), median of the
+// pairs; vs_<floor>_min, the fastest floor pass over the fastest kernel
+// pass; <pass>_ms, the median pass; huge_pages, the share of the output
+// in 2 MiB pages.
+
+double thread_cpu_ms() {
+#if defined(CLOCK_THREAD_CPUTIME_ID)
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) * 1e-6;
+#else
+    return 1e3 * double(std::clock()) / CLOCKS_PER_SEC;
+#endif
+}
+
+struct pass {
+    std::string name;
+    std::function<void()> run;
+};
+
+double median_of(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t h = v.size() / 2;
+    return v.size() % 2 ? v[h] : 0.5 * (v[h - 1] + v[h]);
+}
+
+/// passes: the floors, then the kernel (last).
+void interleaved(benchmark::State& state, const std::vector<pass>& passes, const void* output) {
+    const std::size_t m = passes.size(), kernel = m - 1;
+    std::vector<std::vector<double>> ms(m);
+    bool reverse = false;
+    for (auto _ : state) {
+        for (std::size_t j = 0; j < m; ++j) {
+            const std::size_t i = reverse ? m - 1 - j : j;
+            const double a = thread_cpu_ms();
+            passes[i].run();
+            benchmark::ClobberMemory();
+            ms[i].push_back(thread_cpu_ms() - a);
+        }
+        reverse = !reverse;
+    }
+    for (std::size_t i = 0; i < m; ++i) {
+        state.counters[passes[i].name + "_ms"] = median_of(ms[i]);
+        if (i == kernel) continue;
+        std::vector<double> pairs(ms[i].size());
+        for (std::size_t r = 0; r < pairs.size(); ++r) pairs[r] = ms[i][r] / ms[kernel][r];
+        state.counters["vs_" + passes[i].name] = median_of(pairs);
+        state.counters["vs_" + passes[i].name + "_min"] = *std::min_element(ms[i].begin(), ms[i].end()) /
+                                                           *std::min_element(ms[kernel].begin(), ms[kernel].end());
+    }
+    state.counters["huge_pages"] = crspline_bench::huge_page_share(output);
+    state.SetItemsProcessed(std::int64_t(state.iterations() * big));
+}
+
+/// eval_sorted against store_floor/memset (the target's floor), the plain
+/// store loop (store_floor) and read-and-stream (store_floor/read_write).
+void eval_sorted_interleaved(benchmark::State& state) {
+    const auto& c = curve();
+    const auto& t = t_sorted();
+    auto& out = output<v3>(big);
+    interleaved(state,
+                {{"memset", [&] { memset_pass(out, 0x3f); }},
+                 {"store_floor", [&] { fill_pass(out); }},
+                 {"read_write", [&] { read_write_pass(t, out); }},
+                 {"kernel", [&] { c.evaluate(std::span<const double>(t), std::span<v3>(out), 0); }}},
+                out.data());
+}
+
+/// eval_sorted_float against store_floor_float (memset, the target's
+/// floor) and store_floor_float/read_write.
+void eval_sorted_float_interleaved(benchmark::State& state) {
+    const auto& c = curve_f();
+    const auto& t = t_sorted_f();
+    auto& out = output<vec<3, float>>(big);
+    interleaved(state,
+                {{"memset", [&] { memset_pass(out, 0x3f); }},
+                 {"read_write", [&] { read_write_float_pass(t, out); }},
+                 {"kernel", [&] { c.evaluate(std::span<const float>(t), std::span<vec<3, float>>(out), 0); }}},
+                out.data());
 }
 
 // ---------------------------------------------------------------------------
@@ -784,6 +899,7 @@ BENCHMARK(store_floor_read_write)->Name("store_floor/read_write")->Unit(benchmar
 BENCHMARK(store_floor_fresh)->Name("store_floor/fresh")->Unit(benchmark::kMillisecond);
 BENCHMARK(eval_sorted_crspline)->Name("eval_sorted/crspline")->Unit(benchmark::kMillisecond);
 BENCHMARK(eval_sorted_boost)->Name("eval_sorted/boost")->Unit(benchmark::kMillisecond);
+BENCHMARK(eval_sorted_interleaved)->Name("eval_sorted/interleaved")->Unit(benchmark::kMillisecond);
 BENCHMARK(eval_random_crspline)->Name("eval_random/crspline")->Unit(benchmark::kMillisecond);
 BENCHMARK(eval_random_boost)->Name("eval_random/boost")->Unit(benchmark::kMillisecond);
 BENCHMARK(deriv_sorted_crspline)->Name("deriv_sorted/crspline")->Unit(benchmark::kMillisecond);
@@ -792,6 +908,7 @@ BENCHMARK(store_floor_float<float>)->Name("store_floor_float")->Unit(benchmark::
 BENCHMARK(store_floor_float_read_write)->Name("store_floor_float/read_write")->Unit(benchmark::kMillisecond);
 BENCHMARK(eval_sorted_float_crspline)->Name("eval_sorted_float/crspline")->Unit(benchmark::kMillisecond);
 BENCHMARK(eval_sorted_float_boost)->Name("eval_sorted_float/boost")->Unit(benchmark::kMillisecond);
+BENCHMARK(eval_sorted_float_interleaved)->Name("eval_sorted_float/interleaved")->Unit(benchmark::kMillisecond);
 BENCHMARK(construct_crspline)->Name("construct/crspline")->Arg(1000)->Arg(1'000'000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(construct_boost)->Name("construct/boost")->Arg(1000)->Arg(1'000'000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(uniform_segment_crspline)->Name("uniform_segment/crspline")->Unit(benchmark::kMillisecond);
@@ -856,6 +973,16 @@ int main(int argc, char** argv) {
             return std::fclose(f) == 0 ? 0 : 1;
         }
     }
+    // --pages=4k: the evaluation cases' buffers in 4 KiB pages instead of
+    // 2 MiB ones (bench/memory_policy.hpp); taken out before Google
+    // Benchmark reads the arguments.
+    for (int i = 1; i < argc; ++i)
+        if (std::string_view(argv[i]) == "--pages=4k") {
+            crspline_bench::eval_huge_pages() = false;
+            for (int j = i; j + 1 < argc; ++j) argv[j] = argv[j + 1];
+            argv[--argc] = nullptr;
+            --i;
+        }
     crspline_bench::fresh_memory();
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
@@ -863,6 +990,7 @@ int main(int argc, char** argv) {
     // number means little without them.
     benchmark::AddCustomContext("cpu_model", crspline_bench::cpu_model());
     benchmark::AddCustomContext("kernels", crspline_bench::kernels());
+    benchmark::AddCustomContext("eval_pages", crspline_bench::eval_huge_pages() ? "2 MiB (MADV_HUGEPAGE)" : "4 KiB (MADV_NOHUGEPAGE)");
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     return 0;
