@@ -5,7 +5,12 @@
 // included; the minimum of single interleaved timings is the measure that
 // stays comparable (BENCHMARKS.md, issue 30, float evaluation).
 //
-//   crspline_float_probe [repetitions=30]
+//   crspline_float_probe [repetitions=30] [--pages=4k]
+//
+// Buffers (t and the output) as crspline_bench's: 2 MiB pages, or 4 KiB
+// ones with --pages=4k (bench/memory_policy.hpp). Each ratio is printed
+// three ways: the fastest floor over the fastest case, the medians, and
+// the median of the pairs (each repetition's floor over its case).
 //
 // Cases, 10^7 points on the benchmark curve (1000 control points, float):
 // memset of the output (store_floor_float, the target's floor); reading t
@@ -15,6 +20,7 @@
 // the 8-lane AVX2 walk where the CPU has AVX-512F too.
 #include <crspline/catmull_rom.hpp>
 
+#include "memory_policy.hpp"
 #include "read_stream_floor.hpp"
 #include "walk.hpp"
 
@@ -25,6 +31,7 @@
 #include <cstring>
 #include <ctime>
 #include <functional>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -47,13 +54,17 @@ void read_stream_512(const float* t, float* p, std::size_t n) {
 
 int main(int argc, char** argv) {
     using F3 = crspline::vec<3, float>;
-    const int reps = argc > 1 ? std::max(1, std::atoi(argv[1])) : 30;
+    int reps = 30;
+    for (int i = 1; i < argc; ++i) {
+        if (std::string_view(argv[i]) == "--pages=4k") crspline_bench::eval_huge_pages() = false;
+        else reps = std::max(1, std::atoi(argv[i]));
+    }
     constexpr std::size_t n = 10'000'000;
     const crspline::catmull_rom<3, float> c(crspline_bench::walk<float>(1000));
-    std::vector<float> t(n);
+    crspline_bench::eval_vector<float> t(n);
     for (std::size_t k = 0; k < n; ++k) t[k] = std::min(c.t_max(), c.t_min() + (c.t_max() - c.t_min()) * (float(k) / float(n - 1)));
     t.back() = c.t_max();
-    std::vector<F3> out(n, F3{});
+    crspline_bench::eval_vector<F3> out(n, F3{});
     struct timed {
         const char* name;
         std::function<void()> run;
@@ -85,10 +96,17 @@ int main(int argc, char** argv) {
         std::sort(v.begin(), v.end());
         return v[v.size() / 2];
     };
-    const double floor_min = *std::min_element(cases[0].ms.begin(), cases[0].ms.end()), floor_median = median(cases[0].ms);
-    std::printf("%d repetitions, CPU time, 10^7 points; ratios: memset's time / the case's (throughput of the floor)\n", reps);
+    const auto& floor = cases[0].ms;
+    const double floor_min = *std::min_element(floor.begin(), floor.end()), floor_median = median(floor);
+    std::printf("%d repetitions, CPU time, 10^7 points, %s pages (t %.0f%%, output %.0f%% in huge pages); ratios: memset's "
+                "time / the case's (throughput of the floor)\n",
+                reps, crspline_bench::eval_huge_pages() ? "2 MiB" : "4 KiB", 100 * crspline_bench::huge_page_share(t.data()),
+                100 * crspline_bench::huge_page_share(out.data()));
     for (const auto& x : cases) {
         const double lo = *std::min_element(x.ms.begin(), x.ms.end()), mid = median(x.ms);
-        std::printf("%-30s min %7.3f ms (%.3f)   median %7.3f ms (%.3f)\n", x.name, lo, floor_min / lo, mid, floor_median / mid);
+        std::vector<double> pairs(x.ms.size());
+        for (std::size_t r = 0; r < pairs.size(); ++r) pairs[r] = floor[r] / x.ms[r];
+        std::printf("%-30s min %7.3f ms (%.3f)   median %7.3f ms (%.3f)   pairs (%.3f)\n", x.name, lo, floor_min / lo, mid,
+                    floor_median / mid, median(pairs));
     }
 }

@@ -185,6 +185,8 @@ def main():
       f"caches {', '.join(str(c['size'] // 1024) + ' KiB L' + str(c['level']) for c in ctx.get('caches', []) if c['type'] != 'Instruction')}; "
       f"load average {', '.join(f'{x:.1f}' for x in ctx.get('load_avg', []))}; {ctx.get('date', '')}")
     p(f"CPU: {ctx.get('cpu_model', 'not recorded')}. Kernels: {ctx.get('kernels', 'not recorded')}.")
+    if ctx.get("eval_pages"):
+        p(f"Evaluation buffers (t and outputs of the memory-bound cases): {ctx['eval_pages']} pages.")
     reps = next((b.get("repetitions") for b in rows.values() if b.get("repetitions")), 1)
     p(f"Medians of {reps} repetitions, CPU time per item.")
     p("")
@@ -195,6 +197,9 @@ def main():
            "certify": "segment", "find_intersections": "segment"}
     per.update({"dimension/construct": "control point", "dimension/arc_length": "segment",
                 "dimension/analyze": "segment", "dimension/intersections": "segment"})
+    # eval_sorted/interleaved, eval_sorted_float/interleaved: one iteration
+    # is the kernel and each of its floors over 10^7 points, in turn.
+    per.update({"eval_sorted/interleaved": "point, all passes", "eval_sorted_float/interleaved": "point, all passes"})
     for name, b in rows.items():
         t = ns(name)
         if t is None:
@@ -232,15 +237,39 @@ def main():
             return
         p(f"| {label} | {value} | {goal} | {'met' if ok else 'MISSED' + (' ' + how if how else '')} |")
 
+    # The memory-bound targets (issue 30): from the interleaved cases, the
+    # floor's time over the kernel's pass by pass, median of the pairs (and
+    # the fastest pass of each beside it); the separate cases' medians,
+    # seconds to minutes apart, only as information.
+    def interleaved_target(case, label, floor):
+        r, r_min = ctr(case, f"vs_{floor}"), ctr(case, f"vs_{floor}_min")
+        if r is None:
+            return False
+        target(f"{label} throughput (interleaved, paired)", f"{r:.2f} (fastest passes {r_min:.2f})", ">= 0.8",
+               r >= 0.8, f"by {0.8 / r:.2f}x")
+        return True
+
+    def interleaved_info(case, label, floor):
+        r, r_min = ctr(case, f"vs_{floor}"), ctr(case, f"vs_{floor}_min")
+        if r is not None:
+            p(f"| (info) {label} throughput (interleaved, paired) | {r:.2f} (fastest passes {r_min:.2f}) | (info) | |")
+
     es, fl, ms = ns("eval_sorted/crspline"), ns("store_floor"), ns("store_floor/memset")
-    if es and ms:
-        r = ms / es
-        target("eval_sorted / store_floor/memset throughput", f"{r:.2f}", ">= 0.8", r >= 0.8, f"by {0.8 / r:.2f}x")
-    if es and fl:
-        r = fl / es
-        target("eval_sorted / store_floor (plain loop) throughput", f"{r:.2f}", ">= 0.8", r >= 0.8, f"by {0.8 / r:.2f}x")
+    il = "eval_sorted/interleaved"
+    if not interleaved_target(il, "eval_sorted / store_floor/memset", "memset"):
+        if es and ms:
+            r = ms / es
+            target("eval_sorted / store_floor/memset throughput", f"{r:.2f}", ">= 0.8", r >= 0.8, f"by {0.8 / r:.2f}x")
+    elif es and ms:
+        p(f"| (info) eval_sorted / store_floor/memset, separate cases | {ms / es:.2f} | (info) | |")
+    if not interleaved_target(il, "eval_sorted / store_floor (plain loop)", "store_floor"):
+        if es and fl:
+            r = fl / es
+            target("eval_sorted / store_floor (plain loop) throughput", f"{r:.2f}", ">= 0.8", r >= 0.8, f"by {0.8 / r:.2f}x")
     rw = ns("store_floor/read_write")
-    if es and rw:
+    if ctr(il, "vs_read_write") is not None:
+        interleaved_info(il, "eval_sorted / store_floor/read_write (reads t too)", "read_write")
+    elif es and rw:
         p(f"| (info) eval_sorted / store_floor/read_write throughput (reads t too) | {rw / es:.2f} | (info) | |")
     eb = ns("eval_sorted/boost")
     if es and eb:
@@ -279,12 +308,22 @@ def main():
             target(f"tessellate (walk 20k, tol {tol}) vertices / asymptotic optimum", f"{oo:.3f}", "<= 1.2",
                    oo <= 1.2, f"by {oo / 1.2:.3f}x")
     ef, ff, efb = ns("eval_sorted_float/crspline"), ns("store_floor_float"), ns("eval_sorted_float/boost")
-    if ef and ff:
-        target("eval_sorted_float / store_floor_float throughput", f"{ff / ef:.2f}", ">= 0.8", ff / ef >= 0.8,
-               f"by {0.8 / (ff / ef):.2f}x")
+    ilf = "eval_sorted_float/interleaved"
+    if not interleaved_target(ilf, "eval_sorted_float / store_floor_float", "memset"):
+        if ef and ff:
+            target("eval_sorted_float / store_floor_float throughput", f"{ff / ef:.2f}", ">= 0.8", ff / ef >= 0.8,
+                   f"by {0.8 / (ff / ef):.2f}x")
+    elif ef and ff:
+        p(f"| (info) eval_sorted_float / store_floor_float, separate cases | {ff / ef:.2f} | (info) | |")
     rwf = ns("store_floor_float/read_write")
-    if ef and rwf:
+    if ctr(ilf, "vs_read_write") is not None:
+        interleaved_info(ilf, "eval_sorted_float / store_floor_float/read_write (reads t too)", "read_write")
+    elif ef and rwf:
         p(f"| (info) eval_sorted_float / store_floor_float/read_write throughput (reads t too) | {rwf / ef:.2f} | (info) | |")
+    for case in (il, ilf):
+        hp = ctr(case, "huge_pages")
+        if hp is not None and hp < 0.9 and "2 MiB" in ctx.get("eval_pages", ""):
+            p(f"| (info) {case}: output in 2 MiB pages | {hp:.0%} (THP refused: the ratios are 4 KiB-page ones) | (info) | |")
     if ef and efb:
         p(f"| (float) speed-up over Boost | {efb / ef:.1f}x | (info) | |")
     us, ug = ns("uniform_segment/crspline"), ns("uniform_segment/glm")
