@@ -63,6 +63,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <span>
@@ -286,8 +287,11 @@ struct arc_work {
     std::vector<p2> pts;
     std::vector<std::uint8_t> level;  // tension level per vertex
     bool closed = false;
-    std::optional<catmull_rom<2>> base;   // the untensioned curve, once tension is used
-    std::optional<catmull_rom<2>> curve;  // the one used (the untensioned one until then)
+    // The curves live on the heap only while the arc's component is being
+    // proved: an arc holds two pointers, not two curves (at 10^6 arcs the
+    // inline optionals were 0.8 GB of mostly empty room).
+    std::unique_ptr<catmull_rom<2>> base;   // the untensioned curve, once tension is used
+    std::unique_ptr<catmull_rom<2>> curve;  // the one used (the untensioned one until then)
     polyline<2> line;                     // knot vertices exact input points; t given back (vseg, vu)
     std::vector<std::uint32_t> vseg;      // segment of each polyline vertex (the piece it starts)
     std::vector<double> vu;               // local u of each vertex in that segment (1 at a segment's end)
@@ -324,12 +328,12 @@ inline void build_arc_curve(arc_work& a, double alpha) {
     bool plain = true;
     for (auto l : a.level) plain = plain && l == 0;
     if (plain) {
-        if (!a.curve) a.curve.emplace(untensioned());
+        if (!a.curve) a.curve = std::make_unique<curve_t>(untensioned());
         return;
     }
     if (!a.base) {
-        if (a.curve) a.base.emplace(std::move(*a.curve));
-        else a.base.emplace(untensioned());
+        if (a.curve) a.base = std::move(a.curve);
+        else a.base = std::make_unique<curve_t>(untensioned());
     }
     const std::size_t n = a.pts.size();
     std::vector<p2> out(n), in(n);
@@ -339,8 +343,9 @@ inline void build_arc_curve(arc_work& a, double alpha) {
         in[a.next(s)] = (1 - tension_levels[a.level[a.next(s)]]) * tg[1];
     }
     const auto g = a.base->grid();
-    a.curve = curve_t::hermite(std::span<const p2>(a.pts), std::span<const p2>(out), std::span<const p2>(in),
-                               std::span<const double>(g.data(), g.size()), a.closed);
+    a.curve = std::make_unique<curve_t>(curve_t::hermite(std::span<const p2>(a.pts), std::span<const p2>(out),
+                                                         std::span<const p2>(in),
+                                                         std::span<const double>(g.data(), g.size()), a.closed));
 }
 
 // Tessellates the arc's curve; the vertices at knots become the input
@@ -892,8 +897,10 @@ struct proof {
 
     // The bounds of the arc's first curve, the union of its segments' hull
     // boxes as prepare() finds them: arc_pairs() needs every arc's before
-    // any arc is proved. The curve is kept (prepare() takes it as it is);
-    // the hulls are not.
+    // any arc is proved. Neither the curve nor the hulls are kept: prepare()
+    // builds the same curve again when the arc's component comes, while it
+    // is in cache (holding every arc's curve until then was most of the
+    // memory at 10^6 arcs, all of it fresh pages, read back from DRAM).
     void first_bounds(std::uint32_t i) {
         arc_work& a = arcs[i];
         build_arc_curve(a, opt.alpha);
@@ -904,6 +911,8 @@ struct proof {
             if (s == 0) a.bounds = bx;
             a.bounds.expand(bx);
         }
+        a.curve.reset();
+        a.base.reset();
     }
 
     // An arc whose component is proved: its length taken; its curve (unless
@@ -925,6 +934,11 @@ struct proof {
             std::vector<std::uint32_t>().swap(a.vseg);
             std::vector<double>().swap(a.vu);
             a.has_line = false;  // a.pieces keeps the count
+        } else if (!keep_parameters) {
+            // The output needs each vertex's segment and u only to
+            // interpolate extra values.
+            std::vector<std::uint32_t>().swap(a.vseg);
+            std::vector<double>().swap(a.vu);
         }
     }
 
@@ -1069,6 +1083,7 @@ struct proof {
         }
     }
 
+    bool keep_parameters = true;  // false: finish() releases vseg and vu of the polylines it keeps
     std::vector<seg_ref> scratch;
     std::vector<std::pair<std::uint32_t, std::size_t>> jumps;   // (arc, segment) to take to the input
     std::vector<proof_record> self;                              // per arc, with itself
@@ -1169,7 +1184,7 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
         clean.push_back(std::move(c));
     }
     // 2. Arcs.
-    const topology topo = build_topology(clean, opt.preserve_topology);
+    topology topo = build_topology(clean, opt.preserve_topology);
     std::vector<clean_part>().swap(clean);  // the topology has what is needed of it
     std::vector<detail::arc_work> arcs(topo.arcs.size());
     for (std::size_t i = 0; i < arcs.size(); ++i) {
@@ -1186,9 +1201,11 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
     double scale = 0;
     for (const auto& p : topo.points) scale = std::max({scale, std::abs(p[0]), std::abs(p[1])});
     const double slack = 64 * std::numeric_limits<double>::epsilon() * std::max(scale, tol);
+    std::vector<std::array<double, 2>>().swap(topo.points);  // the arcs have their points
 
     // 3. Rounds: build, tessellate, prove; raise tension where not proved.
     detail::proof pr{arcs, opt, slack};
+    pr.keep_parameters = E > 0;
     pr.run();
     res.stats.rounds = pr.rounds;
     res.stats.pairs_checked = pr.pairs;
@@ -1273,11 +1290,13 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
             for (std::size_t j = 0; j < m; ++j) {
                 const std::size_t k = reversed ? m - 1 - j : j;
                 if (!first_arc && j == 0) continue;  // the junction, already out
-                const std::size_t s = a.vseg[k];
-                const double u = a.vu[k];
-                for (std::size_t c = 0; c < E; ++c) {
-                    const double e0 = in.extra[src[s] * E + c], e1 = in.extra[src[a.next(s)] * E + c];
-                    ex[c] = u == 0 ? e0 : u == 1 ? e1 : e0 + u * (e1 - e0);
+                if (E > 0) {
+                    const std::size_t s = a.vseg[k];
+                    const double u = a.vu[k];
+                    for (std::size_t c = 0; c < E; ++c) {
+                        const double e0 = in.extra[src[s] * E + c], e1 = in.extra[src[a.next(s)] * E + c];
+                        ex[c] = u == 0 ? e0 : u == 1 ? e1 : e0 + u * (e1 - e0);
+                    }
                 }
                 emit(a.line.points[k], ex.data());
             }
@@ -1301,21 +1320,28 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
         out.part_offsets.push_back(out.vertex_count());
     }
     // 5. Verdicts.
-    std::vector<std::vector<std::size_t>> junction_features(topo.points.size());
+    // The features at each open arc's ends, as (vertex, feature) pairs,
+    // sorted and unique (one flat array: a list per vertex of the layer was
+    // a fresh, mostly empty 24 bytes per vertex).
+    std::vector<std::pair<std::size_t, std::size_t>> junction_features;
     for (const auto& t : topo.arcs)
         if (!t.closed)
             for (std::size_t v : {t.vertices.front(), t.vertices.back()})
-                for (std::size_t f : t.features) junction_features[v].push_back(f);
-    for (auto& jf : junction_features) {
-        std::sort(jf.begin(), jf.end());
-        jf.erase(std::unique(jf.begin(), jf.end()), jf.end());
-    }
+                for (std::size_t f : t.features) junction_features.push_back({v, f});
+    std::sort(junction_features.begin(), junction_features.end());
+    junction_features.erase(std::unique(junction_features.begin(), junction_features.end()), junction_features.end());
+    auto features_at = [&](std::size_t v) {  // distinct features with an arc ending at v
+        const auto lo = std::lower_bound(junction_features.begin(), junction_features.end(), std::pair<std::size_t, std::size_t>{v, 0});
+        auto hi = lo;
+        while (hi != junction_features.end() && hi->first == v) ++hi;
+        return std::size_t(hi - lo);
+    };
     for (std::size_t i = 0; i < topo.arcs.size(); ++i) {
         const auto& t = topo.arcs[i];
         bool touches = t.features.size() > 1;
         if (!t.closed)
             for (std::size_t v : {t.vertices.front(), t.vertices.back()})
-                touches = touches || junction_features[v].size() > 1;
+                touches = touches || features_at(v) > 1;
         for (std::size_t f : t.features) {
             auto& rep = res.features[f];
             if (arc_crossing[i] == 2) rep.verdict = verdict::crosses;

@@ -17,7 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <unordered_map>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -84,93 +84,139 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
     topology topo;
     std::size_t total = 0;
     for (const auto& part : parts) total += part.points.size();
-    // Vertex ids by exact coordinates: an open-addressing table of ids (a
-    // power of two at least twice the vertices, probed linearly), so no
-    // allocation per vertex; ids in order of first occurrence.
-    std::vector<detail::point_key> keys;
-    std::vector<std::size_t> table;
-    std::size_t mask = 0;
-    int bits = 4;
+    topo.points.reserve(share ? 0 : total);
+    // Every part's vertex ids, in one array (part q's from ids_at[q]).
+    std::vector<std::size_t> ids(total), ids_at(parts.size() + 1, 0);
+    for (std::size_t q = 0; q < parts.size(); ++q) ids_at[q + 1] = ids_at[q] + parts[q].points.size();
     if (share) {
+        // Vertex ids by exact coordinates, in order of first occurrence: an
+        // open-addressing table (a power of two at least twice the
+        // vertices, probed linearly) whose slots hold an id in their low
+        // 40 bits (10^12 vertices: 16 TB of coordinates) and 24 more bits
+        // of the key's hash above, so a probe
+        // reads the point of a slot's id only when those bits agree (most
+        // probes at a full slot are other points: they cost no second
+        // random read). The slot of the vertex a few ahead is prefetched:
+        // at 10^7 vertices and more the table is far larger than the caches.
+        constexpr std::uint64_t empty = ~std::uint64_t(0), id_mask = (std::uint64_t(1) << 40) - 1;
         std::size_t cap = 16;
+        int bits = 4;
         while (cap < 2 * total) cap *= 2, ++bits;
-        table.assign(cap, SIZE_MAX);
-        mask = cap - 1;
-        keys.reserve(total);
+        std::vector<std::uint64_t> table(cap, empty);
+        const std::size_t mask = cap - 1;
         topo.points.reserve(total);
-    }
-    detail::point_key_hash hasher;
-    auto id_of = [&](const std::array<double, 2>& p) {
-        const detail::point_key k = detail::key_of(p[0], p[1]);
-        // The hash's top bits (Fibonacci hashing): round coordinates have
-        // low mantissa bits that are all zero.
-        const std::uint64_t mixed = std::uint64_t(hasher(k)) * 0x9E3779B97F4A7C15ull;
-        for (std::size_t h = std::size_t(mixed >> (64 - bits)) & mask;; h = (h + 1) & mask) {
-            const std::size_t id = table[h];
-            if (id == SIZE_MAX) {
-                table[h] = topo.points.size();
-                keys.push_back(k);
-                topo.points.push_back(p);
-                return table[h];
+        const detail::point_key_hash hasher;
+        auto mixed_of = [&](const std::array<double, 2>& p) {
+            // The hash's top bits (Fibonacci hashing): round coordinates
+            // have low mantissa bits that are all zero.
+            return std::uint64_t(hasher(detail::key_of(p[0], p[1]))) * 0x9E3779B97F4A7C15ull;
+        };
+        auto slot_of = [&](std::uint64_t mixed) { return std::size_t(mixed >> (64 - bits)) & mask; };
+        auto tag_of = [](std::uint64_t mixed) { return (mixed & 0xFFFFFFull) << 40; };
+        constexpr std::size_t ahead = 8;
+        std::size_t v = 0;  // running index over every part's vertices
+        for (std::size_t q = 0; q < parts.size(); ++q) {
+            const auto& pts = parts[q].points;
+            const std::size_t n = pts.size();
+            for (std::size_t i = 0; i < n; ++i, ++v) {
+#if defined(__GNUC__) || defined(__clang__)
+                if (i + ahead < n) __builtin_prefetch(&table[slot_of(mixed_of(pts[i + ahead]))]);
+#endif
+                const std::array<double, 2>& p = pts[i];
+                const detail::point_key k = detail::key_of(p[0], p[1]);
+                const std::uint64_t mixed = mixed_of(p), tag = tag_of(mixed);
+                for (std::size_t h = slot_of(mixed);; h = (h + 1) & mask) {
+                    const std::uint64_t e = table[h];
+                    if (e == empty) {
+                        const std::size_t id = topo.points.size();
+                        table[h] = tag | std::uint64_t(id);
+                        topo.points.push_back(p);
+                        ids[v] = id;
+                        break;
+                    }
+                    if ((e & ~id_mask) == tag) {
+                        const std::size_t id = std::size_t(e & id_mask);
+                        const auto& o = topo.points[id];
+                        if (detail::key_of(o[0], o[1]) == k) {
+                            ids[v] = id;
+                            break;
+                        }
+                    }
+                }
             }
-            if (keys[id] == k) return id;
         }
-    };
-    std::vector<std::vector<std::size_t>> part_ids(parts.size());
-    for (std::size_t q = 0; q < parts.size(); ++q) {
-        part_ids[q].reserve(parts[q].points.size());
-        for (const auto& p : parts[q].points) {
-            if (share) {
-                part_ids[q].push_back(id_of(p));
-            } else {
-                part_ids[q].push_back(topo.points.size());
+        topo.points.shrink_to_fit();
+    } else {
+        for (std::size_t q = 0; q < parts.size(); ++q)
+            for (const auto& p : parts[q].points) {
+                ids[topo.points.size()] = topo.points.size();
                 topo.points.push_back(p);
             }
-        }
     }
     // Junctions: a vertex whose distinct neighbours are not exactly two, or
     // a line's end. Neighbours are few: a small sorted list per vertex.
     const std::size_t nv = topo.points.size();
     topo.junction.assign(nv, 0);
+    auto ends = [&](std::size_t q) {
+        if (!parts[q].ring) topo.junction[ids[ids_at[q]]] = topo.junction[ids[ids_at[q + 1] - 1]] = 1;
+    };
     if (share) {
-        std::vector<std::array<std::size_t, 3>> nb(nv, {SIZE_MAX, SIZE_MAX, SIZE_MAX});  // up to 3 kept: 3 means "more than 2"
-        auto link = [&](std::size_t a, std::size_t b) {
-            auto& s = nb[a];
-            for (std::size_t k = 0; k < 3; ++k) {
-                if (s[k] == b) return;
-                if (s[k] == SIZE_MAX) {
-                    s[k] = b;
-                    return;
+        // Up to 3 neighbours kept per vertex (3 means "more than 2"), as
+        // 32-bit ids where they fit (half the memory of size_t).
+        auto find_junctions = [&](auto id_type) {
+            using id_t = decltype(id_type);
+            constexpr id_t none = std::numeric_limits<id_t>::max();
+            std::vector<std::array<id_t, 3>> nb(nv, {none, none, none});
+            auto link = [&](std::size_t a, std::size_t b) {
+                auto& s = nb[a];
+                for (std::size_t k = 0; k < 3; ++k) {
+                    if (s[k] == id_t(b)) return;
+                    if (s[k] == none) {
+                        s[k] = id_t(b);
+                        return;
+                    }
                 }
+            };
+            for (std::size_t q = 0; q < parts.size(); ++q) {
+                const std::size_t* ids_q = ids.data() + ids_at[q];
+                const std::size_t n = ids_at[q + 1] - ids_at[q];
+                const std::size_t edges = parts[q].ring ? n : n - 1;
+                for (std::size_t i = 0; i < edges; ++i) {
+                    const std::size_t a = ids_q[i], b = ids_q[i + 1 == n ? 0 : i + 1];
+                    link(a, b);
+                    link(b, a);
+                }
+                ends(q);
             }
+            for (std::size_t x = 0; x < nv; ++x)
+                if (nb[x][2] != none || nb[x][1] == none) topo.junction[x] = 1;
         };
-        for (std::size_t q = 0; q < parts.size(); ++q) {
-            const auto& ids_q = part_ids[q];
-            const std::size_t n = ids_q.size();
-            const std::size_t edges = parts[q].ring ? n : n - 1;
-            for (std::size_t i = 0; i < edges; ++i) {
-                const std::size_t a = ids_q[i], b = ids_q[(i + 1) % n];
-                link(a, b);
-                link(b, a);
-            }
-            if (!parts[q].ring) topo.junction[ids_q.front()] = topo.junction[ids_q.back()] = 1;
-        }
-        for (std::size_t v = 0; v < nv; ++v)
-            if (nb[v][2] != SIZE_MAX || nb[v][1] == SIZE_MAX) topo.junction[v] = 1;
+        if (nv < std::numeric_limits<std::uint32_t>::max()) find_junctions(std::uint32_t{});
+        else find_junctions(std::size_t{});
     } else {
-        for (std::size_t q = 0; q < parts.size(); ++q)
-            if (!parts[q].ring) topo.junction[part_ids[q].front()] = topo.junction[part_ids[q].back()] = 1;
+        for (std::size_t q = 0; q < parts.size(); ++q) ends(q);
     }
     // Arcs, each vertex sequence once (in a canonical direction): found by
-    // a hash of the sequence, then compared. Without sharing every part's
+    // a hash of the sequence (an open-addressing table of (hash, arc),
+    // doubled when half full), then compared. Without sharing every part's
     // ids are its own, so no two sequences can be equal: no lookup.
-    std::unordered_multimap<std::uint64_t, std::size_t> seen;
+    std::size_t seen_cap = 64;
+    while (seen_cap < 2 * parts.size()) seen_cap *= 2;
+    std::vector<std::pair<std::uint64_t, std::size_t>> seen(share ? seen_cap : 0, {0, SIZE_MAX});
+    std::size_t seen_count = 0;
     auto hash_of = [](const std::vector<std::size_t>& seq, bool closed) {
         std::uint64_t h = closed ? 0x9E3779B97F4A7C15ull : 0x632BE59BD9B4E019ull;
         for (std::size_t v : seq) h = (h ^ std::uint64_t(v)) * 0x100000001B3ull + (h >> 29);
         return h;
     };
+    auto seen_slot = [&](std::uint64_t h) { return std::size_t((h * 0x9E3779B97F4A7C15ull) >> 32) & (seen.size() - 1); };
+    auto seen_insert = [&](std::uint64_t h, std::size_t index) {
+        std::size_t k = seen_slot(h);
+        while (seen[k].second != SIZE_MAX) k = (k + 1) & (seen.size() - 1);
+        seen[k] = {h, index};
+    };
     topo.parts.resize(parts.size());
+    topo.arcs.reserve(parts.size());
     auto add_arc = [&](std::size_t q, std::vector<std::size_t> seq, std::vector<std::size_t> src, bool closed) {
         bool reversed = false;
         if (closed) {
@@ -198,13 +244,22 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
         std::size_t index = topo.arcs.size();
         if (share) {
             const std::uint64_t h = hash_of(seq, closed);
-            auto [lo, hi] = seen.equal_range(h);
-            for (auto it = lo; it != hi; ++it)
-                if (topo.arcs[it->second].closed == closed && topo.arcs[it->second].vertices == seq) {
-                    index = it->second;
+            for (std::size_t k = seen_slot(h); seen[k].second != SIZE_MAX; k = (k + 1) & (seen.size() - 1))
+                if (seen[k].first == h && topo.arcs[seen[k].second].closed == closed &&
+                    topo.arcs[seen[k].second].vertices == seq) {
+                    index = seen[k].second;
                     break;
                 }
-            if (index == topo.arcs.size()) seen.emplace(h, index);
+            if (index == topo.arcs.size()) {
+                if (2 * (seen_count + 1) > seen.size()) {
+                    std::vector<std::pair<std::uint64_t, std::size_t>> old(2 * seen.size(), {0, SIZE_MAX});
+                    old.swap(seen);
+                    for (const auto& e : old)
+                        if (e.second != SIZE_MAX) seen_insert(e.first, e.second);
+                }
+                seen_insert(h, index);
+                ++seen_count;
+            }
         }
         if (index == topo.arcs.size()) topo.arcs.push_back({std::move(seq), closed, std::move(src), 0, {}});
         arc& a = topo.arcs[index];
@@ -213,10 +268,22 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
         if (pos == a.features.end() || *pos != parts[q].feature) a.features.insert(pos, parts[q].feature);
         topo.parts[q].arcs.push_back({index, reversed});
     };
-    for (std::size_t q = 0; q < parts.size(); ++q) {
-        const auto& s = part_ids[q];
+    // Vertices [i, j] (indices into the part, cyclically for a ring) as an arc.
+    auto cut = [&](std::size_t q, std::size_t i, std::size_t j) {
+        const std::size_t* s = ids.data() + ids_at[q];
         const auto& src = parts[q].source;
-        const std::size_t n = s.size();
+        // A ring with one junction is one arc from it round to it again.
+        const std::size_t n = ids_at[q + 1] - ids_at[q], m = (j + n - i) % n == 0 ? n + 1 : (j + n - i) % n + 1;
+        std::vector<std::size_t> seq(m), ssrc(m);
+        for (std::size_t k = 0, x = i; k < m; ++k, x = x + 1 == n ? 0 : x + 1) {
+            seq[k] = s[x];
+            ssrc[k] = src[x];
+        }
+        add_arc(q, std::move(seq), std::move(ssrc), false);
+    };
+    for (std::size_t q = 0; q < parts.size(); ++q) {
+        const std::size_t* s = ids.data() + ids_at[q];
+        const std::size_t n = ids_at[q + 1] - ids_at[q];
         if (parts[q].ring) {
             std::size_t first = n;
             for (std::size_t i = 0; i < n; ++i)
@@ -225,32 +292,25 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
                     break;
                 }
             if (first == n) {
-                add_arc(q, s, src, true);
+                add_arc(q, std::vector<std::size_t>(s, s + n), parts[q].source, true);
                 continue;
             }
             // From the first junction round to it again, cut at each junction.
-            std::vector<std::size_t> seq{s[first]}, ssrc{src[first]};
+            std::size_t from = first;
             for (std::size_t k = 1; k <= n; ++k) {
                 const std::size_t i = (first + k) % n;
-                seq.push_back(s[i]);
-                ssrc.push_back(src[i]);
                 if (topo.junction[s[i]]) {
-                    add_arc(q, std::move(seq), std::move(ssrc), false);
-                    seq = {s[i]};
-                    ssrc = {src[i]};
+                    cut(q, from, i);
+                    from = i;
                 }
             }
         } else {
-            std::vector<std::size_t> seq{s[0]}, ssrc{src[0]};
-            for (std::size_t i = 1; i < n; ++i) {
-                seq.push_back(s[i]);
-                ssrc.push_back(src[i]);
+            std::size_t from = 0;
+            for (std::size_t i = 1; i < n; ++i)
                 if (topo.junction[s[i]]) {
-                    add_arc(q, std::move(seq), std::move(ssrc), false);
-                    seq = {s[i]};
-                    ssrc = {src[i]};
+                    cut(q, from, i);
+                    from = i;
                 }
-            }
         }
     }
     return topo;
