@@ -949,7 +949,7 @@ std::string cpu_model() {
 std::string kernels() {
 #if CRSPLINE_X86_DISPATCH
     const bool avx2 = crspline::detail::avx2_enabled(), avx512 = crspline::detail::avx512_enabled();
-    return std::string("evaluation double: ") + (avx2 ? "AVX2" : "SSE2") +
+    return std::string("evaluation double: ") + (avx2 && avx512 ? "AVX-512 (sorted), AVX2 (unsorted)" : avx2 ? "AVX2" : "SSE2") +
            "; evaluation float: " + (avx2 && avx512 ? "AVX-512" : avx2 ? "AVX2" : "SSE2") +
            "; arc length rules and first pass: " + (avx2 ? "AVX2" : "SSE2") + "; construction: SSE2";
 #else

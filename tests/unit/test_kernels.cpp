@@ -266,6 +266,100 @@ TEST(Kernels, FloatWalkCrossesKnotsInsideSteps) {
     EXPECT_GT(checked, 4u * 16 * 2 * 200u);
 }
 
+TEST(Kernels, DoubleWalkCrossesKnotsInsideSteps) {
+    // The AVX-512 double walk (detail::sorted_walk3_512 on doubles, issue 30):
+    // 8-point steps that cross knots are computed on each segment they meet
+    // and blended. With about 4 points a segment, every knot hit exactly, a
+    // repeated parameter, a zero interval, all 8 output offsets mod 64 bytes
+    // (24-byte points shifted by 0..7), whole and short batches, and one
+    // batch large enough for non-temporal stores, each point must equal the
+    // AVX2 runs' and the portable kernel's bit for bit, and positions the
+    // single-point path; an adjacent pair swapped across a knot must fall
+    // back and still agree, a NaN must give the out_of_domain error.
+    CRSPLINE_SEEDED(s, 78);
+    std::mt19937_64 rng(s);
+    std::size_t checked = 0;
+    for (int rep = 0; rep < 5; ++rep) {
+        auto p = random_polygon<3, double>(rng, 40 + 30 * rep, 3.0);
+        if (rep >= 1) p[5] = p[4];
+        const catmull_rom<3, double> c(p, {.alpha = rep % 2 ? 0.5 : 1.0, .closed = rep == 3});
+        const auto g = c.grid();
+        std::vector<double> t(g.begin(), g.end());
+        std::uniform_real_distribution<double> U(c.t_min(), c.t_max());
+        // rep 4: 400,000 points (9.6 MB of output, above the 8 MiB
+        // streaming threshold: the non-temporal steps).
+        const std::size_t extra = rep == 4 ? 400000 : 4 * g.size();
+        for (std::size_t k = 0; k < extra; ++k) t.push_back(std::min(U(rng), c.t_max()));
+        t.push_back(t[t.size() / 2]);
+        std::sort(t.begin(), t.end());
+        // Paths: 0 the 8-lane walk (where the CPU has AVX-512F), 1 the AVX2
+        // runs, 2 the portable kernel; t from `from` on, out shifted.
+        auto run = [&](int path, std::size_t from, std::size_t shift, int order) {
+#if CRSPLINE_X86_DISPATCH
+            bool &avx2 = detail::avx2_enabled(), &wide = detail::avx512_enabled();
+            const bool had2 = avx2, had512 = wide;
+            wide = wide && path == 0;
+            avx2 = avx2 && path <= 1;
+#else
+            (void)path;
+#endif
+            std::vector<P3> buf(t.size() - from + shift);
+            c.evaluate(std::span<const double>(t).subspan(from), std::span<P3>(buf).subspan(shift), order);
+#if CRSPLINE_X86_DISPATCH
+            avx2 = had2, wide = had512;
+#endif
+            return std::vector<P3>(buf.begin() + std::ptrdiff_t(shift), buf.end());
+        };
+        for (std::size_t shift = 0; shift < 8; ++shift) {
+            if (rep == 4 && shift % 3 != 0) continue;  // the large batch at offsets 0, 24 and 48 bytes mod 64
+            for (int order : {0, 1}) {
+                for (std::size_t from : {std::size_t(0), t.size() - 1 - shift, t.size() - 9 - shift}) {
+                    const auto walk = run(0, from, shift, order), runs = run(1, from, shift, order),
+                               portable = run(2, from, shift, order);
+                    ASSERT_EQ(walk.size(), t.size() - from);
+                    for (std::size_t k = 0; k < walk.size(); ++k) {
+                        ASSERT_TRUE(same_bits(walk[k], portable[k]))
+                            << "rep " << rep << " shift " << shift << " order " << order << " from " << from << " k " << k;
+                        ASSERT_TRUE(same_bits(runs[k], portable[k]))
+                            << "runs: rep " << rep << " shift " << shift << " order " << order << " k " << k;
+                        if (order == 0) {
+                            ASSERT_TRUE(same_bits(walk[k], c.evaluate(t[from + k]))) << "rep " << rep << " k " << k;
+                        }
+                        ++checked;
+                    }
+                }
+            }
+        }
+        if (rep == 4) continue;
+        // Unsorted: a pair swapped across a knot, at the first knots and
+        // deep inside, in batches starting 0..9 points before it (the pair
+        // in every lane of the first step), at 4 output offsets; then a NaN.
+        std::vector<std::size_t> across;
+        for (std::size_t k = 0; k + 1 < t.size(); ++k)
+            if (t[k] < t[k + 1] && std::binary_search(g.begin(), g.end(), t[k + 1])) across.push_back(k);
+        ASSERT_GT(across.size(), 10u);
+        std::uniform_int_distribution<std::size_t> deep(across.size() / 2, across.size() - 1);
+        std::size_t k0 = 0;
+        for (const std::size_t a : {std::size_t(0), std::size_t(1), deep(rng)}) {
+            k0 = across[a];
+            std::swap(t[k0], t[k0 + 1]);
+            for (std::size_t j = 0; j <= std::min<std::size_t>(k0, 9); ++j)
+                for (std::size_t shift : {0u, 1u, 3u, 6u}) {
+                    const auto swapped = run(0, k0 - j, shift, 0);
+                    for (std::size_t k = 0; k < swapped.size(); ++k)
+                        ASSERT_TRUE(same_bits(swapped[k], c.evaluate(t[k0 - j + k])))
+                            << "from " << k0 - j << " shift " << shift << " k " << k << " (swapped at " << k0 << ")";
+                }
+            std::swap(t[k0], t[k0 + 1]);
+        }
+        t[k0] = std::numeric_limits<double>::quiet_NaN();
+        EXPECT_THROW(run(0, 0, 0, 0), out_of_domain) << "NaN at " << k0;
+    }
+    // 4 small curves x 8 offsets x 2 orders x 3 batches of at least 160
+    // points, and the large batch: 3 offsets x 2 orders x 400,000.
+    EXPECT_GT(checked, 4u * 8 * 2 * 160u + 3u * 2 * 400000u);
+}
+
 TEST(Kernels, NearlySortedInputFallsBackAndStillAgrees) {
     if (!detail::avx2_enabled()) GTEST_SKIP() << "no AVX2 kernels on this CPU or build: nothing to compare";
     // Sorted input with one adjacent pair swapped deep inside a run (the
@@ -374,6 +468,32 @@ TEST(Kernels, ArcLengthHardSegmentsAgreeBitForBit) {
     }
     // At least one piece per segment at each accuracy, six numbers each.
     EXPECT_GE(checked, 2u * 6u * segs.size());
+    // The batch (lanes of four) against one segment at a time (the rule
+    // choice in scalar, choose_rule), on either path: the same pieces, rules
+    // and bounds (both proofs of the rule, issue 30).
+    std::size_t single = 0;
+    for (double acc : {1e-12, 1e-7}) {
+        const auto [batch, one] = both_paths([&] {
+            std::vector<double> b, o;
+            detail::for_each_segment_length_piece(
+                segs.size(), [&](std::size_t i) { return segs[i]; }, acc,
+                [&](std::size_t, double u0, double u1, double len, const detail::rule_choice& rc) {
+                    b.insert(b.end(), {u0, u1, len, double(rc.n), rc.bound, rc.rho, rc.ratio});
+                });
+            for (const auto& seg : segs)
+                detail::for_each_length_piece(seg, 0.0, 1.0, acc, [&](double u0, double u1, double len,
+                                                                      const detail::rule_choice& rc) {
+                    o.insert(o.end(), {u0, u1, len, double(rc.n), rc.bound, rc.rho, rc.ratio});
+                });
+            return std::pair(b, o);
+        });
+        for (const auto& [b, o] : {batch, one}) {
+            ASSERT_EQ(b.size(), o.size()) << "acc " << acc;
+            for (std::size_t k = 0; k < b.size(); ++k, ++single)
+                ASSERT_EQ(std::memcmp(&b[k], &o[k], sizeof(double)), 0) << "acc " << acc << " value " << k;
+        }
+    }
+    EXPECT_GE(single, 2u * 2u * 7u * segs.size());
 }
 
 TEST(Kernels, MagnitudeReductionMatchesALoop) {

@@ -3,9 +3,9 @@
 // The library is built for the x86-64 baseline (SSE2: 2 doubles per
 // instruction). On a CPU with AVX2 the batch evaluation of 3-D points
 // (sorted t: double and float; unsorted t: double) runs these kernels
-// instead, 4 doubles or 8 floats per instruction (sorted floats: 16 where
-// the CPU has AVX-512F), selected once by a CPUID test (GCC/Clang function
-// targets: nothing needs -mavx2 or -march). They use no FMA, so each
+// instead, 4 doubles or 8 floats per instruction (sorted batches: 8
+// doubles or 16 floats where the CPU has AVX-512F), selected once by a
+// CPUID test (GCC/Clang function targets: nothing needs -mavx2 or -march). They use no FMA, so each
 // result goes through the same roundings, in the same order, as the
 // portable code: the same bits on every CPU.
 //
@@ -44,7 +44,7 @@ inline bool& avx2_enabled() noexcept {
     return on;
 }
 
-/// Whether the AVX-512 float kernel runs (sorted 3-D float evaluation): the
+/// Whether the AVX-512 kernels run (sorted 3-D float and double evaluation): the
 /// CPU's answer (AVX-512F with the OS saving its registers), once; writable
 /// so that tests can compare it with the AVX2 and portable kernels.
 inline bool& avx512_enabled() noexcept {
@@ -484,14 +484,166 @@ CRSPLINE_TARGET_AVX2 bool sorted_walk3_256(const Segments& segments, std::size_t
     return k == n || s.step(segments, seg, t + k, out + 3 * k, unsigned(n - k), false, false);
 }
 
+/// steps512 for 3-D doubles (issue 30): 8 points a step, 24 doubles in 3
+/// 512-bit registers laid out as in memory (lane j of register r holds
+/// coordinate (8 r + j) % 3 of point (8 r + j) / 3), the same operations
+/// as sorted_loop3 on doubles, so the same bits. On the AMD EPYC the 4-lane
+/// AVX2 runs took 6.3 ms of instructions per 10^7 points in cache, about
+/// the whole time memset takes to write the output: this walk halves the
+/// arithmetic and drops the runs (BENCHMARKS.md, issue 30).
+template <int Order>
+struct steps512d {
+    __m512d A0, A1, A2, B0, B1, B2, C0, C1, C2, O0, O1, O2, vt0, vih, vend;
+
+    CRSPLINE_TARGET_AVX512 static __m512d permute(__m512i idx, __m512d v) noexcept {
+        return _mm512_maskz_permutexvar_pd(0xFF, idx, v);
+    }
+    /// Lane j: v[(8 r + j) % 3], v one coordinate triple in lanes 0-2.
+    template <int r>
+    CRSPLINE_TARGET_AVX512 static __m512d pattern(__m512d v) noexcept {
+        constexpr long long f = 8 * r;
+        return permute(_mm512_setr_epi64(f % 3, (f + 1) % 3, (f + 2) % 3, (f + 3) % 3, (f + 4) % 3, (f + 5) % 3,
+                                         (f + 6) % 3, (f + 7) % 3),
+                       v);
+    }
+    /// Lane j: u[(8 r + j) / 3], the value of the point lane j is part of.
+    template <int r>
+    CRSPLINE_TARGET_AVX512 static __m512d spread(__m512d u) noexcept {
+        constexpr long long f = 8 * r;
+        return permute(_mm512_setr_epi64(f / 3, (f + 1) / 3, (f + 2) / 3, (f + 3) / 3, (f + 4) / 3, (f + 5) / 3,
+                                         (f + 6) / 3, (f + 7) / 3),
+                       u);
+    }
+    /// Lanes 0 .. min(q, 8) - 1.
+    static __mmask8 first_lanes(unsigned q) noexcept { return __mmask8((1u << (q < 8 ? q : 8)) - 1); }
+
+    template <class Segments>
+    CRSPLINE_TARGET_AVX512 __attribute__((always_inline)) void load(const Segments& segments, std::size_t seg) noexcept {
+        double o[3], a[3], b[3], c[3], t0, ih, t_end;
+        segments.load(seg, o, a, b, c, t0, ih, t_end);
+        const __m512d va = _mm512_maskz_loadu_pd(0x7, a), vb = _mm512_maskz_loadu_pd(0x7, b),
+                      vc = _mm512_maskz_loadu_pd(0x7, c);
+        const __m512d vo = Order == 0 ? _mm512_maskz_loadu_pd(0x7, o) : _mm512_setzero_pd();
+        A0 = pattern<0>(va), A1 = pattern<1>(va), A2 = pattern<2>(va);
+        B0 = pattern<0>(vb), B1 = pattern<1>(vb), B2 = pattern<2>(vb);
+        C0 = pattern<0>(vc), C1 = pattern<1>(vc), C2 = pattern<2>(vc);
+        O0 = pattern<0>(vo), O1 = pattern<1>(vo), O2 = pattern<2>(vo);
+        vt0 = _mm512_set1_pd(t0), vih = _mm512_set1_pd(ih), vend = _mm512_set1_pd(t_end);
+    }
+
+    /// The 8 points at parameters x on this segment, as 24 doubles in r0 r1 r2.
+    CRSPLINE_TARGET_AVX512 void points(__m512d x, __m512d& r0, __m512d& r1, __m512d& r2) const noexcept {
+        const __m512d u = _mm512_mul_pd(_mm512_sub_pd(x, vt0), vih);
+        const __m512d U0 = spread<0>(u), U1 = spread<1>(u), U2 = spread<2>(u);
+        r0 = _mm512_add_pd(A0, _mm512_mul_pd(U0, _mm512_add_pd(B0, _mm512_mul_pd(U0, C0))));
+        r1 = _mm512_add_pd(A1, _mm512_mul_pd(U1, _mm512_add_pd(B1, _mm512_mul_pd(U1, C1))));
+        r2 = _mm512_add_pd(A2, _mm512_mul_pd(U2, _mm512_add_pd(B2, _mm512_mul_pd(U2, C2))));
+        if constexpr (Order == 0) {
+            r0 = _mm512_add_pd(O0, _mm512_mul_pd(U0, r0));
+            r1 = _mm512_add_pd(O1, _mm512_mul_pd(U1, r1));
+            r2 = _mm512_add_pd(O2, _mm512_mul_pd(U2, r2));
+        }
+    }
+
+    /// steps512::step with 8 lanes (1 <= m <= 8; nt: m = 8, out 64-byte
+    /// aligned).
+    template <class Segments>
+    CRSPLINE_TARGET_AVX512 __attribute__((always_inline)) bool step(const Segments& segments, std::size_t& seg,
+                                                                    const double* t, double* out, unsigned m,
+                                                                    bool first, bool nt) noexcept {
+        const __mmask8 in = first_lanes(m);
+        const __m512d x = _mm512_maskz_loadu_pd(in, t);
+        // Lane j's predecessor: t[j - 1]; for the batch's first step t[0]
+        // in lane 0 (t[-1] is not read).
+        const __m512d before =
+            first ? _mm512_castsi512_pd(_mm512_maskz_alignr_epi64(0xFF, _mm512_castpd_si512(x),
+                                                                  _mm512_castpd_si512(_mm512_set1_pd(t[0])), 7))
+                  : _mm512_maskz_loadu_pd(in, t - 1);
+        if ((_mm512_cmp_pd_mask(before, x, _CMP_LE_OQ) & in) != in) return false;  // not sorted, or NaN
+        __m512d r0, r1, r2;
+        points(x, r0, r1, r2);
+        const __m512d X0 = spread<0>(x), X1 = spread<1>(x), X2 = spread<2>(x);
+        for (__mmask8 past = _mm512_mask_cmp_pd_mask(in, x, vend, _CMP_NLT_UQ); past != 0;
+             past = _mm512_mask_cmp_pd_mask(in, x, vend, _CMP_NLT_UQ)) {
+            const std::size_t next = segments.next(seg, t[__builtin_ctz(unsigned(past))]);
+            if (next == seg) break;  // (no later segment: cannot happen in the domain)
+            const __m512d end = vend;
+            seg = next;
+            load(segments, seg);
+            __m512d q0, q1, q2;
+            points(x, q0, q1, q2);
+            r0 = _mm512_mask_mov_pd(r0, _mm512_cmp_pd_mask(X0, end, _CMP_NLT_UQ), q0);
+            r1 = _mm512_mask_mov_pd(r1, _mm512_cmp_pd_mask(X1, end, _CMP_NLT_UQ), q1);
+            r2 = _mm512_mask_mov_pd(r2, _mm512_cmp_pd_mask(X2, end, _CMP_NLT_UQ), q2);
+        }
+        if (nt) {
+            _mm512_stream_pd(out, r0), _mm512_stream_pd(out + 8, r1), _mm512_stream_pd(out + 16, r2);
+        } else {
+            const unsigned f = 3 * m;  // doubles to store
+            _mm512_mask_storeu_pd(out, first_lanes(f), r0);
+            _mm512_mask_storeu_pd(out + 8, first_lanes(f > 8 ? f - 8 : 0), r1);
+            _mm512_mask_storeu_pd(out + 16, first_lanes(f > 16 ? f - 16 : 0), r2);
+        }
+        return true;
+    }
+};
+
+/// bulk512 for doubles: 8-point steps (out + 3 k 64-byte aligned when Stream).
+template <int Order, bool Stream>
+CRSPLINE_TARGET_AVX512 std::size_t bulk512d(const steps512d<Order> s, const double* t, double* out, std::size_t k,
+                                            std::size_t n) noexcept {
+    for (; k + 8 <= n; k += 8) {
+        const __m512d x = _mm512_loadu_pd(t + k);
+        const unsigned go = unsigned(_mm512_cmp_pd_mask(x, s.vend, _CMP_LT_OQ)) &
+                            unsigned(_mm512_cmp_pd_mask(_mm512_loadu_pd(t + k - 1), x, _CMP_LE_OQ));
+        if (go != 0xFF) break;  // unsorted, NaN, or past the end knot: a step for sorted_walk3_512
+        __m512d r0, r1, r2;
+        s.points(x, r0, r1, r2);
+        double* dst = out + 3 * k;
+        if constexpr (Stream) {
+            _mm512_stream_pd(dst, r0), _mm512_stream_pd(dst + 8, r1), _mm512_stream_pd(dst + 16, r2);
+        } else {
+            _mm512_storeu_pd(dst, r0), _mm512_storeu_pd(dst + 8, r1), _mm512_storeu_pd(dst + 16, r2);
+        }
+    }
+    return k;
+}
+
+/// sorted_walk3_512 for 3-D doubles: steps of 8 points (192 bytes, three
+/// whole cache lines, non-temporal when stream) after one step of up to 8
+/// that brings out + 3 k to 64-byte alignment (24 h = -out mod 64 bytes,
+/// h in 1..8). The same bits as the AVX2 runs and the portable kernel.
+template <int Order, class Segments>
+CRSPLINE_TARGET_AVX512 bool sorted_walk3_512(const Segments& segments, std::size_t seg, const double* t, double* out,
+                                             std::size_t n, bool stream) noexcept {
+    if (n == 0) return true;
+    steps512d<Order> s;
+    s.load(segments, seg);
+    // 3 h = -(out mod 64) / 8 (mod 8), and 3 = 1 / 3 (mod 8).
+    const unsigned eighth = unsigned(reinterpret_cast<std::uintptr_t>(out) % 64) / 8;
+    const unsigned h0 = (3 * ((8 - eighth) % 8)) % 8, h = h0 == 0 ? 8 : h0;
+    const unsigned m = unsigned(n < h ? n : h);
+    if (!s.step(segments, seg, t, out, m, true, stream && m == 8)) return false;
+    std::size_t k = m;
+    // out + 3 k is 64-byte aligned from here on.
+    while (k + 8 <= n) {
+        k = stream ? bulk512d<Order, true>(s, t, out, k, n) : bulk512d<Order, false>(s, t, out, k, n);
+        if (k + 8 <= n) {
+            if (!s.step(segments, seg, t + k, out + 3 * k, 8, false, stream)) return false;
+            k += 8;
+        }
+    }
+    return k == n || s.step(segments, seg, t + k, out + 3 * k, unsigned(n - k), false, false);
+}
+
 /// One sorted run of a 3-D segment (double or float), as catmull_rom's
 /// portable run_kernel: out[k] = o + u (a + u (b + u c)) (Order 0) or
 /// a + u (b + u c) (Order 1, o unused) with u = (t[k] - t0) ih, for t[0] and
 /// the points after it while they are below t_end (at most n); returns how
 /// many. Sets unsorted when t is not sorted there (or holds a NaN). out
 /// holds 3 n scalars. Large outputs (stream) use non-temporal stores once
-/// out is 32-byte aligned. (Floats on a CPU with AVX-512F: sorted_walk3_512,
-/// the same bits.)
+/// out is 32-byte aligned. (On a CPU with AVX-512F: sorted_walk3_512, floats
+/// and doubles, the same bits.)
 template <int Order, class T>
 CRSPLINE_TARGET_AVX2 std::size_t sorted_run3(const T* o, const T* a, const T* b, const T* c, T t0, T ih,
                                              const T* t, T* out, std::size_t n, T& previous, bool stream, T t_end,
