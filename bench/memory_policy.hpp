@@ -57,10 +57,11 @@ inline void fresh_memory() {
 // loop, read-and-stream) write 120-240 MB and read 40-80 MB of t. Where
 // those bytes sit decides the floor more than the kernel: on the AMD EPYC
 // VM (THP "madvise", so a plain std::vector gets 4 KiB pages) memset of the
-// float output took 2.7-2.8 ms on 2 MiB pages and 2.8 to 4.0 ms on 4 KiB
-// pages, from one allocation to the next (how scattered the pages came
-// back), while the float kernel took 3.1-3.5 ms on either: a ratio of 0.82
-// to 1.25 for the same code. So every such buffer (the inputs t and the
+// float output took 2.7-3.1 ms on 2 MiB pages and 2.9 to 4.0 ms on 4 KiB
+// pages, from one allocation to the next (wherever the pages came from),
+// and the float kernel 3.1-3.9 and 3.2-4.4 ms: the ratio the target reads
+// moved from 0.80 to 1.26 on 4 KiB pages for the same code, and stayed
+// within 0.80-0.87 on 2 MiB pages. So every such buffer (the inputs t and the
 // shared outputs) comes from eval_allocator: its own mapping, 2 MiB
 // aligned, advised MADV_HUGEPAGE, the pages touched when the vector fills
 // it. That is the floor at its fastest (memset's best case, the strict
