@@ -195,7 +195,7 @@ export interface DecisionOptions {
 export interface Decision {
   verdict: Verdict;
   fast_path: boolean;
-  /** delta, the contact floor: 2^-42 of the extent from the first point. */
+  /** delta, the contact floor: 4 eps of the largest absolute coordinate (4 to 8 of its ulps). */
   floor: number;
   /** Proved transversal crossings: u[k] is an interval of segments[k]'s local parameter on curves[k]. */
   crossings: { curves: [number, number]; segments: [number, number]; u: [[number, number], [number, number]]; point: [number, number] }[];

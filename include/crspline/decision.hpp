@@ -47,32 +47,41 @@
 //   * a contact when both run along each other within their rounding
 //     margins (flat, parallel, overlapping: a fold or a tangency);
 //   * else split in halves (de Casteljau), down to the floor.
-// Rounding: the subdivided control points carry an error bound (the
-// initial difference, plus 2 eps M per level, where M bounds every
-// coordinate relative to the first point); every projection is compared
-// with a margin covering that bound and the rounding of the projection
-// itself (|x . n| rounding <= 2 eps M |n|_1, here taken as 10 eps M |n|_1).
-// Krawczyk's test runs in interval arithmetic with outward rounding
-// (detail/interval.hpp) from an exact enclosure of the control points.
+// Rounding: coarse pieces (plain doubles, relative to the first point)
+// carry an error bound (the initial difference, plus 2 eps M per level of
+// halving, where M bounds every coordinate relative to the first point);
+// every projection is compared with a margin covering that bound and the
+// rounding of the projection itself (|x . n| rounding <= 2 eps S |n|_1,
+// taken as 10 eps S |n|_1, S bounding the coordinates: M here). Such
+// margins do not shrink with the pieces, so below 2^-30 M a pair is made
+// fine (refine()): each piece is made again from its segment as
+// double-doubles (the blossom of the segment's exact Bezier points over
+// its parameter range, within 128 eps^2 M, and halved in double-doubles
+// from then on, 16 eps^2 M a level), and the pair is tested in a frame of
+// its own (local(): points relative to a double near them, rounded once):
+// margins of a few eps of the pieces' own size. Krawczyk's test runs in
+// interval arithmetic with outward rounding (detail/interval.hpp) from an
+// exact enclosure of the control points; for fine pieces and at the
+// floor, F(m) itself is evaluated in double-doubles, so its enclosure is
+// a few ulps of |F(m)| wide and crossings closer together than eps M over
+// their angle are told apart.
 //
-// The floor: delta = 2^-42 M (about 2.3e-13 of the curve's extent M from
-// its first point, 1024 ulps of M). Two pieces, each no larger than delta,
-// neither separated nor proved to cross, are a contact: they are within
-// delta sqrt(2) plus the margins of each other, far below 1e-9 of the
-// curve's size. Separation itself is decided at the margins' scale, a few
-// hundred eps M (at most about 2 (2 eps M depth + 10 eps M) |n|_1 for
-// pieces split depth times): pieces further apart than that are separated
-// once they are short enough that their hulls no longer overlap (a gap g
-// between arcs of curvature k: pieces of length about sqrt(8 g / k), far
-// above delta), so only contacts closer than the margins, and exact
-// contacts (tangencies, cusps, a vertex visited twice), reach the floor.
-// Pieces running along each other within their margins are a contact at
-// once (along()), within 2 (err) + 16 eps M <= 600 eps M < 4 delta; a
-// lower floor would let such contacts exceed 4 delta, and does not decide
-// more: the margins do not shrink with the pieces. At the floor (and
-// before an along-contact) a crossing is tried with Krawczyk's test in
-// boxes wider than the pieces too (try_crossing): a shallow crossing needs
-// a box wider than the rounding of F over the Jacobian's conditioning.
+// The floor: delta = 4 eps Mc, Mc the largest absolute coordinate (4 to 8
+// ulps of it: about 8.9e-16 of a curve reaching out to its own size from
+// the origin, and below the spacing of the coordinates themselves far from
+// it). Two pieces, each no larger than delta, neither separated nor proved
+// to cross, are a contact: they are within 2 sqrt(2) delta plus their
+// margins of each other. Fine pieces are separated at any gap above a few
+// eps of their own size (a gap g between arcs of curvature k: pieces of
+// length about sqrt(8 g / k) separate, far above delta), so only exact
+// contacts (tangencies, cusps, a vertex visited twice) and contacts within
+// a few ulps reach the floor. Pieces running along each other within their
+// margins (along()) are a contact when those margins are within delta,
+// w = 2 (err) + 16 eps S <= delta (distance within 3 w); wider, they are
+// halved until their frame is small enough. At the floor (and before an
+// along-contact) a crossing is tried with Krawczyk's test in boxes wider
+// than the pieces too (try_crossing): a shallow crossing needs a box wider
+// than the rounding of F over the Jacobian's conditioning.
 // A work budget (decision_options::budget, pair_budget) bounds the
 // time anyway; a pair that exhausts it is reported as a contact with
 // budget_exhausted set.
@@ -86,6 +95,7 @@
 #include <limits>
 #include <initializer_list>
 #include <map>
+#include <optional>
 #include <queue>
 #include <span>
 #include <string>
@@ -97,6 +107,7 @@
 #include "catmull_rom.hpp"
 #include "certify.hpp"
 #include "detail/box_tree.hpp"
+#include "detail/double_double.hpp"
 #include "detail/interval.hpp"
 #include "segment.hpp"
 #include "vec.hpp"
@@ -202,11 +213,13 @@ struct decision_engine {
     static constexpr int max_depth = 64;
 
     struct piece {
-        std::array<P, 4> b{};  // control points relative to ref (computed)
-        double err = 0;        // |computed - exact| per coordinate, bound
+        std::array<P, 4> b{};   // control points relative to ref (computed)
+        std::array<P, 4> lo{};  // fine pieces: b + lo, double-doubles (zero for coarse ones)
+        double err = 0;         // |computed - exact| per coordinate, bound (of b + lo)
         double u0 = 0, u1 = 1;
         std::uint32_t curve = 0, segment = 0;
         std::uint8_t start_mult = 1, end_mult = 1;  // control points exactly equal to b[0] / b[3] (incl. it)
+        bool fine = false;  // double-double points (refine()), else plain doubles
         int depth = 0;
     };
     using ipoint = std::array<interval, 2>;
@@ -223,7 +236,7 @@ struct decision_engine {
     std::vector<source> curves;
     std::vector<bool> closed;
     P ref{};
-    double M = 0, floor = 0;
+    double M = 0, floor = 0, Mc = 0;  // Mc: the largest absolute coordinate
     // The monotone pieces, in order of curve and segment. A piece that is a
     // whole segment (most are) is kept as its ids alone and rebuilt from the
     // curve when asked (the same doubles as when it was made: its points are
@@ -255,6 +268,10 @@ struct decision_engine {
             return s.cut == whole ? e->whole_piece(s.curve, s.segment) : cuts[s.cut];
         }
         std::uint32_t curve(std::size_t k) const noexcept { return slots[k].curve; }
+        std::uint32_t segment(std::size_t k) const noexcept { return slots[k].segment; }
+        // The parameter range, without rebuilding a whole piece ([0, 1]).
+        double u0(std::size_t k) const noexcept { return slots[k].cut == whole ? 0.0 : cuts[slots[k].cut].u0; }
+        double u1(std::size_t k) const noexcept { return slots[k].cut == whole ? 1.0 : cuts[slots[k].cut].u1; }
         void resize(std::size_t n) { slots.resize(n); }  // a removed cut piece stays in `cuts`, unused
     };
     piece_store pieces;
@@ -268,6 +285,7 @@ struct decision_engine {
     std::map<std::array<std::size_t, 4>, std::size_t> contact_index;
     std::size_t budget = 0, pair_budget = 0;
     static constexpr std::size_t npos = std::size_t(-1);
+    double fine_below = 0;  // pieces no larger are made fine (refine()) before a test
     // Per curve: each segment's rank among the non-point segments, and its
     // neighbours (the next and previous non-point segments sharing its end
     // and start point exactly; npos if none).
@@ -291,16 +309,33 @@ struct decision_engine {
     }
 
     static double norm1(const P& d) noexcept { return std::abs(d[0]) + std::abs(d[1]); }
-    double margin(double e, const P& d) const noexcept { return (e + 10 * eps * M) * norm1(d); }
+    // S bounds every coordinate of the frame the pieces are in (M for
+    // coarse pieces, relative to ref; local() gives fine ones a frame of
+    // their own).
+    static double margin(double e, const P& d, double S) noexcept { return (e + 10 * eps * S) * norm1(d); }
 
     static std::array<piece, 2> split(const piece& p) {
-        const auto mid = [](const P& x, const P& y) { return (x + y) * 0.5; };
-        const auto& q = p.b;
-        const P a0 = mid(q[0], q[1]), a1 = mid(q[1], q[2]), a2 = mid(q[2], q[3]);
-        const P q0 = mid(a0, a1), q1 = mid(a1, a2), m = mid(q0, q1);
         piece l = p, r = p;
-        l.b = {q[0], a0, q0, m};
-        r.b = {m, q1, a2, q[3]};
+        if (p.fine) {
+            // In double-doubles, coordinate by coordinate (the same steps).
+            for (std::size_t d = 0; d < 2; ++d) {
+                const dd q[4] = {{p.b[0][d], p.lo[0][d]}, {p.b[1][d], p.lo[1][d]}, {p.b[2][d], p.lo[2][d]}, {p.b[3][d], p.lo[3][d]}};
+                const dd a0 = midpoint(q[0], q[1]), a1 = midpoint(q[1], q[2]), a2 = midpoint(q[2], q[3]);
+                const dd q0 = midpoint(a0, a1), q1 = midpoint(a1, a2), m = midpoint(q0, q1);
+                const dd lq[4] = {q[0], a0, q0, m}, rq[4] = {m, q1, a2, q[3]};
+                for (std::size_t k = 0; k < 4; ++k) {
+                    l.b[k][d] = lq[k].hi, l.lo[k][d] = lq[k].lo;
+                    r.b[k][d] = rq[k].hi, r.lo[k][d] = rq[k].lo;
+                }
+            }
+        } else {
+            const auto mid = [](const P& x, const P& y) { return (x + y) * 0.5; };
+            const auto& q = p.b;
+            const P a0 = mid(q[0], q[1]), a1 = mid(q[1], q[2]), a2 = mid(q[2], q[3]);
+            const P q0 = mid(a0, a1), q1 = mid(a1, a2), m = mid(q0, q1);
+            l.b = {q[0], a0, q0, m};
+            r.b = {m, q1, a2, q[3]};
+        }
         const double um = p.u0 + (p.u1 - p.u0) / 2;
         l.u1 = um;
         r.u0 = um;
@@ -309,27 +344,96 @@ struct decision_engine {
         l.depth = r.depth = p.depth + 1;
         return {l, r};
     }
+    // The error a split adds: a coarse midpoint is rounded once per level
+    // (three levels, each an average of rounded values: 2 eps M in all); a
+    // fine one has the double-double sum's error, at most 4 eps^2 M per
+    // midpoint (the magnitudes are convex combinations, within M), three
+    // levels: 12 eps^2 M, taken as 16, plus the least normal double for a
+    // low part halved into the subnormals.
     void grow(std::array<piece, 2>& h) const {
-        for (auto& x : h) x.err += 2 * eps * M;
+        for (auto& x : h)
+            x.err += x.fine ? 16 * eps * eps * M + std::numeric_limits<double>::min() : 2 * eps * M;
+    }
+
+    // Fine pieces. Below the scale where a coarse piece's error (2 eps M a
+    // level) would swamp the gaps being decided, a piece is made again from
+    // its segment in double-doubles: its control points are the blossom
+    // values B(u0,u0,u0), B(u0,u0,u1), B(u0,u1,u1), B(u1,u1,u1) of the
+    // segment's Bezier points relative to ref (differences exact as
+    // double-doubles), three de Casteljau levels, each step x + t (y - x)
+    // within 24 eps^2 M (a difference, a product and a sum, each within
+    // 4 eps^2 of magnitudes up to 2M; the inputs' errors carried with
+    // weights 1 - t and t): 72 eps^2 M, taken as 128.
+    // The end points depend on their own parameter alone (the same value for
+    // the two pieces that share them, as the joint argument needs), and are
+    // the segment's own points at u = 0 and u = 1.
+    void refine(piece& p) const {
+        if (p.fine) return;
+        const auto& g = curves[p.curve][p.segment];
+        const double a = p.u0, b = p.u1;
+        for (std::size_t d = 0; d < 2; ++d) {
+            dd q[4];
+            for (std::size_t k = 0; k < 4; ++k) q[k] = two_sum(g[k][d], -ref[d]);
+            const auto blossom = [&](double t1, double t2, double t3) {
+                const dd x0 = lerp(q[0], q[1], t1), x1 = lerp(q[1], q[2], t1), x2 = lerp(q[2], q[3], t1);
+                const dd y0 = lerp(x0, x1, t2), y1 = lerp(x1, x2, t2);
+                return lerp(y0, y1, t3);
+            };
+            const dd r[4] = {a == 0 ? q[0] : blossom(a, a, a), blossom(a, a, b), blossom(a, b, b),
+                             b == 1 ? q[3] : blossom(b, b, b)};
+            for (std::size_t k = 0; k < 4; ++k) p.b[k][d] = r[k].hi, p.lo[k][d] = r[k].lo;
+        }
+        p.err = 128 * eps * eps * M + std::numeric_limits<double>::min();
+        p.fine = true;
+        // Multiplicities stay as they were: points known equal to an end
+        // are equal in exact arithmetic (a zero tangent, at u = 0 or 1,
+        // whose blossom values are that end's point exactly).
+    }
+    // Two pieces in a frame of their own: their points relative to R (a
+    // double near them), rounded to doubles. The difference hi - R is
+    // exact as s + e (two_sum), and s + (e + lo) rounds twice: within
+    // eps S + 2 eps^2 (S + M) of the exact point, S bounding every local
+    // coordinate. The margins then scale with the pieces, not with the
+    // curve: fine pieces can be told apart at any gap above a few eps of
+    // their own size.
+    struct framed {
+        piece a, b;
+        double S;
+    };
+    framed local(const piece& a, const piece& b) const {
+        framed f{a, b, 0};
+        const P R = a.b[0];
+        double S = 0;
+        for (piece* x : {&f.a, &f.b})
+            for (std::size_t k = 0; k < 4; ++k)
+                for (std::size_t d = 0; d < 2; ++d) {
+                    const dd s = two_sum(x->b[k][d], -R[d]);
+                    x->b[k][d] = s.hi + (s.lo + x->lo[k][d]);
+                    x->lo[k][d] = 0;
+                    S = std::max(S, std::abs(x->b[k][d]));
+                }
+        f.S = S * (1 + 4 * eps) + std::numeric_limits<double>::min();
+        for (piece* x : {&f.a, &f.b}) x->err += eps * f.S + 2 * eps * eps * (f.S + M);
+        return f;
     }
 
     // d . B'(u) > 0 on the piece: the hodograph's control points b[k+1] - b[k]
     // all strictly ahead along d, except those known to be exactly zero.
-    bool monotone_in(const piece& p, const P& d) const {
+    static bool monotone_in(const piece& p, const P& d, double S) {
         if (!(norm1(d) > 0) || !std::isfinite(norm1(d))) return false;
-        const double pad = margin(2 * p.err, d);
+        const double pad = margin(2 * p.err, d, S);
         const std::size_t k0 = p.start_mult - 1u, k1 = 3u - (p.end_mult - 1u);
         if (k0 >= k1) return false;
         for (std::size_t k = k0; k < k1; ++k)
             if (!(dot(p.b[k + 1], d) - dot(p.b[k], d) > pad)) return false;
         return true;
     }
-    bool is_monotone(const piece& p) const {
+    static bool is_monotone(const piece& p, double S) {
         const P chord = p.b[3] - p.b[0];
         const P h0 = p.b[std::size_t(p.start_mult)] - p.b[0], h2 = p.b[3] - p.b[3u - p.end_mult];
         const P dirs[] = {chord, h0, h2, h0 / std::max(norm1(h0), 1e-300) + h2 / std::max(norm1(h2), 1e-300)};
         for (const auto& d : dirs)
-            if (monotone_in(p, d)) return true;
+            if (monotone_in(p, d, S)) return true;
         return false;
     }
 
@@ -347,7 +451,7 @@ struct decision_engine {
         return std::max(b[1][0] - b[0][0], b[1][1] - b[0][1]);
     }
 
-    bool separated_on(const piece& a, const piece& b, const P& n) const {
+    static bool separated_on(const piece& a, const piece& b, const P& n, double S) {
         if (!(norm1(n) > 0) || !std::isfinite(norm1(n))) return false;
         double a0 = dot(a.b[0], n), a1 = a0, b0 = dot(b.b[0], n), b1 = b0;
         for (std::size_t k = 1; k < 4; ++k) {
@@ -356,25 +460,25 @@ struct decision_engine {
             b0 = std::min(b0, dot(b.b[k], n));
             b1 = std::max(b1, dot(b.b[k], n));
         }
-        const double pad = margin(a.err + b.err, n);
+        const double pad = margin(a.err + b.err, n, S);
         return a1 + pad < b0 || b1 + pad < a0;
     }
-    bool separated(const piece& a, const piece& b) const {
+    static bool separated(const piece& a, const piece& b, double S) {
         const P ca = a.b[3] - a.b[0], cb = b.b[3] - b.b[0];
         const P axes[] = {P{{1, 0}}, P{{0, 1}}, P{{-ca[1], ca[0]}}, P{{-cb[1], cb[0]}}};
         for (const auto& n : axes)
-            if (separated_on(a, b, n)) return true;
+            if (separated_on(a, b, n, S)) return true;
         return false;
     }
 
     // a ends where b starts (J, the same double): do they meet only there?
-    bool apart_at_joint(const piece& a, const piece& b) const {
+    static bool apart_at_joint(const piece& a, const piece& b, double S) {
         const P J = a.b[3];
         const P da = J - a.b[3u - a.end_mult], db = b.b[b.start_mult] - J;
         const P dirs[] = {da, db, da / std::max(norm1(da), 1e-300) + db / std::max(norm1(db), 1e-300)};
         for (const auto& d : dirs) {
             if (!(norm1(d) > 0) || !std::isfinite(norm1(d))) continue;
-            const double pad = margin(2 * (a.err + b.err), d), j = dot(J, d);
+            const double pad = margin(2 * (a.err + b.err), d, S), j = dot(J, d);
             bool ok = true;
             for (std::size_t k = 0; k + a.end_mult < 4 && ok; ++k) ok = dot(a.b[k], d) < j - pad;
             for (std::size_t k = b.start_mult; k < 4 && ok; ++k) ok = dot(b.b[k], d) > j + pad;
@@ -411,11 +515,25 @@ struct decision_engine {
     // derivative's enclosure over S holds every one-sided derivative in S
     // (F(x) - F(m) is the integral of the derivative along the segment from
     // m to x, an average of values in that enclosure).
+    using dpoint = std::array<dd, 2>;
     struct side {
         std::array<ipoint, 4> f{}, g{};
+        std::array<dpoint, 4> fd{}, gd{};  // the same points exactly, as double-doubles
         bool has_g = false;
-        // s - 1 is exact for s in [1, 2] (Sterbenz).
-        ipoint at(double s) const { return has_g && s >= 1 ? eval(g, s - 1) : eval(f, s); }
+        // The point at s in double-doubles: within 72 eps^2 M (refine()'s
+        // argument, one de Casteljau evaluation). s - 1 is exact for s in
+        // [1, 2] (Sterbenz).
+        ipoint at_i(double s) const { return has_g && s >= 1 ? eval(g, s - 1) : eval(f, s); }
+        dpoint at(double s) const {
+            const auto& q = has_g && s >= 1 ? gd : fd;
+            const double t = has_g && s >= 1 ? s - 1 : s;
+            dpoint r;
+            for (std::size_t k = 0; k < 2; ++k) {
+                const dd a0 = lerp(q[0][k], q[1][k], t), a1 = lerp(q[1][k], q[2][k], t), a2 = lerp(q[2][k], q[3][k], t);
+                r[k] = lerp(lerp(a0, a1, t), lerp(a1, a2, t), t);
+            }
+            return r;
+        }
         ipoint slope(const interval& S) const {
             const bool in_f = S.lo < 1 || !has_g, in_g = has_g && S.hi >= 1;
             ipoint r{};
@@ -431,12 +549,28 @@ struct decision_engine {
     // Krawczyk's operator K(X) = m - C F(m) + (I - C J(X)) (X - m) for
     // F(u, v) = A(u) - B(v); K(X) strictly inside X proves exactly one zero
     // in X, with every J in J(X) invertible. X is tightened to K(X) & X.
-    static bool krawczyk(const side& A, const side& B, std::array<interval, 2>& X) {
+    // With `precise`, F(m) is evaluated in double-doubles (each side within
+    // 72 eps^2 M, the difference within 4 eps^2 (2M) more: e_F =
+    // 160 eps^2 M), so its enclosure is a few ulps of |F(m)| wide however
+    // large the coordinates: two crossings closer than eps M / (the angle)
+    // can be told apart. Else in interval arithmetic (a few eps M wide,
+    // cheaper: enough for the crossings of coarse pieces).
+    static bool krawczyk(const side& A, const side& B, std::array<interval, 2>& X, double M, bool precise) {
         bool proved = false;
+        const double eF = 160 * eps * eps * M + std::numeric_limits<double>::min();
         for (int it = 0; it < 6; ++it) {
             const double m[2] = {X[0].mid(), X[1].mid()};
-            const ipoint fa = A.at(m[0]), fb = B.at(m[1]);
-            const ipoint F{fa[0] - fb[0], fa[1] - fb[1]};
+            ipoint F;
+            if (precise) {
+                const dpoint fa = A.at(m[0]), fb = B.at(m[1]);
+                for (std::size_t k = 0; k < 2; ++k) {
+                    const dd d = fa[k] - fb[k];
+                    F[k] = interval::point(d.hi) + interval{down(d.lo - eF), up(d.lo + eF)};
+                }
+            } else {
+                const ipoint fa = A.at_i(m[0]), fb = B.at_i(m[1]);
+                F = {fa[0] - fb[0], fa[1] - fb[1]};
+            }
             const ipoint ja = A.slope(X[0]), jb = B.slope(X[1]);
             const interval J[2][2] = {{ja[0], -jb[0]}, {ja[1], -jb[1]}};
             const double j00 = J[0][0].mid(), j01 = J[0][1].mid(), j10 = J[1][0].mid(), j11 = J[1][1].mid();
@@ -475,16 +609,23 @@ struct decision_engine {
         double s0, s1, dom, base;
         std::size_t f_seg, g_seg;
     };
-    side_of make_side(const piece& p, bool chain) const {
+    side_of make_side(const piece& p, bool chain, bool precise) const {
         const auto wide = [](std::uint32_t x) { return x == none32 ? npos : std::size_t(x); };
         const std::size_t nx = wide(next_seg[p.curve][p.segment]), pv = wide(prev_seg[p.curve][p.segment]);
         const double r = double(rank[p.curve][p.segment]);
         const auto ex = [&](std::size_t s) { return enclosure(p.curve, s); };
+        const auto exd = [&](std::size_t s) {
+            std::array<dpoint, 4> q{};
+            if (!precise) return q;  // not read
+            for (std::size_t k = 0; k < 4; ++k)
+                for (std::size_t d = 0; d < 2; ++d) q[k][d] = two_sum(curves[p.curve][s][k][d], -ref[d]);
+            return q;
+        };
         if (chain && p.u1 == 1 && nx != npos)
-            return {{ex(p.segment), ex(nx), true}, p.u0, p.u1, 2, r, p.segment, nx};
+            return {{ex(p.segment), ex(nx), exd(p.segment), exd(nx), true}, p.u0, p.u1, 2, r, p.segment, nx};
         if (chain && p.u0 == 0 && pv != npos)
-            return {{ex(pv), ex(p.segment), true}, p.u0 + 1, p.u1 + 1, 2, r - 1, pv, p.segment};
-        return {{ex(p.segment), {}, false}, p.u0, p.u1, 1, r, p.segment, npos};
+            return {{ex(pv), ex(p.segment), exd(pv), exd(p.segment), true}, p.u0 + 1, p.u1 + 1, 2, r - 1, pv, p.segment};
+        return {{ex(p.segment), {}, exd(p.segment), {}, false}, p.u0, p.u1, 1, r, p.segment, npos};
     }
     // An enclosure of segment s's control points relative to ref: the
     // exact difference is within half an ulp of the rounded one.
@@ -506,7 +647,8 @@ struct decision_engine {
     }
 
     bool try_crossing(const piece& a, const piece& b, bool chain) {
-        const side_of A = make_side(a, chain), B = make_side(b, chain);
+        const bool precise = chain || a.fine || b.fine;
+        const side_of A = make_side(a, chain, precise), B = make_side(b, chain, precise);
         const bool same = a.curve == b.curve;
         const double n = double(nonpoint[a.curve]);
         // Inflate each range by a quarter of its width, within its domain;
@@ -527,15 +669,16 @@ struct decision_engine {
             cap = gap / 3;
         }
         // Krawczyk's box must be wider than the rounding of F over the
-        // Jacobian's conditioning: pieces at the floor (2^-42 of the extent)
-        // can be narrower than that at a shallow crossing, so at the floor
-        // (`chain`) wider boxes are tried too, at least 2^-36, 2^-28 and
-        // 2^-20 of a segment's parameter range (capped as above): a proof
+        // Jacobian's conditioning: pieces at the floor (a few ulps) can be
+        // narrower than that at a shallow crossing, so at the floor
+        // (`chain`) wider boxes are tried too, at least 2^-36, 2^-32, 2^-28,
+        // 2^-26, 2^-24, 2^-22 and 2^-20 of a segment's parameter range
+        // (capped as above): a proof
         // in any box is a proof; a box holding two zeros or a singular
         // Jacobian only fails.
         std::array<interval, 2> X;
         bool proved = false;
-        for (const double least : {0.0, 0x1p-36, 0x1p-28, 0x1p-20}) {
+        for (const double least : {0.0, 0x1p-36, 0x1p-32, 0x1p-28, 0x1p-26, 0x1p-24, 0x1p-22, 0x1p-20}) {
             if (least > 0 && !chain) break;
             const double ia = std::min(std::max(ia0, least), cap), ib = std::min(std::max(ib0, least), cap);
             if (least > 0 && ia <= ia0 && ib <= ib0) break;  // capped: no wider box to try
@@ -543,7 +686,7 @@ struct decision_engine {
             const interval V{std::max(0.0, B.s0 - ib), std::min(B.dom, B.s1 + ib)};
             if (same && overlap(A.base + U.lo, A.base + U.hi, B.base + V.lo, B.base + V.hi, closed[a.curve], n)) return false;
             X = {U, V};
-            if (krawczyk(A.sd, B.sd, X)) {
+            if (krawczyk(A.sd, B.sd, X, M, precise)) {
                 proved = true;
                 break;
             }
@@ -630,9 +773,10 @@ struct decision_engine {
     // a tangency at the margins' scale); no separating axis can ever be
     // proved for them and their halves repeat the same: a contact at once,
     // instead of 2^32 pieces down to the floor.
-    bool along(const piece& a, const piece& b) const {
+    static double along_width(const piece& a, const piece& b, double S) { return 2 * (a.err + b.err) + 16 * eps * S; }
+    static bool along(const piece& a, const piece& b, double S) {
         const P ca = a.b[3] - a.b[0], cb = b.b[3] - b.b[0];
-        const double la = norm(ca), lb = norm(cb), w = 2 * (a.err + b.err) + 16 * eps * M;
+        const double la = norm(ca), lb = norm(cb), w = along_width(a, b, S);
         if (!(la > w) || !(lb > w)) return false;
         auto off = [](const P& x, const P& o, const P& c, double l) { return std::abs(cross2(x - o, c)) / l; };
         for (std::size_t k = 1; k < 3; ++k)
@@ -645,17 +789,18 @@ struct decision_engine {
     static double cross2(const P& x, const P& y) noexcept { return x[0] * y[1] - x[1] * y[0]; }
 
     // A contact's distance and where: the closest of nine samples of b to
-    // the polyline through nine samples of a (rounded; the pieces are small
-    // or flat, so this is their distance to within the floor).
-    void add_contact(const piece& a, const piece& b, bool exhausted) {
-        const auto& ga = curves[a.curve][a.segment];
-        const auto& gb = curves[b.curve][b.segment];
+    // the polyline through nine samples of a (rounded, in the pieces' own
+    // frame, so the rounding is a few eps of their size; the pieces are
+    // small or flat, so this is their distance to within the floor).
+    void add_contact(const piece& a0, const piece& b0, bool exhausted) {
+        const framed f = local(a0, b0);
+        const piece &a = f.a, &b = f.b;
         double ua = (a.u0 + a.u1) / 2, ub = (b.u0 + b.u1) / 2, dist = std::numeric_limits<double>::infinity();
         constexpr int n = 8;
         std::array<P, n + 1> sa, sb;
         for (int k = 0; k <= n; ++k) {
-            sa[std::size_t(k)] = bezier_at(ga, a.u0 + (a.u1 - a.u0) * k / n);
-            sb[std::size_t(k)] = bezier_at(gb, b.u0 + (b.u1 - b.u0) * k / n);
+            sa[std::size_t(k)] = bezier_at(a.b, double(k) / n);
+            sb[std::size_t(k)] = bezier_at(b.b, double(k) / n);
         }
         for (int l = 0; l <= n; ++l)
             for (int k = 0; k < n; ++k) {
@@ -711,7 +856,7 @@ struct decision_engine {
         unsigned f = 0;
         std::size_t visits = 0;
         while (!stack.empty()) {
-            const task t = stack.back();
+            task t = stack.back();
             stack.pop_back();
             if (out.visits >= budget || visits++ >= pair_budget) {
                 add_contact(t.a, t.b, true);
@@ -719,23 +864,50 @@ struct decision_engine {
                 continue;
             }
             ++out.visits;
-            if (separated(t.a, t.b)) { f |= separation; continue; }
-            if (t.corner && apart_at_joint(t.a, t.b)) { f |= joint; continue; }
+            const bool fine = t.a.fine || t.b.fine;
+            // The tests see the pieces in their own frame when fine (margins
+            // of a few eps of their size), else as they are (margins of a
+            // few eps M).
+            std::optional<framed> fr;
+            const piece *A = &t.a, *B = &t.b;
+            double S = M;
+            if (fine) {
+                fr = local(t.a, t.b);
+                A = &fr->a, B = &fr->b, S = fr->S;
+            }
+            if (separated(*A, *B, S)) { f |= separation; continue; }
+            if (!fine && std::max(extent(t.a), extent(t.b)) <= fine_below) {  // again, in the fine frame
+                refine(t.a);
+                refine(t.b);
+                stack.push_back(t);
+                continue;
+            }
+            if (t.corner && apart_at_joint(*A, *B, S)) { f |= joint; continue; }
             if (!t.corner && (t.a.depth + t.b.depth > 0 || t.a.segment != t.b.segment || t.a.curve != t.b.curve) &&
-                transversal(t.a, t.b) && try_crossing(t.a, t.b, false)) {
+                transversal(*A, *B) && try_crossing(t.a, t.b, false)) {
                 f |= crossing;
                 continue;
             }
-            if (!t.corner && along(t.a, t.b)) {  // an overlap or a tangency along a stretch: a contact,
-                // unless a (shallow) crossing is proved in a box around them
-                // (pieces shorter than the margins over the angle look along)
-                if (try_crossing(t.a, t.b, true)) {
-                    f |= crossing;
+            if (!t.corner && along(*A, *B, S)) {  // an overlap or a tangency along a stretch
+                if (!fine) {  // again in the fine frame, whose margins are the pieces' own
+                    refine(t.a);
+                    refine(t.b);
+                    stack.push_back(t);
                     continue;
                 }
-                add_contact(t.a, t.b, false);
-                f |= unresolved;
-                continue;
+                // Within the floor all along: a contact, unless a (shallow)
+                // crossing is proved in a box around them (pieces shorter
+                // than the margins over the angle look along). Wider: halved
+                // below, until their frame is small enough.
+                if (along_width(*A, *B, S) <= floor) {
+                    if (try_crossing(t.a, t.b, true)) {
+                        f |= crossing;
+                        continue;
+                    }
+                    add_contact(t.a, t.b, false);
+                    f |= unresolved;
+                    continue;
+                }
             }
             const double ea = extent(t.a), eb = extent(t.b);
             const bool can_a = t.a.depth < max_depth, can_b = t.b.depth < max_depth;
@@ -768,9 +940,14 @@ struct decision_engine {
         auto& stack = cut_stack;
         stack.assign(1, s);
         while (!stack.empty()) {
-            const piece p = stack.back();
+            piece p = stack.back();
             stack.pop_back();
-            if (is_monotone(p)) {
+            if (!p.fine && extent(p) <= fine_below) refine(p);
+            const bool mono = p.fine ? [&] {
+                const framed fr = local(p, p);
+                return is_monotone(fr.a, fr.S);
+            }() : is_monotone(p, M);
+            if (mono) {
                 pieces.push_back(p);
                 continue;
             }
@@ -811,7 +988,10 @@ struct decision_engine {
         for (const auto& c : curves) {
             segments += c.size();
             for (std::size_t s = 0; s < c.size(); ++s)
-                for (const auto& x : c[s]) M = std::max({M, std::abs(x[0] - ref[0]), std::abs(x[1] - ref[1])});
+                for (const auto& x : c[s]) {
+                    M = std::max({M, std::abs(x[0] - ref[0]), std::abs(x[1] - ref[1])});
+                    Mc = std::max({Mc, std::abs(x[0]), std::abs(x[1])});
+                }
         }
         pieces.reserve(segments + segments / 64 + 16);  // most segments are one monotone piece
         M = std::nextafter(M * (1 + 1e-12), std::numeric_limits<double>::infinity());
@@ -843,8 +1023,13 @@ struct decision_engine {
                 }
             }
         }
-        floor = std::ldexp(M, -42);
+        // The floor: 4 eps of the largest coordinate (4 to 8 of its ulps,
+        // never below the least normal double); pieces are made fine below
+        // 2^-30 M (coarse errors, 2 eps M a level, stay below 2^-20 of a
+        // piece's size above that).
+        floor = std::max(4 * eps * Mc, std::numeric_limits<double>::min());
         out.floor = floor;
+        fine_below = std::ldexp(M, -30);
         // 2. Monotone pieces of every segment that is not a single point.
         for (std::size_t ci = 0; ci < curves.size(); ++ci) {
             first_piece.push_back(pieces.size());
@@ -880,10 +1065,24 @@ struct decision_engine {
         // from the curve when read, and most candidate pairs are neither.
         const std::uint32_t c = pieces.curve(p);
         if (pieces.curve(q) != c) return 0;
-        if (q == p + 1 && pieces[p].b[3] == pieces[q].b[0]) return 1;
-        if (closed[c] && p == first_piece[c] && q + 1 == first_piece[c + 1] && pieces[q].b[3] == pieces[p].b[0])
-            return 2;
+        if (q == p + 1 && shares_end(p, q)) return 1;
+        if (closed[c] && p == first_piece[c] && q + 1 == first_piece[c + 1] && shares_end(q, p)) return 2;
         return 0;
+    }
+    // Does piece x end exactly where piece y starts (one curve)? Pieces of
+    // one segment that meet share B(u) exactly, whatever their points'
+    // rounding (coarse or fine); pieces of two segments share a point when
+    // the segments' end and start are the same double.
+    bool shares_end(std::size_t x, std::size_t y) const {
+        const std::uint32_t sx = pieces.segment(x), sy = pieces.segment(y);
+        if (sx == sy) return pieces.u1(x) == pieces.u0(y);
+        if (!(pieces.u1(x) == 1 && pieces.u0(y) == 0)) return false;
+        const auto& c = curves[pieces.curve(x)];
+        if (c.curve) {  // B0 and B3 are the curve's points (catmull_rom::bezier)
+            const auto pts = c.curve->points();
+            return pts[(std::size_t(sx) + 1) % pts.size()] == pts[sy];
+        }
+        return c.given[sx][3] == c.given[sy][0];
     }
 
     void run(bool self, bool between) {

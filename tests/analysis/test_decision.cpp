@@ -343,6 +343,47 @@ TEST(Decision, LiveCorpusProperties) {
                 (unsigned long long)seed, corpus.size(), fast, touches, 100.0 * double(touches) / double(corpus.size()));
 }
 
+// The floor is a few ulps of the coordinates, and gaps at that scale are
+// decided: the dent over the line at gaps of m floors, m from 1/4 to 64,
+// on both sides (simple above the line; below, two crossings, both proved),
+// at scales 2^-30, 1 and 2^30 (powers of two keep the dent's tangent at
+// (3, gap) exactly horizontal, so the nearest approach is |gap| exactly,
+// and the answer is known without an exact check). Only the exact tangency
+// (gap 0) touches, within 4 floors. Checked to fail before the fine pieces
+// (margins a few hundred eps of the extent, floor 2^-42 of it): gaps of one
+// floor and less above the line, and crossings 4 floors deep, came out as
+// `touches`, and at 64 floors deep only with two contacts beside them.
+TEST(Decision, FloorIsAFewUlpsAndGapsAboveItAreDecided) {
+    std::size_t decided = 0;
+    for (const double scale : {0x1p-30, 1.0, 0x1p30})
+        for (const double alpha : {0.0, 0.5, 1.0}) {
+            const auto scaled = [&](double gap) {
+                auto p = dent(gap);
+                for (auto& x : p) x = x * scale;
+                return catmull_rom<2>(p, {.alpha = alpha});
+            };
+            const decision d0 = decide(scaled(0.0), {.fast_path = false});
+            SCOPED_TRACE("scale " + std::to_string(scale) + " alpha " + std::to_string(alpha));
+            // delta = 4 eps of the largest coordinate (7 scale): 4 to 8 ulps of it.
+            const double Mc = 7 * scale, ulp = std::nextafter(Mc, 2 * Mc) - Mc;
+            EXPECT_LE(d0.floor, 8 * ulp);
+            EXPECT_GE(d0.floor, 4 * ulp);
+            ASSERT_EQ(d0.result, verdict::touches);
+            for (const auto& t : d0.touches) EXPECT_LE(t.distance, 4 * d0.floor);
+            for (const double m : {0.25, 1.0, 4.0, 64.0}) {
+                const double gap = m * d0.floor / scale;  // in the unscaled dent (scaling is exact)
+                const decision above = decide(scaled(gap), {.fast_path = false});
+                const decision below = decide(scaled(-gap), {.fast_path = false});
+                EXPECT_EQ(above.result, verdict::simple) << "gap " << m << " floors";
+                EXPECT_EQ(below.result, verdict::crosses) << "gap -" << m << " floors";
+                EXPECT_EQ(below.crossings.size(), 2u) << "gap -" << m << " floors";
+                EXPECT_TRUE(below.touches.empty()) << "gap -" << m << " floors";
+                decided += 2;
+            }
+        }
+    EXPECT_EQ(decided, 3u * 3u * 4u * 2u);
+}
+
 // Hand-made cases, one argument each.
 TEST(Decision, HandMadeCases) {
     // A crossing, proved: uniform curve whose last segment comes back across the first.
