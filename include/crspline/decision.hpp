@@ -865,6 +865,10 @@ struct decision_engine {
             }
             ++out.visits;
             const bool fine = t.a.fine || t.b.fine;
+            if (fine && !(t.a.fine && t.b.fine)) {  // a fine cut piece against a coarse one: both fine
+                refine(t.a);
+                refine(t.b);
+            }
             // The tests see the pieces in their own frame when fine (margins
             // of a few eps of their size), else as they are (margins of a
             // few eps M).
