@@ -470,9 +470,9 @@ long double brute_force_length(const cubic_segment<D>& seg, int panels) {
         }
         return r;
     }();
-    long double total = 0;
-    for (int k = 0; k < panels; ++k) {
-        const long double a = (long double)k / panels, half = 0.5L / panels;
+    // The rule on [a, a + 2 half].
+    auto panel = [&](long double a, long double half) {
+        long double sum = 0;
         for (const auto& [x, w] : rule) {
             const long double u = a + half * (1 + x);
             long double sq = 0;
@@ -480,15 +480,34 @@ long double brute_force_length(const cubic_segment<D>& seg, int panels) {
                 const long double v = (long double)seg.c1[d] + u * (2 * (long double)seg.c2[d] + u * 3 * (long double)seg.c3[d]);
                 sq += v * v;
             }
-            total += w * half * std::sqrt(sq);
+            sum += w * half * std::sqrt(sq);
         }
+        return sum;
+    };
+    // Each panel halved until its halves agree with it to 1e-19 of the
+    // segment's first estimate: 400 equal panels alone were off by 1.5e-10
+    // on one segment of seed 4 (a speed minimum narrower than a panel, with
+    // the branch points near the real axis), where an adaptive long-double
+    // quadrature agreed with arc_length to 4e-16.
+    auto adapt = [&](auto&& self, long double a, long double half, long double whole, long double scale,
+                     int depth) -> long double {
+        const long double l = panel(a, half / 2), r = panel(a + half, half / 2);
+        if (std::abs(l + r - whole) <= 1e-19L * scale || depth >= 40) return l + r;
+        return self(self, a, half / 2, l, scale, depth + 1) + self(self, a + half, half / 2, r, scale, depth + 1);
+    };
+    long double scale = 0;
+    for (int k = 0; k < panels; ++k) scale += panel((long double)k / panels, 0.5L / panels);
+    long double total = 0;
+    for (int k = 0; k < panels; ++k) {
+        const long double a = (long double)k / panels, half = 0.5L / panels;
+        total += adapt(adapt, a, half, panel(a, half), scale, 0);
     }
     return total;
 }
 
 TEST(ArcLength, AccuracyHoldsAgainstBruteForceQuadrature) {
     // Independent reference: brute_force_length above on 400 equal panels per
-    // segment (no adaptivity to fool). Random walks with chord lengths over
+    // segment, each halved until its halves agree to 1e-19 of the length. Random walks with chord lengths over
     // three decades make sharp speed minima, whose complex branch points near
     // a piece end once let the rule and its halves agree on a wrong value.
     CRSPLINE_SEEDED(s, 306);
@@ -502,10 +521,10 @@ TEST(ArcLength, AccuracyHoldsAgainstBruteForceQuadrature) {
                 const double ref = double(brute_force_length(seg, 400));
                 for (double acc : {1e-6, 1e-9, 1e-12}) {
                     // The reference: a 12-point rule is exact to degree 23,
-                    // and 400 panels put even a speed minimum 1e-3 wide well
-                    // inside the rule's convergence region; it is good to
-                    // ~1e-15 relative here (the slack 1e-14 covers it and the
-                    // rounding of the sum).
+                    // on 400 panels halved where their halves disagree; it is
+                    // good to ~1e-16 relative here, long double's rounding
+                    // of 4,800 terms or more (the slack 1e-14 covers it and
+                    // the rounding of the sum).
                     EXPECT_LE(std::abs(arc_length(seg, acc) - ref), acc * ref + 1e-14 * ref)
                         << "alpha " << alpha << " segment " << i << " accuracy " << acc;
                 }

@@ -108,8 +108,8 @@ template <int G, class V, class M, class S>
             // The length estimate, as first_rule's: half the speed at the
             // middle (as middle_norms bounds it) times the width.
             const V estimate = one * pm / 2;
-            choose_rule_lanes<V, M, S>(zero, one, zr, zi, rem, pm, dpm, cn, eff, estimate, rn, rho, ratio, bound,
-                                       cut);
+            choose_rule_lanes<V, M, S>(zero, one, zr, zi, rem, qg, err, pm, dpm, cn, eff, estimate, rn, rho, ratio,
+                                       bound, cut);
             chosen = ok & (estimate > zero);
         }
         for (int l = 0; l < W && g * W + l < count; ++l) {
@@ -232,7 +232,7 @@ template <class V, class M, class S>
     V pm, dpm, n, rho, ratio, bound, cut;
     middle_norms<V, S>(q, dq, err, a + (b - a) / 2, pm, dpm);
     const V estimate = (b - a) * pm / 2;
-    choose_rule_lanes<V, M, S>(a, b, zr, zi, rem, pm, dpm, cn, eff, estimate, n, rho, ratio, bound, cut);
+    choose_rule_lanes<V, M, S>(a, b, zr, zi, rem, q, err, pm, dpm, cn, eff, estimate, n, rho, ratio, bound, cut);
     const M chosen = estimate > 0;
     for (int l = 0; l < W && l < count; ++l)
         out[l] = lanes_get(chosen, l) ? lane_rule(n, rho, ratio, bound, cut, l) : rule_choice{};
