@@ -522,4 +522,92 @@ TEST(GeoSmooth, PartByPartSharesNothing) {
     for (const auto& f : r.features) EXPECT_EQ(f.verdict, geo::verdict::simple);
 }
 
+// Measures only without topology ("length only") takes each part from
+// cleaning to its length before the next (smooth.hpp, measure_alone): its
+// numbers must be those of the general path, which smooths the same parts
+// alone with output polylines (the tension levels do not depend on the
+// polylines). Exact equality: the same arithmetic on the same arcs with the
+// same layer-wide slack. Lines, rings, multi-part features, a degenerate
+// part, an invalid one, an empty feature, extra values, max_deviation and
+// kept curves.
+TEST(GeoSmooth, MeasuresAlonePartByPartAreThoseOfTheGeneralPath) {
+    CRSPLINE_SEEDED(seed, 47);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::size_t compared = 0, degenerate = 0, invalid = 0, tensioned = 0;
+    for (int rep = 0; rep < 12; ++rep) {
+        geo::layer l;
+        l.extra_dims = rep % 2;
+        const std::size_t features = 5 + rng() % 20;
+        for (std::size_t f = 0; f < features + 1; ++f) {  // the last one has no part: empty
+            if (f == features) {
+                l.feature_count = features + 1;
+                break;
+            }
+            const std::size_t parts = 1 + rng() % 3;
+            for (std::size_t q = 0; q < parts; ++q) {
+                const bool ring = rng() % 3 == 0;
+                const std::size_t n = rng() % 9 == 0 ? 2 : 3 + rng() % 25;
+                std::vector<P> pts = ring ? star(rng, P{{100.0 * double(f), 7.0 * double(q)}}, 2.0, n + 1, 0.6)
+                                          : std::vector<P>{};
+                if (!ring) {
+                    P at{{100.0 * double(f), 7.0 * double(q)}};
+                    double h = 2 * std::numbers::pi * u(rng);
+                    for (std::size_t k = 0; k < n; ++k) {
+                        pts.push_back(at);
+                        h += (2 * u(rng) - 1) * std::numbers::pi / 2;
+                        at = at + (0.3 + u(rng)) * P{{std::cos(h), std::sin(h)}};
+                    }
+                }
+                // Degenerate, and far away: the rounding slack is the largest
+                // coordinate of the parts smoothed, not of these.
+                if (rng() % 11 == 0) pts.assign(pts.size(), pts.front() + P{{1e7, 0}});
+                if (rng() % 4 == 0) pts.insert(pts.begin() + 1, pts[1]);  // a repeated vertex, cleaned away
+                std::vector<double> xy = flat(pts), ex(pts.size() * l.extra_dims);
+                for (auto& e : ex) e = u(rng);
+                if (rng() % 13 == 0) xy[1] = INFINITY;  // invalid
+                l.add_part(f, ring ? part_kind::ring : part_kind::line, xy, ex);
+            }
+        }
+        geo::smooth_options opt{.tolerance = 0.01, .preserve_topology = false};
+        if (rep % 3 == 1) opt.max_deviation = 0.05;
+        opt.keep_curves = rep % 4 == 3;
+        opt.polylines = true;
+        const auto general = geo::smooth(l, opt);
+        opt.polylines = false;
+        const auto alone = geo::smooth(l, opt);
+        ASSERT_EQ(alone.features.size(), general.features.size()) << "rep " << rep;
+        for (std::size_t f = 0; f < general.features.size(); ++f) {
+            const auto &a = alone.features[f], &g = general.features[f];
+            EXPECT_EQ(a.status, g.status) << "rep " << rep << " feature " << f;
+            EXPECT_EQ(a.message, g.message) << "rep " << rep << " feature " << f;
+            EXPECT_EQ(a.verdict, g.verdict) << "rep " << rep << " feature " << f;
+            EXPECT_EQ(a.length, g.length) << "rep " << rep << " feature " << f;
+            EXPECT_EQ(a.max_deviation, g.max_deviation) << "rep " << rep << " feature " << f;
+            degenerate += g.status == geo::feature_status::degenerate;
+            invalid += g.status == geo::feature_status::invalid;
+            ++compared;
+        }
+        EXPECT_EQ(alone.stats.arcs, general.stats.arcs) << "rep " << rep;
+        EXPECT_EQ(alone.stats.junctions, general.stats.junctions) << "rep " << rep;
+        EXPECT_EQ(alone.stats.rounds, general.stats.rounds) << "rep " << rep;
+        EXPECT_EQ(alone.stats.tensioned_vertices, general.stats.tensioned_vertices) << "rep " << rep;
+        EXPECT_EQ(alone.stats.linear_segments, general.stats.linear_segments) << "rep " << rep;
+        tensioned += general.stats.tensioned_vertices;
+        // The output is the input.
+        EXPECT_EQ(alone.output.xy, l.xy) << "rep " << rep;
+        EXPECT_EQ(alone.output.extra, l.extra) << "rep " << rep;
+        EXPECT_EQ(alone.output.part_offsets, l.part_offsets) << "rep " << rep;
+        ASSERT_EQ(alone.curves.size(), general.curves.size()) << "rep " << rep;
+        for (std::size_t c = 0; c < general.curves.size(); ++c) {
+            EXPECT_EQ(alone.curves[c].features, general.curves[c].features);
+            EXPECT_EQ(alone.curves[c].curve.bezier(), general.curves[c].curve.bezier());
+        }
+    }
+    EXPECT_GT(compared, 100u);
+    EXPECT_GT(degenerate, 2u);
+    EXPECT_GT(invalid, 2u);
+    EXPECT_GT(tensioned, 0u);  // max_deviation raised tension somewhere
+}
+
 }  // namespace

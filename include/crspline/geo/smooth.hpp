@@ -801,10 +801,18 @@ struct proof {
     // taken and its curve and hulls released (memory stays that of the
     // output). The same levels, round by round, as the rounds of run().
     void run_alone() {
-        constexpr std::size_t max_rounds = 64;
         crossing.assign(arcs.size(), 0);
         for (std::uint32_t i = 0; i < arcs.size(); ++i) {
             if (opt.progress && i % 4096 == 0) opt.progress(0.8 * double(i) / double(arcs.size()));
+            alone(i);
+        }
+    }
+
+    // One arc's rounds without topology (run_alone()), then its length;
+    // its curve and hulls released unless smooth_options::keep_curves.
+    void alone(std::uint32_t i) {
+        constexpr std::size_t max_rounds = 64;
+        {
             arc_work& a = arcs[i];
             for (std::size_t round = 1;; ++round) {
                 rounds = std::max(rounds, round);
@@ -824,7 +832,7 @@ struct proof {
             }
             a.length = arc_curve_length(a);
             a.measured = true;
-            if (opt.keep_curves) continue;  // smooth() hands it over
+            if (opt.keep_curves) return;  // smooth() hands it over
             a.curve.reset();
             a.base.reset();
             std::vector<std::array<p2, 4>>().swap(a.hull);
@@ -1096,6 +1104,76 @@ struct proof {
 
 }  // namespace detail
 
+namespace detail {
+
+// smooth() without topology and without output polylines ("length only"):
+// each part is cleaned, measured and released before the next, so the
+// memory is that of the output (the input passed through) and the time per
+// part does not grow with the layer (no topology, no arc array, nothing
+// held from one part to the next). The same numbers as the general path:
+// there every part is an arc of its own, proved alone (proof::run_alone)
+// with the layer's rounding slack, found here by a first pass over the
+// parts that will be smoothed (the largest coordinate of their cleaned
+// points is that of their input points: cleaning drops repeats only).
+template <class CleanOne>
+void measure_alone(const layer& in, const smooth_options& opt, smooth_result& res, CleanOne& clean_one) {
+    const std::size_t nparts = in.part_count(), E = in.extra_dims;
+    double scale = 0;
+    for (std::size_t p = 0; p < nparts; ++p) {
+        if (res.features[in.part_features[p]].status == feature_status::invalid || in.part_size(p) == 0) continue;
+        const std::size_t need = in.part_kinds[p] == part_kind::ring ? 3 : 2;
+        std::array<std::array<double, 2>, 3> seen{};
+        std::size_t distinct = 0;
+        double m = 0;
+        for (std::size_t v = in.part_offsets[p]; v < in.part_offsets[p + 1]; ++v) {
+            const std::array<double, 2> q{in.xy[2 * v], in.xy[2 * v + 1]};
+            m = std::max({m, std::abs(q[0]), std::abs(q[1])});
+            if (distinct < need &&
+                std::find(seen.begin(), seen.begin() + std::ptrdiff_t(distinct), q) == seen.begin() + std::ptrdiff_t(distinct))
+                seen[distinct++] = q;
+        }
+        if (distinct == need) scale = std::max(scale, m);
+    }
+    const double slack = 64 * std::numeric_limits<double>::epsilon() * std::max(scale, opt.tolerance);
+    std::vector<arc_work> one(1);
+    proof pr{one, opt, slack};
+    layer& out = res.output;
+    out.extra_dims = E;
+    out.feature_count = in.feature_count;
+    out.part_kinds = in.part_kinds;
+    out.part_features = in.part_features;
+    out.xy = in.xy;
+    out.extra = in.extra;
+    out.part_offsets = in.part_offsets;
+    for (std::size_t p = 0; p < nparts; ++p) {
+        if (opt.progress && p % 4096 == 0) opt.progress(double(p) / double(nparts));
+        clean_part c;
+        if (!clean_one(p, c)) continue;
+        arc_work& a = one[0];
+        a = arc_work{};
+        a.closed = c.ring;
+        a.pts.resize(c.points.size());
+        for (std::size_t k = 0; k < c.points.size(); ++k) a.pts[k] = p2{{c.points[k][0], c.points[k][1]}};
+        // A two-point open arc is its segment.
+        a.level.assign(a.pts.size(), a.pts.size() == 2 && !a.closed ? linear_level : 0);
+        a.raise.assign(a.segments(), 0);
+        pr.alone(0);
+        auto& rep = res.features[c.feature];
+        rep.length += a.length;
+        rep.max_deviation = std::max(rep.max_deviation, a.max_dev);
+        ++res.stats.arcs;
+        if (!a.closed) res.stats.junctions += 2;  // a line's ends
+        res.stats.pieces += a.pieces;
+        for (auto l : a.level) res.stats.tensioned_vertices += l > 0 && !(a.pts.size() == 2 && !a.closed);
+        for (std::size_t s = 0; s < a.segments(); ++s) res.stats.linear_segments += a.linear(s);
+        if (opt.keep_curves) res.curves.push_back({std::move(*a.curve), {c.feature}});
+    }
+    res.stats.rounds = pr.rounds;
+    if (opt.progress) opt.progress(1.0);
+}
+
+}  // namespace detail
+
 /// Smooths the layer (see the file comment for what is promised). Throws
 /// invalid_input for bad options or arrays that disagree; bad coordinates
 /// make their feature `invalid` instead.
@@ -1142,13 +1220,12 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
                 res.features[f].message = "no vertices";
             }
     }
-    std::vector<clean_part> clean;
-    std::vector<std::size_t> clean_of(nparts, SIZE_MAX);  // part -> index in clean, or pass-through
-    for (std::size_t p = 0; p < nparts; ++p) {
+    // Part p cleaned into c; false (the feature's status and message set
+    // where the part is degenerate) when it is not smoothed.
+    auto clean_one = [&](std::size_t p, clean_part& c) {
         const std::size_t f = in.part_features[p];
         auto& rep = res.features[f];
-        if (rep.status == feature_status::invalid || in.part_size(p) == 0) continue;
-        clean_part c;
+        if (rep.status == feature_status::invalid || in.part_size(p) == 0) return false;
         c.ring = in.part_kinds[p] == part_kind::ring;
         c.feature = f;
         c.points.reserve(in.part_size(p));
@@ -1178,8 +1255,19 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
                           std::to_string(distinct) + " distinct point" + (distinct == 1 ? "" : "s") +
                           ", a " + (c.ring ? "ring" : "line") + " needs " + std::to_string(need) +
                           ": passed through unchanged";
-            continue;
+            return false;
         }
+        return true;
+    };
+    if (!opt.preserve_topology && !opt.polylines) {
+        detail::measure_alone(in, opt, res, clean_one);  // clean_one writes res's statuses
+        return res;
+    }
+    std::vector<clean_part> clean;
+    std::vector<std::size_t> clean_of(nparts, SIZE_MAX);  // part -> index in clean, or pass-through
+    for (std::size_t p = 0; p < nparts; ++p) {
+        clean_part c;
+        if (!clean_one(p, c)) continue;
         clean_of[p] = clean.size();
         clean.push_back(std::move(c));
     }
@@ -1201,7 +1289,18 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
     double scale = 0;
     for (const auto& p : topo.points) scale = std::max({scale, std::abs(p[0]), std::abs(p[1])});
     const double slack = 64 * std::numeric_limits<double>::epsilon() * std::max(scale, tol);
-    std::vector<std::array<double, 2>>().swap(topo.points);  // the arcs have their points
+    // What the topology still holds that the arcs now have is released
+    // before the proof, whose allocations reuse it (fewer fresh pages): its
+    // points, each arc's vertex ids but the ends (the verdicts need them),
+    // and without extra values the layer vertex of each arc vertex.
+    std::vector<std::array<double, 2>>().swap(topo.points);
+    std::vector<std::array<std::size_t, 2>> arc_ends(topo.arcs.size());
+    for (std::size_t i = 0; i < topo.arcs.size(); ++i) {
+        auto& t = topo.arcs[i];
+        arc_ends[i] = {t.vertices.front(), t.vertices.back()};
+        std::vector<std::size_t>().swap(t.vertices);
+        if (E == 0) std::vector<std::size_t>().swap(t.source);
+    }
 
     // 3. Rounds: build, tessellate, prove; raise tension where not proved.
     detail::proof pr{arcs, opt, slack};
@@ -1324,10 +1423,10 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
     // sorted and unique (one flat array: a list per vertex of the layer was
     // a fresh, mostly empty 24 bytes per vertex).
     std::vector<std::pair<std::size_t, std::size_t>> junction_features;
-    for (const auto& t : topo.arcs)
-        if (!t.closed)
-            for (std::size_t v : {t.vertices.front(), t.vertices.back()})
-                for (std::size_t f : t.features) junction_features.push_back({v, f});
+    for (std::size_t i = 0; i < topo.arcs.size(); ++i)
+        if (!topo.arcs[i].closed)
+            for (std::size_t v : arc_ends[i])
+                for (std::size_t f : topo.arcs[i].features) junction_features.push_back({v, f});
     std::sort(junction_features.begin(), junction_features.end());
     junction_features.erase(std::unique(junction_features.begin(), junction_features.end()), junction_features.end());
     auto features_at = [&](std::size_t v) {  // distinct features with an arc ending at v
@@ -1340,7 +1439,7 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
         const auto& t = topo.arcs[i];
         bool touches = t.features.size() > 1;
         if (!t.closed)
-            for (std::size_t v : {t.vertices.front(), t.vertices.back()})
+            for (std::size_t v : arc_ends[i])
                 touches = touches || features_at(v) > 1;
         for (std::size_t f : t.features) {
             auto& rep = res.features[f];
