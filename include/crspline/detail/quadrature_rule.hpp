@@ -1,9 +1,11 @@
 // crspline internal: which Gauss-Legendre rule a piece of a segment needs.
-// From the speed's branch points (speed_branch_points.hpp), the Bernstein
-// ellipse just inside the nearest of them, Rouche's theorem that the speed
-// is analytic there, and Trefethen's bound on the rule's error; the
-// smallest rule of rule_sizes (gauss_legendre.hpp) whose bound is below the
-// accuracy times the length (the proof is in speed_quadrature.hpp's head).
+// From the speed's branch points (speed_branch_points.hpp): first Darboux's
+// bound for a square-root singularity, each root located in a small disk by
+// Rouche's theorem (sqrt_type_bound, the proof in its comment); where that
+// fails, the Bernstein ellipse just inside the nearest branch point,
+// Rouche's theorem that the speed is analytic there, and Trefethen's bound
+// (speed_quadrature.hpp's head). The smallest rule of rule_sizes
+// (gauss_legendre.hpp) whose bound is below the accuracy times the length.
 #pragma once
 
 #include <algorithm>

@@ -26,8 +26,14 @@
 // is Trefethen's Theorem 19.3 with 64/15 sharpened for n >= 8, and with
 // the factor 1 / (1 - rho^-2) = rho^2 / (rho^2 - 1) that the form
 // 1 / (rho^2 - 1) of "Is Gauss quadrature better than Clenshaw-Curtis?",
-// SIAM Review 2008, Theorem 4.5, leaves out.) The smallest rule whose bound
-// is below the accuracy times the length it computes is the piece's.
+// SIAM Review 2008, Theorem 4.5, leaves out.) That bound uses only the
+// ellipse, not the type of the singularity on it: the speed behaves like
+// sqrt(u - z0) at a branch point, whose Chebyshev coefficients fall a
+// further k^(-3/2). choose_rule tries that first (sqrt_type_bound in
+// quadrature_rule.hpp: the same quadrature argument with the contour taken
+// past the branch points along cuts, each root placed in a proved disk),
+// and this bound where it fails. The smallest rule whose bound is below
+// the accuracy times the length it computes is the piece's.
 // Pieces with no rule of at most 64 points proved are cut at the nearest
 // branch point's real part; the few that still fail (speed zeros inside:
 // cusps, folds, tension 1) go to the slower path that cuts at the speed's
