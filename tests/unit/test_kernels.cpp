@@ -267,13 +267,13 @@ TEST(Kernels, FloatWalkCrossesKnotsInsideSteps) {
 }
 
 TEST(Kernels, DoubleWalkCrossesKnotsInsideSteps) {
-    // The AVX-512 double walk (detail::sorted_walk3_512 on doubles, issue 30):
-    // 8-point steps that cross knots are computed on each segment they meet
-    // and blended. With about 4 points a segment, every knot hit exactly, a
+    // The double walks (detail::sorted_walk3_512 and _256 on doubles, issue
+    // 30): 8- or 4-point steps that cross knots are computed on each segment
+    // they meet and blended. With about 4 points a segment, every knot hit exactly, a
     // repeated parameter, a zero interval, all 8 output offsets mod 64 bytes
     // (24-byte points shifted by 0..7), whole and short batches, and one
     // batch large enough for non-temporal stores, each point must equal the
-    // AVX2 runs' and the portable kernel's bit for bit, and positions the
+    // 4-lane walk's and the portable kernel's bit for bit, and positions the
     // single-point path; an adjacent pair swapped across a knot must fall
     // back and still agree, a NaN must give the out_of_domain error.
     CRSPLINE_SEEDED(s, 78);
@@ -292,8 +292,9 @@ TEST(Kernels, DoubleWalkCrossesKnotsInsideSteps) {
         for (std::size_t k = 0; k < extra; ++k) t.push_back(std::min(U(rng), c.t_max()));
         t.push_back(t[t.size() / 2]);
         std::sort(t.begin(), t.end());
-        // Paths: 0 the 8-lane walk (where the CPU has AVX-512F), 1 the AVX2
-        // runs, 2 the portable kernel; t from `from` on, out shifted.
+        // Paths: 0 the 8-lane walk (where the CPU has AVX-512F), 1 the 4-lane
+        // walk (where it has AVX2), 2 the portable kernel; t from `from` on,
+        // out shifted.
         auto run = [&](int path, std::size_t from, std::size_t shift, int order) {
 #if CRSPLINE_X86_DISPATCH
             bool &avx2 = detail::avx2_enabled(), &wide = detail::avx512_enabled();
@@ -314,14 +315,14 @@ TEST(Kernels, DoubleWalkCrossesKnotsInsideSteps) {
             if (rep == 4 && shift % 3 != 0) continue;  // the large batch at offsets 0, 24 and 48 bytes mod 64
             for (int order : {0, 1}) {
                 for (std::size_t from : {std::size_t(0), t.size() - 1 - shift, t.size() - 9 - shift}) {
-                    const auto walk = run(0, from, shift, order), runs = run(1, from, shift, order),
+                    const auto walk = run(0, from, shift, order), walk4 = run(1, from, shift, order),
                                portable = run(2, from, shift, order);
                     ASSERT_EQ(walk.size(), t.size() - from);
                     for (std::size_t k = 0; k < walk.size(); ++k) {
                         ASSERT_TRUE(same_bits(walk[k], portable[k]))
                             << "rep " << rep << " shift " << shift << " order " << order << " from " << from << " k " << k;
-                        ASSERT_TRUE(same_bits(runs[k], portable[k]))
-                            << "runs: rep " << rep << " shift " << shift << " order " << order << " k " << k;
+                        ASSERT_TRUE(same_bits(walk4[k], portable[k]))
+                            << "4 lanes: rep " << rep << " shift " << shift << " order " << order << " k " << k;
                         if (order == 0) {
                             ASSERT_TRUE(same_bits(walk[k], c.evaluate(t[from + k]))) << "rep " << rep << " k " << k;
                         }
@@ -344,16 +345,19 @@ TEST(Kernels, DoubleWalkCrossesKnotsInsideSteps) {
             k0 = across[a];
             std::swap(t[k0], t[k0 + 1]);
             for (std::size_t j = 0; j <= std::min<std::size_t>(k0, 9); ++j)
-                for (std::size_t shift : {0u, 1u, 3u, 6u}) {
-                    const auto swapped = run(0, k0 - j, shift, 0);
-                    for (std::size_t k = 0; k < swapped.size(); ++k)
-                        ASSERT_TRUE(same_bits(swapped[k], c.evaluate(t[k0 - j + k])))
-                            << "from " << k0 - j << " shift " << shift << " k " << k << " (swapped at " << k0 << ")";
-                }
+                for (std::size_t shift : {0u, 1u, 3u, 6u})
+                    for (int path : {0, 1}) {
+                        const auto swapped = run(path, k0 - j, shift, 0);
+                        for (std::size_t k = 0; k < swapped.size(); ++k)
+                            ASSERT_TRUE(same_bits(swapped[k], c.evaluate(t[k0 - j + k])))
+                                << "path " << path << " from " << k0 - j << " shift " << shift << " k " << k
+                                << " (swapped at " << k0 << ")";
+                    }
             std::swap(t[k0], t[k0 + 1]);
         }
         t[k0] = std::numeric_limits<double>::quiet_NaN();
         EXPECT_THROW(run(0, 0, 0, 0), out_of_domain) << "NaN at " << k0;
+        EXPECT_THROW(run(1, 0, 0, 0), out_of_domain) << "NaN at " << k0;
     }
     // 4 small curves x 8 offsets x 2 orders x 3 batches of at least 160
     // points, and the large batch: 3 offsets x 2 orders x 400,000.

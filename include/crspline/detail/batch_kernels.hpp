@@ -162,14 +162,17 @@ struct batch_kernels {
                 if (order == 0) exact_last_points(c, t, out);
                 return true;
             }
-        // 3-D doubles on a CPU with AVX-512F: the same walk, 8 lanes (issue 30;
-        // with AVX2 alone, the 4-lane runs below).
+        // 3-D doubles: the same walk, 8 lanes with AVX-512F, else 4 (issue 30).
         if constexpr (D == 3 && std::is_same_v<T, double>)
-            if (order <= 1 && detail::avx2_enabled() && detail::avx512_enabled()) {
+            if (order <= 1 && detail::avx2_enabled()) {
                 T* o = reinterpret_cast<T*>(out.data());
+                const bool wide = detail::avx512_enabled();
                 const bool sorted =
-                    order == 0 ? detail::sorted_walk3_512<0>(walk_segments<0>{c}, seg, t.data(), o, n, stream)
-                               : detail::sorted_walk3_512<1>(walk_segments<1>{c}, seg, t.data(), o, n, stream);
+                    order == 0
+                        ? (wide ? detail::sorted_walk3_512<0>(walk_segments<0>{c}, seg, t.data(), o, n, stream)
+                                : detail::sorted_walk3_256<0>(walk_segments<0>{c}, seg, t.data(), o, n, stream))
+                        : (wide ? detail::sorted_walk3_512<1>(walk_segments<1>{c}, seg, t.data(), o, n, stream)
+                                : detail::sorted_walk3_256<1>(walk_segments<1>{c}, seg, t.data(), o, n, stream));
                 if (stream) detail::store_fence();
                 if (!sorted) return false;
                 if (order == 0) exact_last_points(c, t, out);
@@ -335,17 +338,6 @@ struct batch_kernels {
         return k;
     }
 #if CRSPLINE_X86_DISPATCH
-    // The AVX2 kernel (detail/x86_kernels.hpp) for 3-D doubles: the same
-    // coefficients as run_kernel, the same operations 4 points at a time.
-    template <int Order>
-    static std::size_t run3_avx2(const segment_type& s, const T* t, point* out, std::size_t n, T& previous,
-                                 bool stream, T t_end, bool& unsorted) noexcept {
-        T o[3], a[3], b[3], c[3];
-        run_coefficients<Order>(s, o, a, b, c);
-        return detail::sorted_run3<Order>(o, a, b, c, s.t0, s.inv_h, t, reinterpret_cast<T*>(out), n, previous, stream,
-                                          t_end, unsorted);
-    }
-
     // Unsorted positions: position_unchecked with the domain check of the
     // batch, in blocks of 32 points. First every point of the block is
     // located (a chain of dependent loads and arithmetic per point, but
@@ -425,12 +417,6 @@ struct batch_kernels {
     // when a point is not >= the one before it (or is NaN).
     static std::size_t run(const segment_type& s, const T* t, point* out, std::size_t n, int order, T& previous,
                            bool stream, T t_end, bool& unsorted) noexcept {
-#if CRSPLINE_X86_DISPATCH
-        if constexpr (D == 3 && std::is_same_v<T, double>)  // (floats: the walk in evaluate_sorted)
-            if (order <= 1 && detail::avx2_enabled())
-                return order == 0 ? run3_avx2<0>(s, t, out, n, previous, stream, t_end, unsorted)
-                                  : run3_avx2<1>(s, t, out, n, previous, stream, t_end, unsorted);
-#endif
         switch (order) {
             case 0: return run_kernel<0>(s, t, out, n, previous, stream, t_end, unsorted, std::make_index_sequence<D>{});
             case 1: return run_kernel<1>(s, t, out, n, previous, stream, t_end, unsorted, std::make_index_sequence<D>{});

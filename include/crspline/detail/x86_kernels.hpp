@@ -58,7 +58,7 @@ inline bool& avx512_enabled() noexcept {
 /// in 3 registers exactly as laid out in memory (double: x0 y0 z0 x1 | y1 z1
 /// x2 y2 | z2 x3 y3 z3): lane j of register r holds scalar e = W r + j of
 /// the step, that is coordinate e % 3 of point e / 3. So the coefficients
-/// are arranged once per run (pattern) and u once per step (spread, one
+/// are arranged once per segment (pattern) and u once per step (spread, one
 /// permute per register), and no result needs a shuffle.
 template <class T>
 struct lanes256;
@@ -126,52 +126,10 @@ struct lanes256<float> {
     }
 };
 
-/// The vector loop of sorted_run3 from point k while W points remain and
-/// are below t_end; returns the new k. Stream: non-temporal stores (out + 3 k
-/// 32-byte aligned). 3 permutes per W points, no shuffle of results.
-template <class T, int Order, bool Stream>
-CRSPLINE_TARGET_AVX2 std::size_t sorted_loop3(const T* o, const T* a, const T* b, const T* c, T t0, T ih, T t_end,
-                                              const T* t, T* out, std::size_t k, std::size_t n,
-                                              typename lanes256<T>::V& good) noexcept {
-    using L = lanes256<T>;
-    using V = typename L::V;
-    constexpr std::size_t W = L::W;
-    const V vt0 = L::set1(t0), vih = L::set1(ih), vend = L::set1(t_end);
-    const V A0 = L::pattern(a, 0), A1 = L::pattern(a, 1), A2 = L::pattern(a, 2);
-    const V B0 = L::pattern(b, 0), B1 = L::pattern(b, 1), B2 = L::pattern(b, 2);
-    const V C0 = L::pattern(c, 0), C1 = L::pattern(c, 1), C2 = L::pattern(c, 2);
-    const T zero[3] = {T(0), T(0), T(0)};
-    const T* oo = Order == 0 ? o : zero;
-    const V O0 = L::pattern(oo, 0), O1 = L::pattern(oo, 1), O2 = L::pattern(oo, 2);
-    for (; k + W <= n; k += W) {
-        const V x = L::load(t + k);
-        // Stop before a step with a point at or past the end knot (or NaN).
-        if (L::mask(L::lt(x, vend)) != L::all) break;
-        good = L::both(good, L::le(L::load(t + k - 1), x));  // sorted; false for NaN too
-        const V u = L::mul(L::sub(x, vt0), vih);
-        const V U0 = L::template spread<0>(u), U1 = L::template spread<1>(u), U2 = L::template spread<2>(u);
-        V r0 = L::add(A0, L::mul(U0, L::add(B0, L::mul(U0, C0))));
-        V r1 = L::add(A1, L::mul(U1, L::add(B1, L::mul(U1, C1))));
-        V r2 = L::add(A2, L::mul(U2, L::add(B2, L::mul(U2, C2))));
-        if constexpr (Order == 0) {
-            r0 = L::add(O0, L::mul(U0, r0));
-            r1 = L::add(O1, L::mul(U1, r1));
-            r2 = L::add(O2, L::mul(U2, r2));
-        }
-        T* dst = out + 3 * k;
-        if constexpr (Stream) {
-            L::stream(dst, r0), L::stream(dst + W, r1), L::stream(dst + 2 * W, r2);
-        } else {
-            L::store(dst, r0), L::store(dst + W, r1), L::store(dst + 2 * W, r2);
-        }
-    }
-    return k;
-}
-
 /// The 512-bit float steps of a sorted batch (16 points, 48 floats in 3
 /// registers laid out as in memory: lane j of register r holds coordinate
-/// (16 r + j) % 3 of point (16 r + j) / 3), the same operations as
-/// sorted_loop3, so the same bits. A segment's coefficients are loaded by
+/// (16 r + j) % 3 of point (16 r + j) / 3), the same operations as the
+/// portable run_kernel (batch_kernels.hpp), so the same bits. A segment's coefficients are loaded by
 /// one masked load and 3 permutes each. (Issue 30: built through a 16-float
 /// array on the stack, as the 8-lane patterns were, each cost a failed
 /// store forward.)
@@ -207,7 +165,8 @@ struct steps512 {
     static __mmask16 first_lanes(unsigned q) noexcept { return __mmask16((1u << (q < 16 ? q : 16)) - 1); }
 
     /// Takes segment seg's coefficients: segments.load(seg, o, a, b, c, t0,
-    /// ih, t_end) fills them as sorted_run3's arguments.
+    /// ih, t_end) fills them: origin and Horner coefficients per coordinate
+    /// (run_coefficients), t0, 1/h and the end knot.
     template <class Segments>
     CRSPLINE_TARGET_AVX512 __attribute__((always_inline)) void load(const Segments& segments, std::size_t seg) noexcept {
         float o[3], a[3], b[3], c[3], t0, ih, t_end;
@@ -320,7 +279,7 @@ CRSPLINE_TARGET_AVX512 std::size_t bulk512(const steps512<Order> s, const float*
 /// Segments gives the curve's segments: next(seg, x), the segment of x
 /// from seg on (the sorted walk's rule: while x >= the next knot, the next
 /// segment), and load(seg, o, a, b, c, t0, ih, t_end), the coefficients
-/// as sorted_run3 takes them. One step of up to 16 points brings
+/// as steps512::load takes them. One step of up to 16 points brings
 /// out + 3 k to 64-byte alignment (12 h = -out mod 64 bytes, h in 1..16);
 /// then every step is 16 points, its stores whole cache lines
 /// (non-temporal when stream); a step that crosses a knot is computed on
@@ -487,7 +446,7 @@ CRSPLINE_TARGET_AVX2 bool sorted_walk3_256(const Segments& segments, std::size_t
 /// steps512 for 3-D doubles (issue 30): 8 points a step, 24 doubles in 3
 /// 512-bit registers laid out as in memory (lane j of register r holds
 /// coordinate (8 r + j) % 3 of point (8 r + j) / 3), the same operations
-/// as sorted_loop3 on doubles, so the same bits. On the AMD EPYC the 4-lane
+/// as the portable run_kernel, so the same bits. On the AMD EPYC the 4-lane
 /// AVX2 runs took 6.3 ms of instructions per 10^7 points in cache, about
 /// the whole time memset takes to write the output: this walk halves the
 /// arithmetic and drops the runs (BENCHMARKS.md, issue 30).
@@ -612,7 +571,7 @@ CRSPLINE_TARGET_AVX512 std::size_t bulk512d(const steps512d<Order> s, const doub
 /// sorted_walk3_512 for 3-D doubles: steps of 8 points (192 bytes, three
 /// whole cache lines, non-temporal when stream) after one step of up to 8
 /// that brings out + 3 k to 64-byte alignment (24 h = -out mod 64 bytes,
-/// h in 1..8). The same bits as the AVX2 runs and the portable kernel.
+/// h in 1..8). The same bits as the 4-lane walk and the portable kernel.
 template <int Order, class Segments>
 CRSPLINE_TARGET_AVX512 bool sorted_walk3_512(const Segments& segments, std::size_t seg, const double* t, double* out,
                                              std::size_t n, bool stream) noexcept {
@@ -636,51 +595,136 @@ CRSPLINE_TARGET_AVX512 bool sorted_walk3_512(const Segments& segments, std::size
     return k == n || s.step(segments, seg, t + k, out + 3 * k, unsigned(n - k), false, false);
 }
 
-/// One sorted run of a 3-D segment (double or float), as catmull_rom's
-/// portable run_kernel: out[k] = o + u (a + u (b + u c)) (Order 0) or
-/// a + u (b + u c) (Order 1, o unused) with u = (t[k] - t0) ih, for t[0] and
-/// the points after it while they are below t_end (at most n); returns how
-/// many. Sets unsorted when t is not sorted there (or holds a NaN). out
-/// holds 3 n scalars. Large outputs (stream) use non-temporal stores once
-/// out is 32-byte aligned. (On a CPU with AVX-512F: sorted_walk3_512, floats
-/// and doubles, the same bits.)
-template <int Order, class T>
-CRSPLINE_TARGET_AVX2 std::size_t sorted_run3(const T* o, const T* a, const T* b, const T* c, T t0, T ih,
-                                             const T* t, T* out, std::size_t n, T& previous, bool stream, T t_end,
-                                             bool& unsorted) noexcept {
-    using L = lanes256<T>;
-    constexpr std::size_t W = L::W;
-    unsigned bad = 0;
-    T prev = previous;
-    std::size_t k = 0;
-    // One point, scalar: the same expression as the portable kernel.
-    auto one = [&](std::size_t q) {
-        const T x = t[q];
-        bad |= unsigned(!(prev <= x));
-        prev = x;
-        const T u = (x - t0) * ih;
-        for (int d = 0; d < 3; ++d) {
-            if constexpr (Order == 0) out[3 * q + d] = o[d] + u * (a[d] + u * (b[d] + u * c[d]));
-            else out[3 * q + d] = a[d] + u * (b[d] + u * c[d]);
-        }
-    };
-    // Head: at least one point (t[k - 1] is read below), then up to W - 1
-    // more until the output is 32-byte aligned (a point is 3 scalars, so W
-    // steps visit every scalar-aligned offset).
-    if (n > 0) one(k++);
-    while (k < n && k < W && t[k] < t_end && reinterpret_cast<std::uintptr_t>(out + 3 * k) % 32 != 0) one(k++);
-    if (k + W <= n) {
-        typename L::V good = L::ones();
-        const bool streaming = stream && reinterpret_cast<std::uintptr_t>(out + 3 * k) % 32 == 0;
-        k = streaming ? sorted_loop3<T, Order, true>(o, a, b, c, t0, ih, t_end, t, out, k, n, good)
-                      : sorted_loop3<T, Order, false>(o, a, b, c, t0, ih, t_end, t, out, k, n, good);
-        prev = t[k - 1];
-        bad |= unsigned(L::mask(good) != L::all);
+/// steps256 for 3-D doubles on CPUs with AVX2 and not AVX-512F (issue 30):
+/// 4 points a step, 12 doubles in 3 registers laid out as in memory
+/// (lanes256<double>'s layout), masks as vectors, masked loads and stores
+/// by maskload / maskstore; the same operations as the portable
+/// run_kernel, so the same bits. It replaced the 4-lane runs, one per
+/// segment capped at 4096 points, about 140 ns of set-up, scalar ends and
+/// shared lines each (on the AMD EPYC without AVX-512: 7.3 ms per 10^7
+/// points with the runs, 6.85-6.88 ms walked; BENCHMARKS.md, issue 30).
+template <int Order>
+struct steps256d {
+    using L = lanes256<double>;
+    __m256d A0, A1, A2, B0, B1, B2, C0, C1, C2, O0, O1, O2, vt0, vih, vend;
+
+    /// Lanes 0 .. min(q, 4) - 1 all ones, the others zero.
+    CRSPLINE_TARGET_AVX2 static __m256i first_lanes(unsigned q) noexcept {
+        return _mm256_cmpgt_epi64(_mm256_set1_epi64x(q < 4 ? q : 4), _mm256_setr_epi64x(0, 1, 2, 3));
     }
-    while (k < n && t[k] < t_end) one(k++);
-    previous = prev;
-    unsorted = unsorted || bad != 0;
+
+    template <class Segments>
+    CRSPLINE_TARGET_AVX2 __attribute__((always_inline)) void load(const Segments& segments, std::size_t seg) noexcept {
+        double o[3], a[3], b[3], c[3], t0, ih, t_end;
+        segments.load(seg, o, a, b, c, t0, ih, t_end);
+        A0 = L::pattern(a, 0), A1 = L::pattern(a, 1), A2 = L::pattern(a, 2);
+        B0 = L::pattern(b, 0), B1 = L::pattern(b, 1), B2 = L::pattern(b, 2);
+        C0 = L::pattern(c, 0), C1 = L::pattern(c, 1), C2 = L::pattern(c, 2);
+        if constexpr (Order == 0) O0 = L::pattern(o, 0), O1 = L::pattern(o, 1), O2 = L::pattern(o, 2);
+        else O0 = O1 = O2 = _mm256_setzero_pd();
+        vt0 = L::set1(t0), vih = L::set1(ih), vend = L::set1(t_end);
+    }
+
+    /// The 4 points at parameters x on this segment, as 12 doubles in r0 r1 r2.
+    CRSPLINE_TARGET_AVX2 void points(__m256d x, __m256d& r0, __m256d& r1, __m256d& r2) const noexcept {
+        const __m256d u = L::mul(L::sub(x, vt0), vih);
+        const __m256d U0 = L::spread<0>(u), U1 = L::spread<1>(u), U2 = L::spread<2>(u);
+        r0 = L::add(A0, L::mul(U0, L::add(B0, L::mul(U0, C0))));
+        r1 = L::add(A1, L::mul(U1, L::add(B1, L::mul(U1, C1))));
+        r2 = L::add(A2, L::mul(U2, L::add(B2, L::mul(U2, C2))));
+        if constexpr (Order == 0) {
+            r0 = L::add(O0, L::mul(U0, r0));
+            r1 = L::add(O1, L::mul(U1, r1));
+            r2 = L::add(O2, L::mul(U2, r2));
+        }
+    }
+
+    /// steps512::step with 4 lanes (1 <= m <= 4; nt: m = 4, out 32-byte
+    /// aligned).
+    template <class Segments>
+    CRSPLINE_TARGET_AVX2 __attribute__((always_inline)) bool step(const Segments& segments, std::size_t& seg,
+                                                                  const double* t, double* out, unsigned m,
+                                                                  bool first, bool nt) noexcept {
+        const __m256i in = first_lanes(m);
+        const int in_bits = int((1u << m) - 1);
+        const __m256d x = _mm256_maskload_pd(t, in);
+        // Lane j's predecessor: t[j - 1]; for the batch's first step t[0]
+        // in lane 0 (x's lanes moved up one, lane 0 kept: t[-1] is not read).
+        const __m256d before = first ? _mm256_permute4x64_pd(x, 0x90) : _mm256_maskload_pd(t - 1, in);
+        if ((L::mask(L::le(before, x)) & in_bits) != in_bits) return false;  // not sorted, or NaN
+        __m256d r0, r1, r2;
+        points(x, r0, r1, r2);
+        const __m256d X0 = L::spread<0>(x), X1 = L::spread<1>(x), X2 = L::spread<2>(x);
+        for (int past = L::mask(_mm256_cmp_pd(x, vend, _CMP_NLT_UQ)) & in_bits; past != 0;
+             past = L::mask(_mm256_cmp_pd(x, vend, _CMP_NLT_UQ)) & in_bits) {
+            const std::size_t next = segments.next(seg, t[__builtin_ctz(unsigned(past))]);
+            if (next == seg) break;  // (no later segment: cannot happen in the domain)
+            const __m256d end = vend;
+            seg = next;
+            load(segments, seg);
+            __m256d q0, q1, q2;
+            points(x, q0, q1, q2);
+            r0 = _mm256_blendv_pd(r0, q0, _mm256_cmp_pd(X0, end, _CMP_NLT_UQ));
+            r1 = _mm256_blendv_pd(r1, q1, _mm256_cmp_pd(X1, end, _CMP_NLT_UQ));
+            r2 = _mm256_blendv_pd(r2, q2, _mm256_cmp_pd(X2, end, _CMP_NLT_UQ));
+        }
+        if (nt) {
+            L::stream(out, r0), L::stream(out + 4, r1), L::stream(out + 8, r2);
+        } else {
+            const unsigned f = 3 * m;  // doubles to store
+            _mm256_maskstore_pd(out, first_lanes(f), r0);
+            _mm256_maskstore_pd(out + 4, first_lanes(f > 4 ? f - 4 : 0), r1);
+            _mm256_maskstore_pd(out + 8, first_lanes(f > 8 ? f - 8 : 0), r2);
+        }
+        return true;
+    }
+};
+
+/// bulk512 in 4 double lanes (out + 3 k 32-byte aligned when Stream).
+template <int Order, bool Stream>
+CRSPLINE_TARGET_AVX2 std::size_t bulk256d(const steps256d<Order> s, const double* t, double* out, std::size_t k,
+                                          std::size_t n) noexcept {
+    using L = lanes256<double>;
+    for (; k + 4 <= n; k += 4) {
+        const __m256d x = L::load(t + k);
+        if (L::mask(L::both(L::lt(x, s.vend), L::le(L::load(t + k - 1), x))) != 0xF) break;
+        __m256d r0, r1, r2;
+        s.points(x, r0, r1, r2);
+        double* dst = out + 3 * k;
+        if constexpr (Stream) {
+            L::stream(dst, r0), L::stream(dst + 4, r1), L::stream(dst + 8, r2);
+        } else {
+            L::store(dst, r0), L::store(dst + 4, r1), L::store(dst + 8, r2);
+        }
+    }
     return k;
+}
+
+/// sorted_walk3_256 for 3-D doubles: steps of 4 points (96 bytes; two
+/// steps fill 3 cache lines, by non-temporal 32-byte stores when stream),
+/// after one step of up to 4 that brings out + 3 k to 32-byte alignment
+/// (24 h = -out mod 32 bytes, h in 1..4). The same bits.
+template <int Order, class Segments>
+CRSPLINE_TARGET_AVX2 bool sorted_walk3_256(const Segments& segments, std::size_t seg, const double* t, double* out,
+                                           std::size_t n, bool stream) noexcept {
+    if (n == 0) return true;
+    steps256d<Order> s;
+    s.load(segments, seg);
+    // 3 h = -(out mod 32) / 8 (mod 4), and 3 = 1 / 3 (mod 4).
+    const unsigned eighth = unsigned(reinterpret_cast<std::uintptr_t>(out) % 32) / 8;
+    const unsigned h0 = (3 * ((4 - eighth) % 4)) % 4, h = h0 == 0 ? 4 : h0;
+    const unsigned m = unsigned(n < h ? n : h);
+    if (!s.step(segments, seg, t, out, m, true, stream && m == 4)) return false;
+    std::size_t k = m;
+    // out + 3 k is 32-byte aligned from here on.
+    while (k + 4 <= n) {
+        k = stream ? bulk256d<Order, true>(s, t, out, k, n) : bulk256d<Order, false>(s, t, out, k, n);
+        if (k + 4 <= n) {
+            if (!s.step(segments, seg, t + k, out + 3 * k, 4, false, stream)) return false;
+            k += 4;
+        }
+    }
+    return k == n || s.step(segments, seg, t + k, out + 3 * k, unsigned(n - k), false, false);
 }
 
 /// Loads a 3-D double point into lanes 0-2 (lane 3 zero) without reading
