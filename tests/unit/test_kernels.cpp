@@ -166,6 +166,29 @@ TEST(Kernels, FloatSortedBatchesAgreeBitForBit) {
 #endif
 }
 
+// Sorted 3-D batch evaluation of c on one path: 0 the widest walk (AVX-512F
+// where the CPU has it), 1 the AVX2 walk, 2 the portable kernel; t from
+// `from` on, written to an output shifted by `shift` points (other
+// alignments), returned without the shift.
+template <class T>
+std::vector<vec<3, T>> evaluate_on_path(const catmull_rom<3, T>& c, const std::vector<T>& t, int path, std::size_t from,
+                                        std::size_t shift, int order) {
+#if CRSPLINE_X86_DISPATCH
+    bool &avx2 = detail::avx2_enabled(), &wide = detail::avx512_enabled();
+    const bool had2 = avx2, had512 = wide;
+    wide = wide && path == 0;
+    avx2 = avx2 && path <= 1;
+#else
+    (void)path;
+#endif
+    std::vector<vec<3, T>> buf(t.size() - from + shift);
+    c.evaluate(std::span<const T>(t).subspan(from), std::span<vec<3, T>>(buf).subspan(shift), order);
+#if CRSPLINE_X86_DISPATCH
+    avx2 = had2, wide = had512;
+#endif
+    return std::vector<vec<3, T>>(buf.begin() + std::ptrdiff_t(shift), buf.end());
+}
+
 TEST(Kernels, FloatWalkCrossesKnotsInsideSteps) {
     // The AVX-512 float walk (detail::sorted_walk3_512, issue 30) computes a
     // 16-point step that crosses knots on each segment it meets and blends
@@ -194,20 +217,7 @@ TEST(Kernels, FloatWalkCrossesKnotsInsideSteps) {
         // Each path: the 16-lane walk (where the CPU has AVX-512F), the
         // 8-lane walk (where it has AVX2), the portable kernel; t from `from` to the end, out shifted.
         auto run = [&](int path, std::size_t from, std::size_t shift, int order) {
-#if CRSPLINE_X86_DISPATCH
-            bool &avx2 = detail::avx2_enabled(), &wide = detail::avx512_enabled();
-            const bool had2 = avx2, had512 = wide;
-            wide = wide && path == 0;
-            avx2 = avx2 && path <= 1;
-#else
-            (void)path;
-#endif
-            std::vector<F3> buf(t.size() - from + shift);
-            c.evaluate(std::span<const float>(t).subspan(from), std::span<F3>(buf).subspan(shift), order);
-#if CRSPLINE_X86_DISPATCH
-            avx2 = had2, wide = had512;
-#endif
-            return std::vector<F3>(buf.begin() + std::ptrdiff_t(shift), buf.end());
+            return evaluate_on_path(c, t, path, from, shift, order);
         };
         for (std::size_t shift = 0; shift < 16; ++shift) {
             for (int order : {0, 1}) {
@@ -296,20 +306,7 @@ TEST(Kernels, DoubleWalkCrossesKnotsInsideSteps) {
         // walk (where it has AVX2), 2 the portable kernel; t from `from` on,
         // out shifted.
         auto run = [&](int path, std::size_t from, std::size_t shift, int order) {
-#if CRSPLINE_X86_DISPATCH
-            bool &avx2 = detail::avx2_enabled(), &wide = detail::avx512_enabled();
-            const bool had2 = avx2, had512 = wide;
-            wide = wide && path == 0;
-            avx2 = avx2 && path <= 1;
-#else
-            (void)path;
-#endif
-            std::vector<P3> buf(t.size() - from + shift);
-            c.evaluate(std::span<const double>(t).subspan(from), std::span<P3>(buf).subspan(shift), order);
-#if CRSPLINE_X86_DISPATCH
-            avx2 = had2, wide = had512;
-#endif
-            return std::vector<P3>(buf.begin() + std::ptrdiff_t(shift), buf.end());
+            return evaluate_on_path(c, t, path, from, shift, order);
         };
         for (std::size_t shift = 0; shift < 8; ++shift) {
             if (rep == 4 && shift % 3 != 0) continue;  // the large batch at offsets 0, 24 and 48 bytes mod 64

@@ -144,26 +144,11 @@ struct batch_kernels {
         const bool stream = n * sizeof(point) >= detail::streaming_threshold;
         std::size_t seg = c.locate(t[0]);
 #if CRSPLINE_X86_DISPATCH
-        // 3-D floats on a CPU with AVX2: the segments are walked inside the
-        // vector loop, 16 lanes with AVX-512F, else 8 (no runs;
-        // detail::sorted_walk3_512, sorted_walk3_256).
-        if constexpr (D == 3 && std::is_same_v<T, float>)
-            if (order <= 1 && detail::avx2_enabled()) {
-                T* o = reinterpret_cast<T*>(out.data());
-                const bool wide = detail::avx512_enabled();
-                const bool sorted =
-                    order == 0
-                        ? (wide ? detail::sorted_walk3_512<0>(walk_segments<0>{c}, seg, t.data(), o, n, stream)
-                                : detail::sorted_walk3_256<0>(walk_segments<0>{c}, seg, t.data(), o, n, stream))
-                        : (wide ? detail::sorted_walk3_512<1>(walk_segments<1>{c}, seg, t.data(), o, n, stream)
-                                : detail::sorted_walk3_256<1>(walk_segments<1>{c}, seg, t.data(), o, n, stream));
-                if (stream) detail::store_fence();
-                if (!sorted) return false;
-                if (order == 0) exact_last_points(c, t, out);
-                return true;
-            }
-        // 3-D doubles: the same walk, 8 lanes with AVX-512F, else 4 (issue 30).
-        if constexpr (D == 3 && std::is_same_v<T, double>)
+        // 3-D floats and doubles on a CPU with AVX2: the segments are walked
+        // inside the vector loop (no runs): 16 float or 8 double lanes with
+        // AVX-512F, else 8 or 4 (detail::sorted_walk3_512, sorted_walk3_256,
+        // overloaded on the scalar; issue 30).
+        if constexpr (D == 3 && (std::is_same_v<T, float> || std::is_same_v<T, double>))
             if (order <= 1 && detail::avx2_enabled()) {
                 T* o = reinterpret_cast<T*>(out.data());
                 const bool wide = detail::avx512_enabled();

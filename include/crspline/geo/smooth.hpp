@@ -183,6 +183,27 @@ namespace detail {
 inline constexpr double tension_levels[] = {0, 0.5, 0.8, 0.95, 1};
 inline constexpr std::uint8_t linear_level = 4;
 
+/// The distinct points among at(0) .. at(n - 1) (2-D points), counted up
+/// to `need` (a line needs 2, a ring 3; a ring may go back and forth over
+/// the same ones).
+template <class At>
+std::size_t distinct_up_to(std::size_t n, std::size_t need, At&& at) {
+    std::array<std::array<double, 2>, 3> seen{};
+    std::size_t distinct = 0;
+    for (std::size_t i = 0; i < n && distinct < need; ++i) {
+        const std::array<double, 2> q = at(i);
+        if (std::find(seen.begin(), seen.begin() + std::ptrdiff_t(distinct), q) == seen.begin() + std::ptrdiff_t(distinct))
+            seen[distinct++] = q;
+    }
+    return distinct;
+}
+
+/// The proof's rounding slack: a few ulps of the largest coordinate of the
+/// parts smoothed (or of the tolerance, when that is larger).
+inline double rounding_slack(double scale, double tolerance) {
+    return 64 * std::numeric_limits<double>::epsilon() * std::max(scale, tolerance);
+}
+
 using p2 = vec<2>;
 
 inline double cross2(const p2& a, const p2& b) noexcept { return a[0] * b[1] - a[1] * b[0]; }
@@ -1122,19 +1143,13 @@ void measure_alone(const layer& in, const smooth_options& opt, smooth_result& re
     for (std::size_t p = 0; p < nparts; ++p) {
         if (res.features[in.part_features[p]].status == feature_status::invalid || in.part_size(p) == 0) continue;
         const std::size_t need = in.part_kinds[p] == part_kind::ring ? 3 : 2;
-        std::array<std::array<double, 2>, 3> seen{};
-        std::size_t distinct = 0;
+        const std::size_t v0 = in.part_offsets[p], v1 = in.part_offsets[p + 1];
         double m = 0;
-        for (std::size_t v = in.part_offsets[p]; v < in.part_offsets[p + 1]; ++v) {
-            const std::array<double, 2> q{in.xy[2 * v], in.xy[2 * v + 1]};
-            m = std::max({m, std::abs(q[0]), std::abs(q[1])});
-            if (distinct < need &&
-                std::find(seen.begin(), seen.begin() + std::ptrdiff_t(distinct), q) == seen.begin() + std::ptrdiff_t(distinct))
-                seen[distinct++] = q;
-        }
-        if (distinct == need) scale = std::max(scale, m);
+        for (std::size_t v = v0; v < v1; ++v) m = std::max({m, std::abs(in.xy[2 * v]), std::abs(in.xy[2 * v + 1])});
+        const auto at = [&](std::size_t i) { return std::array<double, 2>{in.xy[2 * (v0 + i)], in.xy[2 * (v0 + i) + 1]}; };
+        if (distinct_up_to(v1 - v0, need, at) == need) scale = std::max(scale, m);
     }
-    const double slack = 64 * std::numeric_limits<double>::epsilon() * std::max(scale, opt.tolerance);
+    const double slack = rounding_slack(scale, opt.tolerance);
     std::vector<arc_work> one(1);
     proof pr{one, opt, slack};
     layer& out = res.output;
@@ -1241,14 +1256,7 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
             c.source.pop_back();
         }
         const std::size_t need = c.ring ? 3 : 2;
-        // Distinct points, counted up to `need` (a ring may go back and forth).
-        std::array<std::array<double, 2>, 3> seen{};
-        std::size_t distinct = 0;
-        for (const auto& q : c.points) {
-            if (distinct == need) break;
-            if (std::find(seen.begin(), seen.begin() + std::ptrdiff_t(distinct), q) == seen.begin() + std::ptrdiff_t(distinct))
-                seen[distinct++] = q;
-        }
+        const std::size_t distinct = detail::distinct_up_to(c.points.size(), need, [&](std::size_t i) { return c.points[i]; });
         if (distinct < need) {
             rep.status = feature_status::degenerate;
             rep.message = "part " + std::to_string(part_index[p]) + " (" + (c.ring ? "ring" : "line") + ") has " +
@@ -1288,7 +1296,7 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
     // Rounding slack: a few ulps of the largest coordinate.
     double scale = 0;
     for (const auto& p : topo.points) scale = std::max({scale, std::abs(p[0]), std::abs(p[1])});
-    const double slack = 64 * std::numeric_limits<double>::epsilon() * std::max(scale, tol);
+    const double slack = detail::rounding_slack(scale, tol);
     std::vector<std::array<double, 2>>().swap(topo.points);  // the arcs have their points
 
     // 3. Rounds: build, tessellate, prove; raise tension where not proved.
