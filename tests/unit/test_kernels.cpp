@@ -422,6 +422,27 @@ TEST(Kernels, ArcLengthRulesAgreeBitForBit) {
         compare(catmull_rom<2>(p, {.alpha = rep % 2 ? 0.5 : 1.0, .closed = rep == 3}));
     }
     EXPECT_GT(checked, 2u * (6 + 4) * 20u);
+    // Every rule of rule_sizes by itself (the AVX2 clone takes the nodes'
+    // square roots four at a time, the portable code two: issue 30), on
+    // random 3-D segments over random sub-intervals, the sub-interval's ends
+    // also at 0 and 1.
+    std::size_t rules = 0;
+    std::uniform_real_distribution<double> U(0, 1);
+    for (int rep = 0; rep < 50; ++rep) {
+        cubic_segment<3> seg;
+        for (std::size_t k = 0; k < 3; ++k) seg.c1[k] = g(rng), seg.c2[k] = g(rng), seg.c3[k] = g(rng);
+        seg.h = seg.inv_h = 1;
+        double a = U(rng), b = U(rng);
+        if (a > b) std::swap(a, b);
+        if (rep % 5 == 0) a = 0, b = 1;
+        for (int n : detail::rule_sizes) {
+            const auto [fast, portable] = both_paths([&] { return detail::gauss_length_rule(seg, a, b, n); });
+            ASSERT_EQ(std::memcmp(&fast, &portable, sizeof(double)), 0)
+                << n << " points, rep " << rep << " on [" << a << ", " << b << "]";
+            ++rules;
+        }
+    }
+    EXPECT_EQ(rules, 50u * std::size(detail::rule_sizes));
 }
 
 TEST(Kernels, ArcLengthHardSegmentsAgreeBitForBit) {

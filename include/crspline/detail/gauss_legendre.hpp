@@ -190,19 +190,40 @@ struct gauss_legendre<64, T> {
                               T(0.00884675982636394772303091), T(0.00650445796897836285611736), T(0.00414703326056246763528754), T(0.00178328072169643294729608)};
 };
 
-/// q[i] = sqrt(q[i]) for non-negative q: two at a time with SSE2 for
-/// double (std::sqrt keeps errno semantics, which stops the compiler from
-/// vectorizing it).
-template <int N, class T>
-[[gnu::always_inline]] inline void sqrt_all(T (&q)[N]) noexcept {
+/// q[i] = sqrt(q[i]) for non-negative q, a template argument of
+/// gauss_length_n: node_sqrt_sse2 two at a time (the x86-64 baseline;
+/// std::sqrt keeps errno semantics, which stops the compiler from
+/// vectorizing it), node_sqrt_avx2 four at a time, for the AVX2 clone of
+/// the rules only. Both round correctly: the same bits. (Issue 30: on the
+/// AMD EPYC (Zen 5) a square root instruction takes the same time, 1.9 ns,
+/// for 2, 4 or 8 doubles, measured; the nodes of the benchmark's walk took
+/// 14 SSE2 square roots a segment, 27 of its 37 ns in the rules. Eight at a
+/// time with AVX-512 measured no faster than four: the rest of the rule
+/// then sets the pace.)
+struct node_sqrt_sse2 {
+    template <int N, class T>
+    [[gnu::always_inline]] static void all(T (&q)[N]) noexcept {
 #if defined(__SSE2__)
-    if constexpr (std::is_same_v<T, double> && N % 2 == 0) {
-        for (int i = 0; i < N; i += 2) _mm_storeu_pd(q + i, _mm_sqrt_pd(_mm_loadu_pd(q + i)));
-        return;
-    }
+        if constexpr (std::is_same_v<T, double> && N % 2 == 0) {
+            for (int i = 0; i < N; i += 2) _mm_storeu_pd(q + i, _mm_sqrt_pd(_mm_loadu_pd(q + i)));
+            return;
+        }
 #endif
-    for (int i = 0; i < N; ++i) q[i] = std::sqrt(q[i]);
-}
+        for (int i = 0; i < N; ++i) q[i] = std::sqrt(q[i]);
+    }
+};
+#if CRSPLINE_X86_DISPATCH
+struct node_sqrt_avx2 {
+    template <int N, class T>
+    CRSPLINE_TARGET_AVX2 static void all(T (&q)[N]) noexcept {
+        if constexpr (std::is_same_v<T, double> && N % 4 == 0) {
+            for (int i = 0; i < N; i += 4) _mm256_storeu_pd(q + i, _mm256_sqrt_pd(_mm256_loadu_pd(q + i)));
+        } else {
+            node_sqrt_sse2::all(q);
+        }
+    }
+};
+#endif
 
 /// Integral of the speed of s over [a, b] by the N-point rule: all nodes
 /// first, then the components (a loop the compiler vectorizes), then the
@@ -211,7 +232,7 @@ template <int N, class T>
 /// one fixed rule (the benchmark's 16-point baseline) gets the rule in its
 /// body (whether GCC inlined it on its own changed that loop's time by a
 /// third from one build to the next).
-template <int N, std::size_t D, class T>
+template <int N, class Sqrt = node_sqrt_sse2, std::size_t D, class T>
 [[gnu::always_inline]] inline T gauss_length_n(const cubic_segment<D, T>& s, T a, T b) noexcept {
     using G = gauss_legendre<N, T>;
     constexpr int H = N / 2;
@@ -229,7 +250,7 @@ template <int N, std::size_t D, class T>
             q[i] += p * p;
         }
     }
-    sqrt_all<N>(q);
+    Sqrt::all(q);
     T sum = 0;
     for (int i = 0; i < H; ++i) sum += G::w[i] * (q[i] + q[H + i]);
     return sum * r;
@@ -248,35 +269,36 @@ static_assert([] {
 }());
 
 /// gauss_length_rule's switch, inlined into the portable function and into
-/// its AVX2 clone.
-template <std::size_t D, class T>
+/// its AVX2 clone (Sqrt: the node_sqrt of each).
+template <class Sqrt, std::size_t D, class T>
 [[gnu::always_inline]] inline T gauss_length_switch(const cubic_segment<D, T>& s, T a, T b, int n) noexcept {
     switch (n) {
-        case 12: return gauss_length_n<12>(s, a, b);
-        case 16: return gauss_length_n<16>(s, a, b);
-        case 20: return gauss_length_n<20>(s, a, b);
-        case 24: return gauss_length_n<24>(s, a, b);
-        case 28: return gauss_length_n<28>(s, a, b);
-        case 32: return gauss_length_n<32>(s, a, b);
-        case 36: return gauss_length_n<36>(s, a, b);
-        case 40: return gauss_length_n<40>(s, a, b);
-        case 44: return gauss_length_n<44>(s, a, b);
-        case 48: return gauss_length_n<48>(s, a, b);
-        case 56: return gauss_length_n<56>(s, a, b);
-        case 64: return gauss_length_n<64>(s, a, b);
-        default: return gauss_length_n<8>(s, a, b);
+        case 12: return gauss_length_n<12, Sqrt>(s, a, b);
+        case 16: return gauss_length_n<16, Sqrt>(s, a, b);
+        case 20: return gauss_length_n<20, Sqrt>(s, a, b);
+        case 24: return gauss_length_n<24, Sqrt>(s, a, b);
+        case 28: return gauss_length_n<28, Sqrt>(s, a, b);
+        case 32: return gauss_length_n<32, Sqrt>(s, a, b);
+        case 36: return gauss_length_n<36, Sqrt>(s, a, b);
+        case 40: return gauss_length_n<40, Sqrt>(s, a, b);
+        case 44: return gauss_length_n<44, Sqrt>(s, a, b);
+        case 48: return gauss_length_n<48, Sqrt>(s, a, b);
+        case 56: return gauss_length_n<56, Sqrt>(s, a, b);
+        case 64: return gauss_length_n<64, Sqrt>(s, a, b);
+        default: return gauss_length_n<8, Sqrt>(s, a, b);
     }
 }
 
 #if CRSPLINE_X86_DISPATCH
 /// The rules compiled for AVX2 (4 doubles per instruction, three-operand
-/// forms): the same operations on each node, the same sum in the same
-/// order, no FMA, so the same bits as the portable code. (Issue 30: the
-/// nodes were 55% of arc_length's instructions, 21 a node with SSE2 of which
-/// a sixth were register copies.)
+/// forms, the square roots too): the same
+/// operations on each node, the same sum in the same order, no FMA, so the
+/// same bits as the portable code. (Issue 30: the nodes were 55% of
+/// arc_length's instructions, 21 a node with SSE2 of which a sixth were
+/// register copies.)
 template <std::size_t D, class T>
 CRSPLINE_TARGET_AVX2 T gauss_length_rule_avx2(const cubic_segment<D, T>& s, T a, T b, int n) noexcept {
-    return gauss_length_switch(s, a, b, n);
+    return gauss_length_switch<node_sqrt_avx2>(s, a, b, n);
 }
 #endif
 
@@ -287,7 +309,7 @@ T gauss_length_rule(const cubic_segment<D, T>& s, T a, T b, int n) noexcept {
     if constexpr (std::is_same_v<T, double>)
         if (avx2_enabled()) return gauss_length_rule_avx2(s, a, b, n);
 #endif
-    return gauss_length_switch(s, a, b, n);
+    return gauss_length_switch<node_sqrt_sse2>(s, a, b, n);
 }
 
 }  // namespace crspline::detail
