@@ -147,7 +147,7 @@ struct batch_kernels {
         // 3-D floats and doubles on a CPU with AVX2: the segments are walked
         // inside the vector loop (no runs): 16 float or 8 double lanes with
         // AVX-512F, else 8 or 4 (detail::sorted_walk3_512, sorted_walk3_256,
-        // overloaded on the scalar; issue 30).
+        // templates over the scalar; issue 30).
         if constexpr (D == 3 && (std::is_same_v<T, float> || std::is_same_v<T, double>))
             if (order <= 1 && detail::avx2_enabled()) {
                 T* o = reinterpret_cast<T*>(out.data());

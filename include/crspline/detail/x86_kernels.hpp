@@ -59,17 +59,21 @@ inline bool& avx512_enabled() noexcept {
 /// x2 y2 | z2 x3 y3 z3): lane j of register r holds scalar e = W r + j of
 /// the step, that is coordinate e % 3 of point e / 3. So the coefficients
 /// are arranged once per segment (pattern) and u once per step (spread, one
-/// permute per register), and no result needs a shuffle.
+/// permute per register), and no result needs a shuffle. Masks are vectors
+/// (all ones or zero per lane), masked loads and stores maskload /
+/// maskstore.
 template <class T>
 struct lanes256;
 
 template <>
 struct lanes256<double> {
     using V = __m256d;
-    static constexpr std::size_t W = 4;
+    static constexpr unsigned W = 4;
     static constexpr int all = 0xF;
     CRSPLINE_TARGET_AVX2 static V set1(double x) noexcept { return _mm256_set1_pd(x); }
+    CRSPLINE_TARGET_AVX2 static V zero() noexcept { return _mm256_setzero_pd(); }
     CRSPLINE_TARGET_AVX2 static V load(const double* p) noexcept { return _mm256_loadu_pd(p); }
+    CRSPLINE_TARGET_AVX2 static V maskload(const double* p, __m256i in) noexcept { return _mm256_maskload_pd(p, in); }
     CRSPLINE_TARGET_AVX2 static V add(V a, V b) noexcept { return _mm256_add_pd(a, b); }
     CRSPLINE_TARGET_AVX2 static V sub(V a, V b) noexcept { return _mm256_sub_pd(a, b); }
     CRSPLINE_TARGET_AVX2 static V mul(V a, V b) noexcept { return _mm256_mul_pd(a, b); }
@@ -77,9 +81,19 @@ struct lanes256<double> {
     CRSPLINE_TARGET_AVX2 static V ones() noexcept { return _mm256_castsi256_pd(_mm256_set1_epi64x(-1)); }
     CRSPLINE_TARGET_AVX2 static V lt(V a, V b) noexcept { return _mm256_cmp_pd(a, b, _CMP_LT_OQ); }
     CRSPLINE_TARGET_AVX2 static V le(V a, V b) noexcept { return _mm256_cmp_pd(a, b, _CMP_LE_OQ); }
+    CRSPLINE_TARGET_AVX2 static V nlt(V a, V b) noexcept { return _mm256_cmp_pd(a, b, _CMP_NLT_UQ); }
     CRSPLINE_TARGET_AVX2 static int mask(V a) noexcept { return _mm256_movemask_pd(a); }
+    /// a where m is zero, b where it is all ones.
+    CRSPLINE_TARGET_AVX2 static V blend(V a, V b, V m) noexcept { return _mm256_blendv_pd(a, b, m); }
     CRSPLINE_TARGET_AVX2 static void store(double* p, V a) noexcept { _mm256_storeu_pd(p, a); }
+    CRSPLINE_TARGET_AVX2 static void maskstore(double* p, __m256i in, V a) noexcept { _mm256_maskstore_pd(p, in, a); }
     CRSPLINE_TARGET_AVX2 static void stream(double* p, V a) noexcept { _mm256_stream_pd(p, a); }
+    /// Lanes 0 .. min(q, 4) - 1 all ones, the others zero.
+    CRSPLINE_TARGET_AVX2 static __m256i first_lanes(unsigned q) noexcept {
+        return _mm256_cmpgt_epi64(_mm256_set1_epi64x(q < 4 ? q : 4), _mm256_setr_epi64x(0, 1, 2, 3));
+    }
+    /// Lane j: x[j - 1], lane 0 kept (x's lanes moved up one).
+    CRSPLINE_TARGET_AVX2 static V shift_up(V x) noexcept { return _mm256_permute4x64_pd(x, 0x90); }
     CRSPLINE_TARGET_AVX2 static V pattern(const double* v, int r) noexcept {
         return _mm256_setr_pd(v[(4 * r) % 3], v[(4 * r + 1) % 3], v[(4 * r + 2) % 3], v[(4 * r + 3) % 3]);
     }
@@ -95,10 +109,12 @@ struct lanes256<double> {
 template <>
 struct lanes256<float> {
     using V = __m256;
-    static constexpr std::size_t W = 8;
+    static constexpr unsigned W = 8;
     static constexpr int all = 0xFF;
     CRSPLINE_TARGET_AVX2 static V set1(float x) noexcept { return _mm256_set1_ps(x); }
+    CRSPLINE_TARGET_AVX2 static V zero() noexcept { return _mm256_setzero_ps(); }
     CRSPLINE_TARGET_AVX2 static V load(const float* p) noexcept { return _mm256_loadu_ps(p); }
+    CRSPLINE_TARGET_AVX2 static V maskload(const float* p, __m256i in) noexcept { return _mm256_maskload_ps(p, in); }
     CRSPLINE_TARGET_AVX2 static V add(V a, V b) noexcept { return _mm256_add_ps(a, b); }
     CRSPLINE_TARGET_AVX2 static V sub(V a, V b) noexcept { return _mm256_sub_ps(a, b); }
     CRSPLINE_TARGET_AVX2 static V mul(V a, V b) noexcept { return _mm256_mul_ps(a, b); }
@@ -106,9 +122,21 @@ struct lanes256<float> {
     CRSPLINE_TARGET_AVX2 static V ones() noexcept { return _mm256_castsi256_ps(_mm256_set1_epi32(-1)); }
     CRSPLINE_TARGET_AVX2 static V lt(V a, V b) noexcept { return _mm256_cmp_ps(a, b, _CMP_LT_OQ); }
     CRSPLINE_TARGET_AVX2 static V le(V a, V b) noexcept { return _mm256_cmp_ps(a, b, _CMP_LE_OQ); }
+    CRSPLINE_TARGET_AVX2 static V nlt(V a, V b) noexcept { return _mm256_cmp_ps(a, b, _CMP_NLT_UQ); }
     CRSPLINE_TARGET_AVX2 static int mask(V a) noexcept { return _mm256_movemask_ps(a); }
+    /// a where m is zero, b where it is all ones.
+    CRSPLINE_TARGET_AVX2 static V blend(V a, V b, V m) noexcept { return _mm256_blendv_ps(a, b, m); }
     CRSPLINE_TARGET_AVX2 static void store(float* p, V a) noexcept { _mm256_storeu_ps(p, a); }
+    CRSPLINE_TARGET_AVX2 static void maskstore(float* p, __m256i in, V a) noexcept { _mm256_maskstore_ps(p, in, a); }
     CRSPLINE_TARGET_AVX2 static void stream(float* p, V a) noexcept { _mm256_stream_ps(p, a); }
+    /// Lanes 0 .. min(q, 8) - 1 all ones, the others zero.
+    CRSPLINE_TARGET_AVX2 static __m256i first_lanes(unsigned q) noexcept {
+        return _mm256_cmpgt_epi32(_mm256_set1_epi32(int(q < 8 ? q : 8)), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+    }
+    /// Lane j: x[j - 1], lane 0 kept (x's lanes moved up one).
+    CRSPLINE_TARGET_AVX2 static V shift_up(V x) noexcept {
+        return _mm256_permutevar8x32_ps(x, _mm256_setr_epi32(0, 0, 1, 2, 3, 4, 5, 6));
+    }
     // (One masked load and a permute: built through a stack array, as
     // before issue 30, each pattern cost a failed store forward.)
     CRSPLINE_TARGET_AVX2 static V pattern(const float* v, int r) noexcept {
@@ -126,26 +154,54 @@ struct lanes256<float> {
     }
 };
 
-/// The 512-bit float steps of a sorted batch (16 points, 48 floats in 3
-/// registers laid out as in memory: lane j of register r holds coordinate
-/// (16 r + j) % 3 of point (16 r + j) / 3), the same operations as the
-/// portable run_kernel (batch_kernels.hpp), so the same bits. A segment's coefficients are loaded by
-/// one masked load and 3 permutes each. (Issue 30: built through a 16-float
-/// array on the stack, as the 8-lane patterns were, each cost a failed
-/// store forward.)
-template <int Order>
-struct steps512 {
-    __m512 A0, A1, A2, B0, B1, B2, C0, C1, C2, O0, O1, O2, vt0, vih, vend;
+/// 512-bit lanes of floats (16) or doubles (8) for the AVX-512F steps, in
+/// lanes256's layout (lane j of register r holds coordinate (W r + j) % 3 of
+/// point (W r + j) / 3 of the step); masks are bits (__mmask16, __mmask8),
+/// and masked loads and stores read and write nothing outside their lanes.
+template <class T>
+struct lanes512;
 
+template <>
+struct lanes512<float> {
+    using V = __m512;
+    using M = __mmask16;
+    static constexpr unsigned W = 16;
+    static constexpr unsigned all = 0xFFFF;
+    CRSPLINE_TARGET_AVX512 static V set1(float x) noexcept { return _mm512_set1_ps(x); }
+    CRSPLINE_TARGET_AVX512 static V zero() noexcept { return _mm512_setzero_ps(); }
+    CRSPLINE_TARGET_AVX512 static V load(const float* p) noexcept { return _mm512_loadu_ps(p); }
+    CRSPLINE_TARGET_AVX512 static V maskload(M in, const float* p) noexcept { return _mm512_maskz_loadu_ps(in, p); }
+    CRSPLINE_TARGET_AVX512 static V add(V a, V b) noexcept { return _mm512_add_ps(a, b); }
+    CRSPLINE_TARGET_AVX512 static V sub(V a, V b) noexcept { return _mm512_sub_ps(a, b); }
+    CRSPLINE_TARGET_AVX512 static V mul(V a, V b) noexcept { return _mm512_mul_ps(a, b); }
+    CRSPLINE_TARGET_AVX512 static M lt(V a, V b) noexcept { return _mm512_cmp_ps_mask(a, b, _CMP_LT_OQ); }
+    CRSPLINE_TARGET_AVX512 static M le(V a, V b) noexcept { return _mm512_cmp_ps_mask(a, b, _CMP_LE_OQ); }
+    CRSPLINE_TARGET_AVX512 static M nlt(V a, V b) noexcept { return _mm512_cmp_ps_mask(a, b, _CMP_NLT_UQ); }
+    /// nlt in the lanes of in, zero in the others.
+    CRSPLINE_TARGET_AVX512 static M nlt(M in, V a, V b) noexcept {
+        return _mm512_mask_cmp_ps_mask(in, a, b, _CMP_NLT_UQ);
+    }
+    /// a where m is zero, b where it is one.
+    CRSPLINE_TARGET_AVX512 static V blend(V a, M m, V b) noexcept { return _mm512_mask_mov_ps(a, m, b); }
+    CRSPLINE_TARGET_AVX512 static void store(float* p, V a) noexcept { _mm512_storeu_ps(p, a); }
+    CRSPLINE_TARGET_AVX512 static void maskstore(float* p, M in, V a) noexcept { _mm512_mask_storeu_ps(p, in, a); }
+    CRSPLINE_TARGET_AVX512 static void stream(float* p, V a) noexcept { _mm512_stream_ps(p, a); }
+    /// Lanes 0 .. min(q, 16) - 1.
+    static M first_lanes(unsigned q) noexcept { return M((1u << (q < 16 ? q : 16)) - 1); }
+    /// Lane 0: first; lane j > 0: x[j - 1] (x's lanes 0-14 moved up one).
+    CRSPLINE_TARGET_AVX512 static V shift_in(V x, float first) noexcept {
+        return _mm512_castsi512_ps(
+            _mm512_maskz_alignr_epi32(0xFFFF, _mm512_castps_si512(x), _mm512_castps_si512(_mm512_set1_ps(first)), 15));
+    }
     /// Lane j of the result: v's lane idx[j]. (_mm512_permutexvar_ps is the
     /// same instruction, but GCC 12 warns about its own undefined source
     /// operand, a known false positive.)
-    CRSPLINE_TARGET_AVX512 static __m512 permute(__m512i idx, __m512 v) noexcept {
+    CRSPLINE_TARGET_AVX512 static V permute(__m512i idx, V v) noexcept {
         return _mm512_maskz_permutexvar_ps(0xFFFF, idx, v);
     }
     /// Lane j: v[(16 r + j) % 3], v one coordinate triple in lanes 0-2.
     template <int r>
-    CRSPLINE_TARGET_AVX512 static __m512 pattern(__m512 v) noexcept {
+    CRSPLINE_TARGET_AVX512 static V pattern(V v) noexcept {
         constexpr int f = 16 * r;
         return permute(_mm512_setr_epi32(f % 3, (f + 1) % 3, (f + 2) % 3, (f + 3) % 3, (f + 4) % 3, (f + 5) % 3,
                                          (f + 6) % 3, (f + 7) % 3, (f + 8) % 3, (f + 9) % 3, (f + 10) % 3,
@@ -154,312 +210,54 @@ struct steps512 {
     }
     /// Lane j: u[(16 r + j) / 3], the value of the point lane j is part of.
     template <int r>
-    CRSPLINE_TARGET_AVX512 static __m512 spread(__m512 u) noexcept {
+    CRSPLINE_TARGET_AVX512 static V spread(V u) noexcept {
         constexpr int f = 16 * r;
         return permute(_mm512_setr_epi32(f / 3, (f + 1) / 3, (f + 2) / 3, (f + 3) / 3, (f + 4) / 3, (f + 5) / 3,
                                          (f + 6) / 3, (f + 7) / 3, (f + 8) / 3, (f + 9) / 3, (f + 10) / 3,
                                          (f + 11) / 3, (f + 12) / 3, (f + 13) / 3, (f + 14) / 3, (f + 15) / 3),
                        u);
     }
-    /// Lanes 0 .. min(q, 16) - 1.
-    static __mmask16 first_lanes(unsigned q) noexcept { return __mmask16((1u << (q < 16 ? q : 16)) - 1); }
-
-    /// Takes segment seg's coefficients: segments.load(seg, o, a, b, c, t0,
-    /// ih, t_end) fills them: origin and Horner coefficients per coordinate
-    /// (run_coefficients), t0, 1/h and the end knot.
-    template <class Segments>
-    CRSPLINE_TARGET_AVX512 __attribute__((always_inline)) void load(const Segments& segments, std::size_t seg) noexcept {
-        float o[3], a[3], b[3], c[3], t0, ih, t_end;
-        segments.load(seg, o, a, b, c, t0, ih, t_end);
-        const __m512 va = _mm512_maskz_loadu_ps(0x7, a), vb = _mm512_maskz_loadu_ps(0x7, b),
-                     vc = _mm512_maskz_loadu_ps(0x7, c);
-        // (Order 1: no origin term.)
-        const __m512 vo = Order == 0 ? _mm512_maskz_loadu_ps(0x7, o) : _mm512_setzero_ps();
-        A0 = pattern<0>(va), A1 = pattern<1>(va), A2 = pattern<2>(va);
-        B0 = pattern<0>(vb), B1 = pattern<1>(vb), B2 = pattern<2>(vb);
-        C0 = pattern<0>(vc), C1 = pattern<1>(vc), C2 = pattern<2>(vc);
-        O0 = pattern<0>(vo), O1 = pattern<1>(vo), O2 = pattern<2>(vo);
-        vt0 = _mm512_set1_ps(t0), vih = _mm512_set1_ps(ih), vend = _mm512_set1_ps(t_end);
-    }
-
-    /// The 16 points at parameters x on this segment, as 48 floats in r0 r1 r2.
-    CRSPLINE_TARGET_AVX512 void points(__m512 x, __m512& r0, __m512& r1, __m512& r2) const noexcept {
-        const __m512 u = _mm512_mul_ps(_mm512_sub_ps(x, vt0), vih);
-        const __m512 U0 = spread<0>(u), U1 = spread<1>(u), U2 = spread<2>(u);
-        r0 = _mm512_add_ps(A0, _mm512_mul_ps(U0, _mm512_add_ps(B0, _mm512_mul_ps(U0, C0))));
-        r1 = _mm512_add_ps(A1, _mm512_mul_ps(U1, _mm512_add_ps(B1, _mm512_mul_ps(U1, C1))));
-        r2 = _mm512_add_ps(A2, _mm512_mul_ps(U2, _mm512_add_ps(B2, _mm512_mul_ps(U2, C2))));
-        if constexpr (Order == 0) {
-            r0 = _mm512_add_ps(O0, _mm512_mul_ps(U0, r0));
-            r1 = _mm512_add_ps(O1, _mm512_mul_ps(U1, r1));
-            r2 = _mm512_add_ps(O2, _mm512_mul_ps(U2, r2));
-        }
-    }
-
-    /// Any step of up to 16 points at t[0..m) (1 <= m <= 16): the batch's
-    /// first (first: t[-1] is not read, lane 0 is compared with t[0]), its
-    /// last, or one that crosses into later segments, with masked loads and
-    /// stores (nothing outside the m points is read or written) unless nt
-    /// (m = 16, out 64-byte aligned: non-temporal stores). Each lane gets
-    /// the segment the sorted walk gives it: the step is computed on seg,
-    /// then for the lanes at or past its end knot on the segment of the
-    /// first of them (segments.next), and so on; seg is left at the last.
-    /// Returns false, writing nothing, when the step is not sorted (or
-    /// holds NaN).
-    template <class Segments>
-    CRSPLINE_TARGET_AVX512 __attribute__((always_inline)) bool step(const Segments& segments, std::size_t& seg, const float* t, float* out,
-                                     unsigned m, bool first, bool nt) noexcept {
-        const __mmask16 in = first_lanes(m);
-        const __m512 x = _mm512_maskz_loadu_ps(in, t);
-        // Lane j's predecessor: t[j - 1], for the batch's first step t[0]
-        // in lane 0 (lanes 1-15 of x shifted up, t[-1] is not read).
-        const __m512 before =
-            first ? _mm512_castsi512_ps(_mm512_maskz_alignr_epi32(0xFFFF, _mm512_castps_si512(x),
-                                                                  _mm512_castps_si512(_mm512_set1_ps(t[0])), 15))
-                  : _mm512_maskz_loadu_ps(in, t - 1);
-        if ((_mm512_cmp_ps_mask(before, x, _CMP_LE_OQ) & in) != in) return false;  // not sorted, or NaN
-        __m512 r0, r1, r2;
-        points(x, r0, r1, r2);
-        const __m512 X0 = spread<0>(x), X1 = spread<1>(x), X2 = spread<2>(x);
-        for (__mmask16 past = _mm512_mask_cmp_ps_mask(in, x, vend, _CMP_NLT_UQ); past != 0;
-             past = _mm512_mask_cmp_ps_mask(in, x, vend, _CMP_NLT_UQ)) {
-            const std::size_t next = segments.next(seg, t[__builtin_ctz(past)]);
-            if (next == seg) break;  // (no later segment: cannot happen in the domain)
-            const __m512 end = vend;
-            seg = next;
-            load(segments, seg);
-            __m512 q0, q1, q2;
-            points(x, q0, q1, q2);
-            r0 = _mm512_mask_mov_ps(r0, _mm512_cmp_ps_mask(X0, end, _CMP_NLT_UQ), q0);
-            r1 = _mm512_mask_mov_ps(r1, _mm512_cmp_ps_mask(X1, end, _CMP_NLT_UQ), q1);
-            r2 = _mm512_mask_mov_ps(r2, _mm512_cmp_ps_mask(X2, end, _CMP_NLT_UQ), q2);
-        }
-        if (nt) {
-            _mm512_stream_ps(out, r0), _mm512_stream_ps(out + 16, r1), _mm512_stream_ps(out + 32, r2);
-        } else {
-            const unsigned f = 3 * m;  // floats to store
-            _mm512_mask_storeu_ps(out, first_lanes(f), r0);
-            _mm512_mask_storeu_ps(out + 16, first_lanes(f > 16 ? f - 16 : 0), r1);
-            _mm512_mask_storeu_ps(out + 32, first_lanes(f > 32 ? f - 32 : 0), r2);
-        }
-        return true;
-    }
 };
 
-/// The 16-point steps of sorted_walk3_512 from point k (out + 3 k 64-byte
-/// aligned when Stream: non-temporal stores of whole cache lines) while
-/// 16 points remain, are sorted and are below the segment's end knot;
-/// returns the new k. (It takes the coefficients by value: as members of
-/// an object whose address a call takes, GCC read them from memory each
-/// step.)
-template <int Order, bool Stream>
-CRSPLINE_TARGET_AVX512 std::size_t bulk512(const steps512<Order> s, const float* t, float* out, std::size_t k,
-                                           std::size_t n) noexcept {
-    for (; k + 16 <= n; k += 16) {
-        const __m512 x = _mm512_loadu_ps(t + k);
-        const unsigned go = unsigned(_mm512_cmp_ps_mask(x, s.vend, _CMP_LT_OQ)) &
-                            unsigned(_mm512_cmp_ps_mask(_mm512_loadu_ps(t + k - 1), x, _CMP_LE_OQ));
-        if (go != 0xFFFF) break;  // unsorted, NaN, or past the end knot: a step for sorted_walk3_512
-        __m512 r0, r1, r2;
-        s.points(x, r0, r1, r2);
-        float* dst = out + 3 * k;
-        if constexpr (Stream) {
-            _mm512_stream_ps(dst, r0), _mm512_stream_ps(dst + 16, r1), _mm512_stream_ps(dst + 32, r2);
-        } else {
-            _mm512_storeu_ps(dst, r0), _mm512_storeu_ps(dst + 16, r1), _mm512_storeu_ps(dst + 32, r2);
-        }
+template <>
+struct lanes512<double> {
+    using V = __m512d;
+    using M = __mmask8;
+    static constexpr unsigned W = 8;
+    static constexpr unsigned all = 0xFF;
+    CRSPLINE_TARGET_AVX512 static V set1(double x) noexcept { return _mm512_set1_pd(x); }
+    CRSPLINE_TARGET_AVX512 static V zero() noexcept { return _mm512_setzero_pd(); }
+    CRSPLINE_TARGET_AVX512 static V load(const double* p) noexcept { return _mm512_loadu_pd(p); }
+    CRSPLINE_TARGET_AVX512 static V maskload(M in, const double* p) noexcept { return _mm512_maskz_loadu_pd(in, p); }
+    CRSPLINE_TARGET_AVX512 static V add(V a, V b) noexcept { return _mm512_add_pd(a, b); }
+    CRSPLINE_TARGET_AVX512 static V sub(V a, V b) noexcept { return _mm512_sub_pd(a, b); }
+    CRSPLINE_TARGET_AVX512 static V mul(V a, V b) noexcept { return _mm512_mul_pd(a, b); }
+    CRSPLINE_TARGET_AVX512 static M lt(V a, V b) noexcept { return _mm512_cmp_pd_mask(a, b, _CMP_LT_OQ); }
+    CRSPLINE_TARGET_AVX512 static M le(V a, V b) noexcept { return _mm512_cmp_pd_mask(a, b, _CMP_LE_OQ); }
+    CRSPLINE_TARGET_AVX512 static M nlt(V a, V b) noexcept { return _mm512_cmp_pd_mask(a, b, _CMP_NLT_UQ); }
+    /// nlt in the lanes of in, zero in the others.
+    CRSPLINE_TARGET_AVX512 static M nlt(M in, V a, V b) noexcept {
+        return _mm512_mask_cmp_pd_mask(in, a, b, _CMP_NLT_UQ);
     }
-    return k;
-}
-
-/// A whole sorted batch of 3-D floats on a CPU with AVX-512F, the segments
-/// walked inside the vector loop (issue 30): the positions (Order 0) or
-/// velocities (Order 1) at t[0..n) into out (3 n floats), the same bits as
-/// the portable kernel's runs. seg: t[0]'s segment.
-/// Segments gives the curve's segments: next(seg, x), the segment of x
-/// from seg on (the sorted walk's rule: while x >= the next knot, the next
-/// segment), and load(seg, o, a, b, c, t0, ih, t_end), the coefficients
-/// as steps512::load takes them. One step of up to 16 points brings
-/// out + 3 k to 64-byte alignment (12 h = -out mod 64 bytes, h in 1..16);
-/// then every step is 16 points, its stores whole cache lines
-/// (non-temporal when stream); a step that crosses a knot is computed on
-/// both segments and blended, so there are no short runs at the knots: a
-/// knot costs its segment's coefficients and one step computed twice
-/// (about 35-45 ns on the AMD EPYC, from the step's chain of dependent
-/// work; the runs per segment this replaces, capped at 4096 points, cost
-/// about 140 ns each in set-up, scalar ends and partially written lines:
-/// BENCHMARKS.md, issue 30). Returns false as soon as a
-/// step is not sorted (or holds NaN): the caller starts over; out is then
-/// partly written.
-template <int Order, class Segments>
-CRSPLINE_TARGET_AVX512 bool sorted_walk3_512(const Segments& segments, std::size_t seg, const float* t, float* out,
-                                             std::size_t n, bool stream) noexcept {
-    if (n == 0) return true;
-    steps512<Order> s;
-    s.load(segments, seg);
-    // 3 h = -(out mod 64) / 4 (mod 16), and 11 = 1 / 3 (mod 16).
-    const unsigned quarter = unsigned(reinterpret_cast<std::uintptr_t>(out) % 64) / 4;
-    const unsigned h0 = (11 * ((16 - quarter) % 16)) % 16, h = h0 == 0 ? 16 : h0;
-    const unsigned m = unsigned(n < h ? n : h);
-    if (!s.step(segments, seg, t, out, m, true, stream && m == 16)) return false;
-    std::size_t k = m;
-    // out + 3 k is 64-byte aligned from here on.
-    while (k + 16 <= n) {
-        k = stream ? bulk512<Order, true>(s, t, out, k, n) : bulk512<Order, false>(s, t, out, k, n);
-        if (k + 16 <= n) {
-            if (!s.step(segments, seg, t + k, out + 3 * k, 16, false, stream)) return false;
-            k += 16;
-        }
+    /// a where m is zero, b where it is one.
+    CRSPLINE_TARGET_AVX512 static V blend(V a, M m, V b) noexcept { return _mm512_mask_mov_pd(a, m, b); }
+    CRSPLINE_TARGET_AVX512 static void store(double* p, V a) noexcept { _mm512_storeu_pd(p, a); }
+    CRSPLINE_TARGET_AVX512 static void maskstore(double* p, M in, V a) noexcept { _mm512_mask_storeu_pd(p, in, a); }
+    CRSPLINE_TARGET_AVX512 static void stream(double* p, V a) noexcept { _mm512_stream_pd(p, a); }
+    /// Lanes 0 .. min(q, 8) - 1.
+    static M first_lanes(unsigned q) noexcept { return M((1u << (q < 8 ? q : 8)) - 1); }
+    /// Lane 0: first; lane j > 0: x[j - 1] (x's lanes 0-6 moved up one).
+    CRSPLINE_TARGET_AVX512 static V shift_in(V x, double first) noexcept {
+        return _mm512_castsi512_pd(
+            _mm512_maskz_alignr_epi64(0xFF, _mm512_castpd_si512(x), _mm512_castpd_si512(_mm512_set1_pd(first)), 7));
     }
-    return k == n || s.step(segments, seg, t + k, out + 3 * k, unsigned(n - k), false, false);
-}
-
-/// steps512 in 256-bit AVX2 lanes for CPUs without AVX-512F: 8 points a
-/// step, 24 floats in 3 registers laid out as in memory (lanes256<float>'s
-/// layout), masks as vectors (all ones or zero per lane), masked loads and
-/// stores by maskload / maskstore; the same operations, so the same bits.
-template <int Order>
-struct steps256 {
-    using L = lanes256<float>;
-    __m256 A0, A1, A2, B0, B1, B2, C0, C1, C2, O0, O1, O2, vt0, vih, vend;
-
-    /// Lanes 0 .. min(q, 8) - 1 all ones, the others zero.
-    CRSPLINE_TARGET_AVX2 static __m256i first_lanes(unsigned q) noexcept {
-        return _mm256_cmpgt_epi32(_mm256_set1_epi32(int(q < 8 ? q : 8)), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
-    }
-
-    template <class Segments>
-    CRSPLINE_TARGET_AVX2 __attribute__((always_inline)) void load(const Segments& segments, std::size_t seg) noexcept {
-        float o[3], a[3], b[3], c[3], t0, ih, t_end;
-        segments.load(seg, o, a, b, c, t0, ih, t_end);
-        A0 = L::pattern(a, 0), A1 = L::pattern(a, 1), A2 = L::pattern(a, 2);
-        B0 = L::pattern(b, 0), B1 = L::pattern(b, 1), B2 = L::pattern(b, 2);
-        C0 = L::pattern(c, 0), C1 = L::pattern(c, 1), C2 = L::pattern(c, 2);
-        if constexpr (Order == 0) O0 = L::pattern(o, 0), O1 = L::pattern(o, 1), O2 = L::pattern(o, 2);
-        else O0 = O1 = O2 = _mm256_setzero_ps();
-        vt0 = L::set1(t0), vih = L::set1(ih), vend = L::set1(t_end);
-    }
-
-    /// The 8 points at parameters x on this segment, as 24 floats in r0 r1 r2.
-    CRSPLINE_TARGET_AVX2 void points(__m256 x, __m256& r0, __m256& r1, __m256& r2) const noexcept {
-        const __m256 u = L::mul(L::sub(x, vt0), vih);
-        const __m256 U0 = L::spread<0>(u), U1 = L::spread<1>(u), U2 = L::spread<2>(u);
-        r0 = L::add(A0, L::mul(U0, L::add(B0, L::mul(U0, C0))));
-        r1 = L::add(A1, L::mul(U1, L::add(B1, L::mul(U1, C1))));
-        r2 = L::add(A2, L::mul(U2, L::add(B2, L::mul(U2, C2))));
-        if constexpr (Order == 0) {
-            r0 = L::add(O0, L::mul(U0, r0));
-            r1 = L::add(O1, L::mul(U1, r1));
-            r2 = L::add(O2, L::mul(U2, r2));
-        }
-    }
-
-    /// steps512::step with 8 lanes (1 <= m <= 8; nt: m = 8, out 32-byte
-    /// aligned).
-    template <class Segments>
-    CRSPLINE_TARGET_AVX2 __attribute__((always_inline)) bool step(const Segments& segments, std::size_t& seg,
-                                                                  const float* t, float* out, unsigned m, bool first,
-                                                                  bool nt) noexcept {
-        const __m256i in = first_lanes(m);
-        const int in_bits = int((1u << m) - 1);
-        const __m256 x = _mm256_maskload_ps(t, in);
-        // Lane j's predecessor: t[j - 1]; for the batch's first step t[0]
-        // in lane 0 (x's lanes moved up one, lane 0 kept: t[-1] is not read).
-        const __m256 before = first ? _mm256_permutevar8x32_ps(x, _mm256_setr_epi32(0, 0, 1, 2, 3, 4, 5, 6))
-                                    : _mm256_maskload_ps(t - 1, in);
-        if ((L::mask(L::le(before, x)) & in_bits) != in_bits) return false;  // not sorted, or NaN
-        __m256 r0, r1, r2;
-        points(x, r0, r1, r2);
-        const __m256 X0 = L::spread<0>(x), X1 = L::spread<1>(x), X2 = L::spread<2>(x);
-        for (int past = L::mask(_mm256_cmp_ps(x, vend, _CMP_NLT_UQ)) & in_bits; past != 0;
-             past = L::mask(_mm256_cmp_ps(x, vend, _CMP_NLT_UQ)) & in_bits) {
-            const std::size_t next = segments.next(seg, t[__builtin_ctz(unsigned(past))]);
-            if (next == seg) break;  // (no later segment: cannot happen in the domain)
-            const __m256 end = vend;
-            seg = next;
-            load(segments, seg);
-            __m256 q0, q1, q2;
-            points(x, q0, q1, q2);
-            r0 = _mm256_blendv_ps(r0, q0, _mm256_cmp_ps(X0, end, _CMP_NLT_UQ));
-            r1 = _mm256_blendv_ps(r1, q1, _mm256_cmp_ps(X1, end, _CMP_NLT_UQ));
-            r2 = _mm256_blendv_ps(r2, q2, _mm256_cmp_ps(X2, end, _CMP_NLT_UQ));
-        }
-        if (nt) {
-            L::stream(out, r0), L::stream(out + 8, r1), L::stream(out + 16, r2);
-        } else {
-            const unsigned f = 3 * m;  // floats to store
-            _mm256_maskstore_ps(out, first_lanes(f), r0);
-            _mm256_maskstore_ps(out + 8, first_lanes(f > 8 ? f - 8 : 0), r1);
-            _mm256_maskstore_ps(out + 16, first_lanes(f > 16 ? f - 16 : 0), r2);
-        }
-        return true;
-    }
-};
-
-/// bulk512 in 8 lanes (out + 3 k 32-byte aligned when Stream).
-template <int Order, bool Stream>
-CRSPLINE_TARGET_AVX2 std::size_t bulk256(const steps256<Order> s, const float* t, float* out, std::size_t k,
-                                         std::size_t n) noexcept {
-    using L = lanes256<float>;
-    for (; k + 8 <= n; k += 8) {
-        const __m256 x = L::load(t + k);
-        if (L::mask(L::both(L::lt(x, s.vend), L::le(L::load(t + k - 1), x))) != 0xFF) break;
-        __m256 r0, r1, r2;
-        s.points(x, r0, r1, r2);
-        float* dst = out + 3 * k;
-        if constexpr (Stream) {
-            L::stream(dst, r0), L::stream(dst + 8, r1), L::stream(dst + 16, r2);
-        } else {
-            L::store(dst, r0), L::store(dst + 8, r1), L::store(dst + 16, r2);
-        }
-    }
-    return k;
-}
-
-/// sorted_walk3_512 for CPUs with AVX2 and not AVX-512F: steps of 8 points
-/// (96 bytes; two steps fill 3 cache lines, by non-temporal 32-byte stores
-/// when stream), after one step of up to 8 that brings out + 3 k to 32-byte
-/// alignment (12 h = -out mod 32 bytes, h in 1..8). The same bits.
-template <int Order, class Segments>
-CRSPLINE_TARGET_AVX2 bool sorted_walk3_256(const Segments& segments, std::size_t seg, const float* t, float* out,
-                                           std::size_t n, bool stream) noexcept {
-    if (n == 0) return true;
-    steps256<Order> s;
-    s.load(segments, seg);
-    // 3 h = -(out mod 32) / 4 (mod 8), and 3 = 1 / 3 (mod 8).
-    const unsigned quarter = unsigned(reinterpret_cast<std::uintptr_t>(out) % 32) / 4;
-    const unsigned h0 = (3 * ((8 - quarter) % 8)) % 8, h = h0 == 0 ? 8 : h0;
-    const unsigned m = unsigned(n < h ? n : h);
-    if (!s.step(segments, seg, t, out, m, true, stream && m == 8)) return false;
-    std::size_t k = m;
-    // out + 3 k is 32-byte aligned from here on.
-    while (k + 8 <= n) {
-        k = stream ? bulk256<Order, true>(s, t, out, k, n) : bulk256<Order, false>(s, t, out, k, n);
-        if (k + 8 <= n) {
-            if (!s.step(segments, seg, t + k, out + 3 * k, 8, false, stream)) return false;
-            k += 8;
-        }
-    }
-    return k == n || s.step(segments, seg, t + k, out + 3 * k, unsigned(n - k), false, false);
-}
-
-/// steps512 for 3-D doubles (issue 30): 8 points a step, 24 doubles in 3
-/// 512-bit registers laid out as in memory (lane j of register r holds
-/// coordinate (8 r + j) % 3 of point (8 r + j) / 3), the same operations
-/// as the portable run_kernel, so the same bits. On the AMD EPYC the 4-lane
-/// AVX2 runs took 6.3 ms of instructions per 10^7 points in cache, about
-/// the whole time memset takes to write the output: this walk halves the
-/// arithmetic and drops the runs (BENCHMARKS.md, issue 30).
-template <int Order>
-struct steps512d {
-    __m512d A0, A1, A2, B0, B1, B2, C0, C1, C2, O0, O1, O2, vt0, vih, vend;
-
-    CRSPLINE_TARGET_AVX512 static __m512d permute(__m512i idx, __m512d v) noexcept {
+    /// As lanes512<float>::permute.
+    CRSPLINE_TARGET_AVX512 static V permute(__m512i idx, V v) noexcept {
         return _mm512_maskz_permutexvar_pd(0xFF, idx, v);
     }
     /// Lane j: v[(8 r + j) % 3], v one coordinate triple in lanes 0-2.
     template <int r>
-    CRSPLINE_TARGET_AVX512 static __m512d pattern(__m512d v) noexcept {
+    CRSPLINE_TARGET_AVX512 static V pattern(V v) noexcept {
         constexpr long long f = 8 * r;
         return permute(_mm512_setr_epi64(f % 3, (f + 1) % 3, (f + 2) % 3, (f + 3) % 3, (f + 4) % 3, (f + 5) % 3,
                                          (f + 6) % 3, (f + 7) % 3),
@@ -467,168 +265,54 @@ struct steps512d {
     }
     /// Lane j: u[(8 r + j) / 3], the value of the point lane j is part of.
     template <int r>
-    CRSPLINE_TARGET_AVX512 static __m512d spread(__m512d u) noexcept {
+    CRSPLINE_TARGET_AVX512 static V spread(V u) noexcept {
         constexpr long long f = 8 * r;
         return permute(_mm512_setr_epi64(f / 3, (f + 1) / 3, (f + 2) / 3, (f + 3) / 3, (f + 4) / 3, (f + 5) / 3,
                                          (f + 6) / 3, (f + 7) / 3),
                        u);
     }
-    /// Lanes 0 .. min(q, 8) - 1.
-    static __mmask8 first_lanes(unsigned q) noexcept { return __mmask8((1u << (q < 8 ? q : 8)) - 1); }
-
-    template <class Segments>
-    CRSPLINE_TARGET_AVX512 __attribute__((always_inline)) void load(const Segments& segments, std::size_t seg) noexcept {
-        double o[3], a[3], b[3], c[3], t0, ih, t_end;
-        segments.load(seg, o, a, b, c, t0, ih, t_end);
-        const __m512d va = _mm512_maskz_loadu_pd(0x7, a), vb = _mm512_maskz_loadu_pd(0x7, b),
-                      vc = _mm512_maskz_loadu_pd(0x7, c);
-        const __m512d vo = Order == 0 ? _mm512_maskz_loadu_pd(0x7, o) : _mm512_setzero_pd();
-        A0 = pattern<0>(va), A1 = pattern<1>(va), A2 = pattern<2>(va);
-        B0 = pattern<0>(vb), B1 = pattern<1>(vb), B2 = pattern<2>(vb);
-        C0 = pattern<0>(vc), C1 = pattern<1>(vc), C2 = pattern<2>(vc);
-        O0 = pattern<0>(vo), O1 = pattern<1>(vo), O2 = pattern<2>(vo);
-        vt0 = _mm512_set1_pd(t0), vih = _mm512_set1_pd(ih), vend = _mm512_set1_pd(t_end);
-    }
-
-    /// The 8 points at parameters x on this segment, as 24 doubles in r0 r1 r2.
-    CRSPLINE_TARGET_AVX512 void points(__m512d x, __m512d& r0, __m512d& r1, __m512d& r2) const noexcept {
-        const __m512d u = _mm512_mul_pd(_mm512_sub_pd(x, vt0), vih);
-        const __m512d U0 = spread<0>(u), U1 = spread<1>(u), U2 = spread<2>(u);
-        r0 = _mm512_add_pd(A0, _mm512_mul_pd(U0, _mm512_add_pd(B0, _mm512_mul_pd(U0, C0))));
-        r1 = _mm512_add_pd(A1, _mm512_mul_pd(U1, _mm512_add_pd(B1, _mm512_mul_pd(U1, C1))));
-        r2 = _mm512_add_pd(A2, _mm512_mul_pd(U2, _mm512_add_pd(B2, _mm512_mul_pd(U2, C2))));
-        if constexpr (Order == 0) {
-            r0 = _mm512_add_pd(O0, _mm512_mul_pd(U0, r0));
-            r1 = _mm512_add_pd(O1, _mm512_mul_pd(U1, r1));
-            r2 = _mm512_add_pd(O2, _mm512_mul_pd(U2, r2));
-        }
-    }
-
-    /// steps512::step with 8 lanes (1 <= m <= 8; nt: m = 8, out 64-byte
-    /// aligned).
-    template <class Segments>
-    CRSPLINE_TARGET_AVX512 __attribute__((always_inline)) bool step(const Segments& segments, std::size_t& seg,
-                                                                    const double* t, double* out, unsigned m,
-                                                                    bool first, bool nt) noexcept {
-        const __mmask8 in = first_lanes(m);
-        const __m512d x = _mm512_maskz_loadu_pd(in, t);
-        // Lane j's predecessor: t[j - 1]; for the batch's first step t[0]
-        // in lane 0 (t[-1] is not read).
-        const __m512d before =
-            first ? _mm512_castsi512_pd(_mm512_maskz_alignr_epi64(0xFF, _mm512_castpd_si512(x),
-                                                                  _mm512_castpd_si512(_mm512_set1_pd(t[0])), 7))
-                  : _mm512_maskz_loadu_pd(in, t - 1);
-        if ((_mm512_cmp_pd_mask(before, x, _CMP_LE_OQ) & in) != in) return false;  // not sorted, or NaN
-        __m512d r0, r1, r2;
-        points(x, r0, r1, r2);
-        const __m512d X0 = spread<0>(x), X1 = spread<1>(x), X2 = spread<2>(x);
-        for (__mmask8 past = _mm512_mask_cmp_pd_mask(in, x, vend, _CMP_NLT_UQ); past != 0;
-             past = _mm512_mask_cmp_pd_mask(in, x, vend, _CMP_NLT_UQ)) {
-            const std::size_t next = segments.next(seg, t[__builtin_ctz(unsigned(past))]);
-            if (next == seg) break;  // (no later segment: cannot happen in the domain)
-            const __m512d end = vend;
-            seg = next;
-            load(segments, seg);
-            __m512d q0, q1, q2;
-            points(x, q0, q1, q2);
-            r0 = _mm512_mask_mov_pd(r0, _mm512_cmp_pd_mask(X0, end, _CMP_NLT_UQ), q0);
-            r1 = _mm512_mask_mov_pd(r1, _mm512_cmp_pd_mask(X1, end, _CMP_NLT_UQ), q1);
-            r2 = _mm512_mask_mov_pd(r2, _mm512_cmp_pd_mask(X2, end, _CMP_NLT_UQ), q2);
-        }
-        if (nt) {
-            _mm512_stream_pd(out, r0), _mm512_stream_pd(out + 8, r1), _mm512_stream_pd(out + 16, r2);
-        } else {
-            const unsigned f = 3 * m;  // doubles to store
-            _mm512_mask_storeu_pd(out, first_lanes(f), r0);
-            _mm512_mask_storeu_pd(out + 8, first_lanes(f > 8 ? f - 8 : 0), r1);
-            _mm512_mask_storeu_pd(out + 16, first_lanes(f > 16 ? f - 16 : 0), r2);
-        }
-        return true;
-    }
 };
 
-/// bulk512 for doubles: 8-point steps (out + 3 k 64-byte aligned when Stream).
-template <int Order, bool Stream>
-CRSPLINE_TARGET_AVX512 std::size_t bulk512d(const steps512d<Order> s, const double* t, double* out, std::size_t k,
-                                            std::size_t n) noexcept {
-    for (; k + 8 <= n; k += 8) {
-        const __m512d x = _mm512_loadu_pd(t + k);
-        const unsigned go = unsigned(_mm512_cmp_pd_mask(x, s.vend, _CMP_LT_OQ)) &
-                            unsigned(_mm512_cmp_pd_mask(_mm512_loadu_pd(t + k - 1), x, _CMP_LE_OQ));
-        if (go != 0xFF) break;  // unsorted, NaN, or past the end knot: a step for sorted_walk3_512
-        __m512d r0, r1, r2;
-        s.points(x, r0, r1, r2);
-        double* dst = out + 3 * k;
-        if constexpr (Stream) {
-            _mm512_stream_pd(dst, r0), _mm512_stream_pd(dst + 8, r1), _mm512_stream_pd(dst + 16, r2);
-        } else {
-            _mm512_storeu_pd(dst, r0), _mm512_storeu_pd(dst + 8, r1), _mm512_storeu_pd(dst + 16, r2);
-        }
-    }
-    return k;
-}
+/// The 512-bit steps of a sorted batch of 3-D floats or doubles: W = 16
+/// float or 8 double points a step, 3 W scalars in 3 registers laid out as
+/// in memory (lanes512's layout: lane j of register r holds coordinate
+/// (W r + j) % 3 of point (W r + j) / 3), the same operations as the
+/// portable run_kernel (batch_kernels.hpp), so the same bits. A segment's
+/// coefficients are loaded by one masked load and 3 permutes each. (Issue
+/// 30: built through a 16-float array on the stack, as the 8-lane patterns
+/// were, each cost a failed store forward.) Doubles (issue 30): on the AMD
+/// EPYC the 4-lane AVX2 runs took 6.3 ms of instructions per 10^7 points in
+/// cache, about the whole time memset takes to write the output: this walk
+/// halves the arithmetic and drops the runs (BENCHMARKS.md, issue 30).
+template <class T, int Order>
+struct steps512 {
+    using L = lanes512<T>;
+    using V = typename L::V;
+    using M = typename L::M;
+    static constexpr unsigned W = L::W;
+    V A0, A1, A2, B0, B1, B2, C0, C1, C2, O0, O1, O2, vt0, vih, vend;
 
-/// sorted_walk3_512 for 3-D doubles: steps of 8 points (192 bytes, three
-/// whole cache lines, non-temporal when stream) after one step of up to 8
-/// that brings out + 3 k to 64-byte alignment (24 h = -out mod 64 bytes,
-/// h in 1..8). The same bits as the 4-lane walk and the portable kernel.
-template <int Order, class Segments>
-CRSPLINE_TARGET_AVX512 bool sorted_walk3_512(const Segments& segments, std::size_t seg, const double* t, double* out,
-                                             std::size_t n, bool stream) noexcept {
-    if (n == 0) return true;
-    steps512d<Order> s;
-    s.load(segments, seg);
-    // 3 h = -(out mod 64) / 8 (mod 8), and 3 = 1 / 3 (mod 8).
-    const unsigned eighth = unsigned(reinterpret_cast<std::uintptr_t>(out) % 64) / 8;
-    const unsigned h0 = (3 * ((8 - eighth) % 8)) % 8, h = h0 == 0 ? 8 : h0;
-    const unsigned m = unsigned(n < h ? n : h);
-    if (!s.step(segments, seg, t, out, m, true, stream && m == 8)) return false;
-    std::size_t k = m;
-    // out + 3 k is 64-byte aligned from here on.
-    while (k + 8 <= n) {
-        k = stream ? bulk512d<Order, true>(s, t, out, k, n) : bulk512d<Order, false>(s, t, out, k, n);
-        if (k + 8 <= n) {
-            if (!s.step(segments, seg, t + k, out + 3 * k, 8, false, stream)) return false;
-            k += 8;
-        }
-    }
-    return k == n || s.step(segments, seg, t + k, out + 3 * k, unsigned(n - k), false, false);
-}
-
-/// steps256 for 3-D doubles on CPUs with AVX2 and not AVX-512F (issue 30):
-/// 4 points a step, 12 doubles in 3 registers laid out as in memory
-/// (lanes256<double>'s layout), masks as vectors, masked loads and stores
-/// by maskload / maskstore; the same operations as the portable
-/// run_kernel, so the same bits. It replaced the 4-lane runs, one per
-/// segment capped at 4096 points, about 140 ns of set-up, scalar ends and
-/// shared lines each (on the AMD EPYC without AVX-512: 7.3 ms per 10^7
-/// points with the runs, 6.85-6.88 ms walked; BENCHMARKS.md, issue 30).
-template <int Order>
-struct steps256d {
-    using L = lanes256<double>;
-    __m256d A0, A1, A2, B0, B1, B2, C0, C1, C2, O0, O1, O2, vt0, vih, vend;
-
-    /// Lanes 0 .. min(q, 4) - 1 all ones, the others zero.
-    CRSPLINE_TARGET_AVX2 static __m256i first_lanes(unsigned q) noexcept {
-        return _mm256_cmpgt_epi64(_mm256_set1_epi64x(q < 4 ? q : 4), _mm256_setr_epi64x(0, 1, 2, 3));
-    }
-
+    /// Takes segment seg's coefficients: segments.load(seg, o, a, b, c, t0,
+    /// ih, t_end) fills them: origin and Horner coefficients per coordinate
+    /// (run_coefficients), t0, 1/h and the end knot.
     template <class Segments>
-    CRSPLINE_TARGET_AVX2 __attribute__((always_inline)) void load(const Segments& segments, std::size_t seg) noexcept {
-        double o[3], a[3], b[3], c[3], t0, ih, t_end;
+    CRSPLINE_TARGET_AVX512 __attribute__((always_inline)) void load(const Segments& segments, std::size_t seg) noexcept {
+        T o[3], a[3], b[3], c[3], t0, ih, t_end;
         segments.load(seg, o, a, b, c, t0, ih, t_end);
-        A0 = L::pattern(a, 0), A1 = L::pattern(a, 1), A2 = L::pattern(a, 2);
-        B0 = L::pattern(b, 0), B1 = L::pattern(b, 1), B2 = L::pattern(b, 2);
-        C0 = L::pattern(c, 0), C1 = L::pattern(c, 1), C2 = L::pattern(c, 2);
-        if constexpr (Order == 0) O0 = L::pattern(o, 0), O1 = L::pattern(o, 1), O2 = L::pattern(o, 2);
-        else O0 = O1 = O2 = _mm256_setzero_pd();
+        const V va = L::maskload(0x7, a), vb = L::maskload(0x7, b), vc = L::maskload(0x7, c);
+        // (Order 1: no origin term.)
+        const V vo = Order == 0 ? L::maskload(0x7, o) : L::zero();
+        A0 = L::template pattern<0>(va), A1 = L::template pattern<1>(va), A2 = L::template pattern<2>(va);
+        B0 = L::template pattern<0>(vb), B1 = L::template pattern<1>(vb), B2 = L::template pattern<2>(vb);
+        C0 = L::template pattern<0>(vc), C1 = L::template pattern<1>(vc), C2 = L::template pattern<2>(vc);
+        O0 = L::template pattern<0>(vo), O1 = L::template pattern<1>(vo), O2 = L::template pattern<2>(vo);
         vt0 = L::set1(t0), vih = L::set1(ih), vend = L::set1(t_end);
     }
 
-    /// The 4 points at parameters x on this segment, as 12 doubles in r0 r1 r2.
-    CRSPLINE_TARGET_AVX2 void points(__m256d x, __m256d& r0, __m256d& r1, __m256d& r2) const noexcept {
-        const __m256d u = L::mul(L::sub(x, vt0), vih);
-        const __m256d U0 = L::spread<0>(u), U1 = L::spread<1>(u), U2 = L::spread<2>(u);
+    /// The W points at parameters x on this segment, as 3 W scalars in r0 r1 r2.
+    CRSPLINE_TARGET_AVX512 void points(V x, V& r0, V& r1, V& r2) const noexcept {
+        const V u = L::mul(L::sub(x, vt0), vih);
+        const V U0 = L::template spread<0>(u), U1 = L::template spread<1>(u), U2 = L::template spread<2>(u);
         r0 = L::add(A0, L::mul(U0, L::add(B0, L::mul(U0, C0))));
         r1 = L::add(A1, L::mul(U1, L::add(B1, L::mul(U1, C1))));
         r2 = L::add(A2, L::mul(U2, L::add(B2, L::mul(U2, C2))));
@@ -639,89 +323,267 @@ struct steps256d {
         }
     }
 
-    /// steps512::step with 4 lanes (1 <= m <= 4; nt: m = 4, out 32-byte
-    /// aligned).
+    /// Any step of up to W points at t[0..m) (1 <= m <= W): the batch's
+    /// first (first: t[-1] is not read, lane 0 is compared with t[0]), its
+    /// last, or one that crosses into later segments, with masked loads and
+    /// stores (nothing outside the m points is read or written) unless nt
+    /// (m = W, out 64-byte aligned: non-temporal stores). Each lane gets
+    /// the segment the sorted walk gives it: the step is computed on seg,
+    /// then for the lanes at or past its end knot on the segment of the
+    /// first of them (segments.next), and so on; seg is left at the last.
+    /// Returns false, writing nothing, when the step is not sorted (or
+    /// holds NaN).
     template <class Segments>
-    CRSPLINE_TARGET_AVX2 __attribute__((always_inline)) bool step(const Segments& segments, std::size_t& seg,
-                                                                  const double* t, double* out, unsigned m,
-                                                                  bool first, bool nt) noexcept {
-        const __m256i in = first_lanes(m);
-        const int in_bits = int((1u << m) - 1);
-        const __m256d x = _mm256_maskload_pd(t, in);
-        // Lane j's predecessor: t[j - 1]; for the batch's first step t[0]
-        // in lane 0 (x's lanes moved up one, lane 0 kept: t[-1] is not read).
-        const __m256d before = first ? _mm256_permute4x64_pd(x, 0x90) : _mm256_maskload_pd(t - 1, in);
-        if ((L::mask(L::le(before, x)) & in_bits) != in_bits) return false;  // not sorted, or NaN
-        __m256d r0, r1, r2;
+    CRSPLINE_TARGET_AVX512 __attribute__((always_inline)) bool step(const Segments& segments, std::size_t& seg,
+                                                                    const T* t, T* out, unsigned m, bool first,
+                                                                    bool nt) noexcept {
+        const M in = L::first_lanes(m);
+        const V x = L::maskload(in, t);
+        // Lane j's predecessor: t[j - 1], for the batch's first step t[0]
+        // in lane 0 (x's lanes shifted up one, t[-1] is not read).
+        const V before = first ? L::shift_in(x, t[0]) : L::maskload(in, t - 1);
+        if ((L::le(before, x) & in) != in) return false;  // not sorted, or NaN
+        V r0, r1, r2;
         points(x, r0, r1, r2);
-        const __m256d X0 = L::spread<0>(x), X1 = L::spread<1>(x), X2 = L::spread<2>(x);
-        for (int past = L::mask(_mm256_cmp_pd(x, vend, _CMP_NLT_UQ)) & in_bits; past != 0;
-             past = L::mask(_mm256_cmp_pd(x, vend, _CMP_NLT_UQ)) & in_bits) {
+        const V X0 = L::template spread<0>(x), X1 = L::template spread<1>(x), X2 = L::template spread<2>(x);
+        for (M past = L::nlt(in, x, vend); past != 0; past = L::nlt(in, x, vend)) {
             const std::size_t next = segments.next(seg, t[__builtin_ctz(unsigned(past))]);
             if (next == seg) break;  // (no later segment: cannot happen in the domain)
-            const __m256d end = vend;
+            const V end = vend;
             seg = next;
             load(segments, seg);
-            __m256d q0, q1, q2;
+            V q0, q1, q2;
             points(x, q0, q1, q2);
-            r0 = _mm256_blendv_pd(r0, q0, _mm256_cmp_pd(X0, end, _CMP_NLT_UQ));
-            r1 = _mm256_blendv_pd(r1, q1, _mm256_cmp_pd(X1, end, _CMP_NLT_UQ));
-            r2 = _mm256_blendv_pd(r2, q2, _mm256_cmp_pd(X2, end, _CMP_NLT_UQ));
+            r0 = L::blend(r0, L::nlt(X0, end), q0);
+            r1 = L::blend(r1, L::nlt(X1, end), q1);
+            r2 = L::blend(r2, L::nlt(X2, end), q2);
         }
         if (nt) {
-            L::stream(out, r0), L::stream(out + 4, r1), L::stream(out + 8, r2);
+            L::stream(out, r0), L::stream(out + W, r1), L::stream(out + 2 * W, r2);
         } else {
-            const unsigned f = 3 * m;  // doubles to store
-            _mm256_maskstore_pd(out, first_lanes(f), r0);
-            _mm256_maskstore_pd(out + 4, first_lanes(f > 4 ? f - 4 : 0), r1);
-            _mm256_maskstore_pd(out + 8, first_lanes(f > 8 ? f - 8 : 0), r2);
+            const unsigned f = 3 * m;  // scalars to store
+            L::maskstore(out, L::first_lanes(f), r0);
+            L::maskstore(out + W, L::first_lanes(f > W ? f - W : 0), r1);
+            L::maskstore(out + 2 * W, L::first_lanes(f > 2 * W ? f - 2 * W : 0), r2);
         }
         return true;
     }
 };
 
-/// bulk512 in 4 double lanes (out + 3 k 32-byte aligned when Stream).
-template <int Order, bool Stream>
-CRSPLINE_TARGET_AVX2 std::size_t bulk256d(const steps256d<Order> s, const double* t, double* out, std::size_t k,
-                                          std::size_t n) noexcept {
-    using L = lanes256<double>;
-    for (; k + 4 <= n; k += 4) {
-        const __m256d x = L::load(t + k);
-        if (L::mask(L::both(L::lt(x, s.vend), L::le(L::load(t + k - 1), x))) != 0xF) break;
-        __m256d r0, r1, r2;
+/// The W-point steps of sorted_walk3_512 from point k (out + 3 k 64-byte
+/// aligned when Stream: non-temporal stores of whole cache lines) while
+/// W points remain, are sorted and are below the segment's end knot;
+/// returns the new k. (It takes the coefficients by value: as members of
+/// an object whose address a call takes, GCC read them from memory each
+/// step.)
+template <int Order, bool Stream, class T>
+CRSPLINE_TARGET_AVX512 std::size_t bulk512(const steps512<T, Order> s, const T* t, T* out, std::size_t k,
+                                           std::size_t n) noexcept {
+    using L = lanes512<T>;
+    constexpr unsigned W = L::W;
+    for (; k + W <= n; k += W) {
+        const typename L::V x = L::load(t + k);
+        const unsigned go = unsigned(L::lt(x, s.vend)) & unsigned(L::le(L::load(t + k - 1), x));
+        if (go != L::all) break;  // unsorted, NaN, or past the end knot: a step for sorted_walk3_512
+        typename L::V r0, r1, r2;
         s.points(x, r0, r1, r2);
-        double* dst = out + 3 * k;
+        T* dst = out + 3 * k;
         if constexpr (Stream) {
-            L::stream(dst, r0), L::stream(dst + 4, r1), L::stream(dst + 8, r2);
+            L::stream(dst, r0), L::stream(dst + W, r1), L::stream(dst + 2 * W, r2);
         } else {
-            L::store(dst, r0), L::store(dst + 4, r1), L::store(dst + 8, r2);
+            L::store(dst, r0), L::store(dst + W, r1), L::store(dst + 2 * W, r2);
         }
     }
     return k;
 }
 
-/// sorted_walk3_256 for 3-D doubles: steps of 4 points (96 bytes; two
-/// steps fill 3 cache lines, by non-temporal 32-byte stores when stream),
-/// after one step of up to 4 that brings out + 3 k to 32-byte alignment
-/// (24 h = -out mod 32 bytes, h in 1..4). The same bits.
-template <int Order, class Segments>
-CRSPLINE_TARGET_AVX2 bool sorted_walk3_256(const Segments& segments, std::size_t seg, const double* t, double* out,
-                                           std::size_t n, bool stream) noexcept {
+/// The x with 3 x = 1 (mod w), w a power of two: the walks' first step
+/// solves 3 h = -(out mod bytes) / sizeof(T) (mod w) with it.
+constexpr unsigned inverse_of_3_mod(unsigned w) noexcept {
+    unsigned x = 1;
+    while (3 * x % w != 1) ++x;
+    return x;
+}
+static_assert(inverse_of_3_mod(16) == 11 && inverse_of_3_mod(8) == 3 && inverse_of_3_mod(4) == 3);
+
+/// A whole sorted batch of 3-D floats or doubles on a CPU with AVX-512F,
+/// the segments walked inside the vector loop (issue 30): the positions
+/// (Order 0) or velocities (Order 1) at t[0..n) into out (3 n scalars), the
+/// same bits as the portable kernel's runs (and as the AVX2 walk). seg:
+/// t[0]'s segment.
+/// Segments gives the curve's segments: next(seg, x), the segment of x
+/// from seg on (the sorted walk's rule: while x >= the next knot, the next
+/// segment), and load(seg, o, a, b, c, t0, ih, t_end), the coefficients
+/// as steps512::load takes them. One step of up to W points (16 floats, 8
+/// doubles) brings out + 3 k to 64-byte alignment (12 h = -out mod 64
+/// bytes, h in 1..16 for floats; 24 h, h in 1..8 for doubles); then every
+/// step is W points (192 bytes), its stores three whole cache lines
+/// (non-temporal when stream); a step that crosses a knot is computed on
+/// both segments and blended, so there are no short runs at the knots: a
+/// knot costs its segment's coefficients and one step computed twice
+/// (about 35-45 ns on the AMD EPYC for floats, from the step's chain of
+/// dependent work; the runs per segment this replaces, capped at 4096
+/// points, cost about 140 ns each in set-up, scalar ends and partially
+/// written lines: BENCHMARKS.md, issue 30). Returns false as soon as a
+/// step is not sorted (or holds NaN): the caller starts over; out is then
+/// partly written.
+template <int Order, class Segments, class T>
+CRSPLINE_TARGET_AVX512 bool sorted_walk3_512(const Segments& segments, std::size_t seg, const T* t, T* out,
+                                             std::size_t n, bool stream) noexcept {
+    constexpr unsigned W = lanes512<T>::W;
     if (n == 0) return true;
-    steps256d<Order> s;
+    steps512<T, Order> s;
     s.load(segments, seg);
-    // 3 h = -(out mod 32) / 8 (mod 4), and 3 = 1 / 3 (mod 4).
-    const unsigned eighth = unsigned(reinterpret_cast<std::uintptr_t>(out) % 32) / 8;
-    const unsigned h0 = (3 * ((4 - eighth) % 4)) % 4, h = h0 == 0 ? 4 : h0;
+    // 3 h = -(out mod 64) / sizeof(T) (mod W), and 1 / 3 (mod W) is 11 for
+    // W = 16, 3 for W = 8.
+    constexpr unsigned third = inverse_of_3_mod(W);
+    const unsigned lane = unsigned(reinterpret_cast<std::uintptr_t>(out) % 64) / unsigned(sizeof(T));
+    const unsigned h0 = (third * ((W - lane) % W)) % W, h = h0 == 0 ? W : h0;
     const unsigned m = unsigned(n < h ? n : h);
-    if (!s.step(segments, seg, t, out, m, true, stream && m == 4)) return false;
+    if (!s.step(segments, seg, t, out, m, true, stream && m == W)) return false;
+    std::size_t k = m;
+    // out + 3 k is 64-byte aligned from here on.
+    while (k + W <= n) {
+        k = stream ? bulk512<Order, true>(s, t, out, k, n) : bulk512<Order, false>(s, t, out, k, n);
+        if (k + W <= n) {
+            if (!s.step(segments, seg, t + k, out + 3 * k, W, false, stream)) return false;
+            k += W;
+        }
+    }
+    return k == n || s.step(segments, seg, t + k, out + 3 * k, unsigned(n - k), false, false);
+}
+
+/// steps512 in 256-bit AVX2 lanes for CPUs without AVX-512F: W = 8 float
+/// or 4 double points a step, 3 W scalars in 3 registers laid out as in
+/// memory (lanes256's layout), masks as vectors (all ones or zero per
+/// lane), masked loads and stores by maskload / maskstore; the same
+/// operations as the portable run_kernel, so the same bits. Doubles (issue
+/// 30): it replaced the 4-lane runs, one per segment capped at 4096 points,
+/// about 140 ns of set-up, scalar ends and shared lines each (on the AMD
+/// EPYC without AVX-512: 7.3 ms per 10^7 points with the runs, 6.85-6.88 ms
+/// walked; BENCHMARKS.md, issue 30).
+template <class T, int Order>
+struct steps256 {
+    using L = lanes256<T>;
+    using V = typename L::V;
+    static constexpr unsigned W = L::W;
+    V A0, A1, A2, B0, B1, B2, C0, C1, C2, O0, O1, O2, vt0, vih, vend;
+
+    /// As steps512::load.
+    template <class Segments>
+    CRSPLINE_TARGET_AVX2 __attribute__((always_inline)) void load(const Segments& segments, std::size_t seg) noexcept {
+        T o[3], a[3], b[3], c[3], t0, ih, t_end;
+        segments.load(seg, o, a, b, c, t0, ih, t_end);
+        A0 = L::pattern(a, 0), A1 = L::pattern(a, 1), A2 = L::pattern(a, 2);
+        B0 = L::pattern(b, 0), B1 = L::pattern(b, 1), B2 = L::pattern(b, 2);
+        C0 = L::pattern(c, 0), C1 = L::pattern(c, 1), C2 = L::pattern(c, 2);
+        if constexpr (Order == 0) O0 = L::pattern(o, 0), O1 = L::pattern(o, 1), O2 = L::pattern(o, 2);
+        else O0 = O1 = O2 = L::zero();
+        vt0 = L::set1(t0), vih = L::set1(ih), vend = L::set1(t_end);
+    }
+
+    /// The W points at parameters x on this segment, as 3 W scalars in r0 r1 r2.
+    CRSPLINE_TARGET_AVX2 void points(V x, V& r0, V& r1, V& r2) const noexcept {
+        const V u = L::mul(L::sub(x, vt0), vih);
+        const V U0 = L::template spread<0>(u), U1 = L::template spread<1>(u), U2 = L::template spread<2>(u);
+        r0 = L::add(A0, L::mul(U0, L::add(B0, L::mul(U0, C0))));
+        r1 = L::add(A1, L::mul(U1, L::add(B1, L::mul(U1, C1))));
+        r2 = L::add(A2, L::mul(U2, L::add(B2, L::mul(U2, C2))));
+        if constexpr (Order == 0) {
+            r0 = L::add(O0, L::mul(U0, r0));
+            r1 = L::add(O1, L::mul(U1, r1));
+            r2 = L::add(O2, L::mul(U2, r2));
+        }
+    }
+
+    /// steps512::step with W = 8 or 4 lanes (1 <= m <= W; nt: m = W, out
+    /// 32-byte aligned).
+    template <class Segments>
+    CRSPLINE_TARGET_AVX2 __attribute__((always_inline)) bool step(const Segments& segments, std::size_t& seg,
+                                                                  const T* t, T* out, unsigned m, bool first,
+                                                                  bool nt) noexcept {
+        const __m256i in = L::first_lanes(m);
+        const int in_bits = int((1u << m) - 1);
+        const V x = L::maskload(t, in);
+        // Lane j's predecessor: t[j - 1]; for the batch's first step t[0]
+        // in lane 0 (x's lanes moved up one, lane 0 kept: t[-1] is not read).
+        const V before = first ? L::shift_up(x) : L::maskload(t - 1, in);
+        if ((L::mask(L::le(before, x)) & in_bits) != in_bits) return false;  // not sorted, or NaN
+        V r0, r1, r2;
+        points(x, r0, r1, r2);
+        const V X0 = L::template spread<0>(x), X1 = L::template spread<1>(x), X2 = L::template spread<2>(x);
+        for (int past = L::mask(L::nlt(x, vend)) & in_bits; past != 0; past = L::mask(L::nlt(x, vend)) & in_bits) {
+            const std::size_t next = segments.next(seg, t[__builtin_ctz(unsigned(past))]);
+            if (next == seg) break;  // (no later segment: cannot happen in the domain)
+            const V end = vend;
+            seg = next;
+            load(segments, seg);
+            V q0, q1, q2;
+            points(x, q0, q1, q2);
+            r0 = L::blend(r0, q0, L::nlt(X0, end));
+            r1 = L::blend(r1, q1, L::nlt(X1, end));
+            r2 = L::blend(r2, q2, L::nlt(X2, end));
+        }
+        if (nt) {
+            L::stream(out, r0), L::stream(out + W, r1), L::stream(out + 2 * W, r2);
+        } else {
+            const unsigned f = 3 * m;  // scalars to store
+            L::maskstore(out, L::first_lanes(f), r0);
+            L::maskstore(out + W, L::first_lanes(f > W ? f - W : 0), r1);
+            L::maskstore(out + 2 * W, L::first_lanes(f > 2 * W ? f - 2 * W : 0), r2);
+        }
+        return true;
+    }
+};
+
+/// bulk512 in W = 8 float or 4 double lanes (out + 3 k 32-byte aligned when
+/// Stream).
+template <int Order, bool Stream, class T>
+CRSPLINE_TARGET_AVX2 std::size_t bulk256(const steps256<T, Order> s, const T* t, T* out, std::size_t k,
+                                         std::size_t n) noexcept {
+    using L = lanes256<T>;
+    constexpr unsigned W = L::W;
+    for (; k + W <= n; k += W) {
+        const typename L::V x = L::load(t + k);
+        if (L::mask(L::both(L::lt(x, s.vend), L::le(L::load(t + k - 1), x))) != L::all) break;
+        typename L::V r0, r1, r2;
+        s.points(x, r0, r1, r2);
+        T* dst = out + 3 * k;
+        if constexpr (Stream) {
+            L::stream(dst, r0), L::stream(dst + W, r1), L::stream(dst + 2 * W, r2);
+        } else {
+            L::store(dst, r0), L::store(dst + W, r1), L::store(dst + 2 * W, r2);
+        }
+    }
+    return k;
+}
+
+/// sorted_walk3_512 for CPUs with AVX2 and not AVX-512F: steps of W = 8
+/// float or 4 double points (96 bytes; two steps fill 3 cache lines, by
+/// non-temporal 32-byte stores when stream), after one step of up to W
+/// that brings out + 3 k to 32-byte alignment (12 h = -out mod 32 bytes,
+/// h in 1..8 for floats; 24 h, h in 1..4 for doubles). The same bits.
+template <int Order, class Segments, class T>
+CRSPLINE_TARGET_AVX2 bool sorted_walk3_256(const Segments& segments, std::size_t seg, const T* t, T* out,
+                                           std::size_t n, bool stream) noexcept {
+    constexpr unsigned W = lanes256<T>::W;
+    if (n == 0) return true;
+    steps256<T, Order> s;
+    s.load(segments, seg);
+    // 3 h = -(out mod 32) / sizeof(T) (mod W), and 3 = 1 / 3 (mod 8) and
+    // (mod 4).
+    constexpr unsigned third = inverse_of_3_mod(W);
+    const unsigned lane = unsigned(reinterpret_cast<std::uintptr_t>(out) % 32) / unsigned(sizeof(T));
+    const unsigned h0 = (third * ((W - lane) % W)) % W, h = h0 == 0 ? W : h0;
+    const unsigned m = unsigned(n < h ? n : h);
+    if (!s.step(segments, seg, t, out, m, true, stream && m == W)) return false;
     std::size_t k = m;
     // out + 3 k is 32-byte aligned from here on.
-    while (k + 4 <= n) {
-        k = stream ? bulk256d<Order, true>(s, t, out, k, n) : bulk256d<Order, false>(s, t, out, k, n);
-        if (k + 4 <= n) {
-            if (!s.step(segments, seg, t + k, out + 3 * k, 4, false, stream)) return false;
-            k += 4;
+    while (k + W <= n) {
+        k = stream ? bulk256<Order, true>(s, t, out, k, n) : bulk256<Order, false>(s, t, out, k, n);
+        if (k + W <= n) {
+            if (!s.step(segments, seg, t + k, out + 3 * k, W, false, stream)) return false;
+            k += W;
         }
     }
     return k == n || s.step(segments, seg, t + k, out + 3 * k, unsigned(n - k), false, false);
