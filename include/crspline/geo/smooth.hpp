@@ -1271,17 +1271,25 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
         detail::measure_alone(in, opt, res, clean_one);  // clean_one writes res's statuses
         return res;
     }
-    std::vector<clean_part> clean;
+    // The cleaned parts in flat arrays (topology.hpp's clean_layer), each
+    // cleaned in one reused clean_part.
+    clean_layer clean;
     std::vector<std::size_t> clean_of(nparts, SIZE_MAX);  // part -> index in clean, or pass-through
-    for (std::size_t p = 0; p < nparts; ++p) {
+    {
+        clean.points.reserve(in.vertex_count());
+        clean.source.reserve(in.vertex_count());
         clean_part c;
-        if (!clean_one(p, c)) continue;
-        clean_of[p] = clean.size();
-        clean.push_back(std::move(c));
+        for (std::size_t p = 0; p < nparts; ++p) {
+            c.points.clear();
+            c.source.clear();
+            if (!clean_one(p, c)) continue;
+            clean_of[p] = clean.size();
+            clean.add(c);
+        }
     }
     // 2. Arcs.
     topology topo = build_topology(clean, opt.preserve_topology);
-    std::vector<clean_part>().swap(clean);  // the topology has what is needed of it
+    clean = clean_layer{};  // the topology has what is needed of it
     std::vector<detail::arc_work> arcs(topo.arcs.size());
     for (std::size_t i = 0; i < arcs.size(); ++i) {
         auto& a = arcs[i];
@@ -1360,7 +1368,7 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
                 total += in.part_size(p);
                 continue;
             }
-            for (const auto& [ai, reversed] : topo.parts[clean_of[p]].arcs) {
+            for (const auto& [ai, reversed] : topo.part_arcs(clean_of[p])) {
                 total += arcs[ai].line.points.size();
                 ++uses_left[ai];
             }
@@ -1376,7 +1384,7 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
         auto& rep = res.features[f];
         if (clean_of[p] != SIZE_MAX && !opt.polylines) {
             // Measures only: the curves' lengths and deviations, the input as output.
-            for (const auto& [ai, reversed] : topo.parts[clean_of[p]].arcs) {
+            for (const auto& [ai, reversed] : topo.part_arcs(clean_of[p])) {
                 rep.length += arc_length_of[ai];
                 rep.max_deviation = std::max(rep.max_deviation, arcs[ai].max_dev);
             }
@@ -1390,7 +1398,7 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
         }
         const std::size_t start = out.vertex_count();
         bool first_arc = true;
-        for (const auto& [ai, reversed] : topo.parts[clean_of[p]].arcs) {
+        for (const auto& [ai, reversed] : topo.part_arcs(clean_of[p])) {
             const auto& a = arcs[ai];
             const auto& src = topo.arcs[ai].source;
             rep.length += arc_length_of[ai];
@@ -1437,7 +1445,10 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
         if (!topo.arcs[i].closed)
             for (std::size_t v : arc_ends[i])
                 for (std::size_t f : topo.arcs[i].features) junction_features.push_back({v, f});
-    std::sort(junction_features.begin(), junction_features.end());
+    // (In order already where arcs end at increasing vertex ids, as a
+    // layer of separate lines does: then checked, not sorted again.)
+    if (!std::is_sorted(junction_features.begin(), junction_features.end()))
+        std::sort(junction_features.begin(), junction_features.end());
     junction_features.erase(std::unique(junction_features.begin(), junction_features.end()), junction_features.end());
     auto features_at = [&](std::size_t v) {  // distinct features with an arc ending at v
         const auto lo = std::lower_bound(junction_features.begin(), junction_features.end(), std::pair<std::size_t, std::size_t>{v, 0});

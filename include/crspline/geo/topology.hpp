@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -32,17 +33,20 @@ struct arc {
     std::vector<std::size_t> features;  ///< the features that use it, each once, sorted
 };
 
-/// A part rebuilt from arcs: each arc forward or reversed, in order.
-struct part_arcs {
-    std::vector<std::pair<std::size_t, bool>> arcs;  ///< (arc index, reversed)
-};
-
 /// Vertex identities, arcs and junctions of a set of cleaned parts.
 struct topology {
     std::vector<std::array<double, 2>> points;  ///< one per distinct vertex
     std::vector<std::uint8_t> junction;         ///< per vertex id
     std::vector<arc> arcs;
-    std::vector<part_arcs> parts;               ///< per input part given to build()
+    /// Each input part given to build() rebuilt from arcs, each arc forward
+    /// or reversed, in order: part q's (arc index, reversed) pairs are
+    /// part_arc_list[part_arc_at[q] .. part_arc_at[q + 1]) (one array for
+    /// all parts, not one per part: part_arcs(q) gives them).
+    std::vector<std::pair<std::size_t, bool>> part_arc_list;
+    std::vector<std::size_t> part_arc_at;
+    std::span<const std::pair<std::size_t, bool>> part_arcs(std::size_t q) const noexcept {
+        return {part_arc_list.data() + part_arc_at[q], part_arc_at[q + 1] - part_arc_at[q]};
+    }
 };
 
 namespace detail {
@@ -78,16 +82,40 @@ struct clean_part {
     std::size_t feature = 0;
 };
 
+/// Cleaned parts in flat arrays, one of each for the whole layer (not two
+/// blocks per part: at 10^6 parts, freeing those scattered blocks cost more
+/// than filling them). Part q's points and sources are [at[q], at[q + 1]).
+struct clean_layer {
+    std::vector<std::array<double, 2>> points;
+    std::vector<std::size_t> source;
+    std::vector<std::size_t> at{0};
+    std::vector<std::uint8_t> ring;
+    std::vector<std::size_t> feature;
+
+    std::size_t size() const noexcept { return ring.size(); }
+    std::size_t size_of(std::size_t q) const noexcept { return at[q + 1] - at[q]; }
+    std::span<const std::array<double, 2>> points_of(std::size_t q) const noexcept {
+        return {points.data() + at[q], size_of(q)};
+    }
+    std::span<const std::size_t> source_of(std::size_t q) const noexcept { return {source.data() + at[q], size_of(q)}; }
+    void add(const clean_part& c) {
+        points.insert(points.end(), c.points.begin(), c.points.end());
+        source.insert(source.end(), c.source.begin(), c.source.end());
+        at.push_back(points.size());
+        ring.push_back(c.ring);
+        feature.push_back(c.feature);
+    }
+};
+
 /// Cuts the parts into arcs. With `share` false every part is one arc of
 /// its own (no junctions, nothing shared): smoothing part by part.
-inline topology build_topology(const std::vector<clean_part>& parts, bool share) {
+inline topology build_topology(const clean_layer& parts, bool share) {
     topology topo;
-    std::size_t total = 0;
-    for (const auto& part : parts) total += part.points.size();
+    const std::size_t total = parts.points.size();
     topo.points.reserve(share ? 0 : total);
     // Every part's vertex ids, in one array (part q's from ids_at[q]).
-    std::vector<std::size_t> ids(total), ids_at(parts.size() + 1, 0);
-    for (std::size_t q = 0; q < parts.size(); ++q) ids_at[q + 1] = ids_at[q] + parts[q].points.size();
+    std::vector<std::size_t> ids(total);
+    const std::vector<std::size_t>& ids_at = parts.at;
     if (share) {
         // Vertex ids by exact coordinates, in order of first occurrence: an
         // open-addressing table (a power of two at least twice the
@@ -113,14 +141,17 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
         };
         auto slot_of = [&](std::uint64_t mixed) { return std::size_t(mixed >> (64 - bits)) & mask; };
         auto tag_of = [](std::uint64_t mixed) { return (mixed & 0xFFFFFFull) << 40; };
-        constexpr std::size_t ahead = 8;
+        // The vertex `ahead` places on in the running order over every
+        // part's vertices, across part ends (parts of 10-50 vertices would
+        // otherwise start with several unprefetched, serialized misses).
+        constexpr std::size_t ahead = 16;
         std::size_t v = 0;  // running index over every part's vertices
         for (std::size_t q = 0; q < parts.size(); ++q) {
-            const auto& pts = parts[q].points;
+            const auto pts = parts.points_of(q);
             const std::size_t n = pts.size();
             for (std::size_t i = 0; i < n; ++i, ++v) {
 #if defined(__GNUC__) || defined(__clang__)
-                if (i + ahead < n) __builtin_prefetch(&table[slot_of(mixed_of(pts[i + ahead]))]);
+                if (v + ahead < total) __builtin_prefetch(&table[slot_of(mixed_of(parts.points[v + ahead]))]);
 #endif
                 const std::array<double, 2>& p = pts[i];
                 const detail::point_key k = detail::key_of(p[0], p[1]);
@@ -147,18 +178,17 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
         }
         topo.points.shrink_to_fit();
     } else {
-        for (std::size_t q = 0; q < parts.size(); ++q)
-            for (const auto& p : parts[q].points) {
-                ids[topo.points.size()] = topo.points.size();
-                topo.points.push_back(p);
-            }
+        for (const auto& p : parts.points) {
+            ids[topo.points.size()] = topo.points.size();
+            topo.points.push_back(p);
+        }
     }
     // Junctions: a vertex whose distinct neighbours are not exactly two, or
     // a line's end. Neighbours are few: a small sorted list per vertex.
     const std::size_t nv = topo.points.size();
     topo.junction.assign(nv, 0);
     auto ends = [&](std::size_t q) {
-        if (!parts[q].ring) topo.junction[ids[ids_at[q]]] = topo.junction[ids[ids_at[q + 1] - 1]] = 1;
+        if (!parts.ring[q]) topo.junction[ids[ids_at[q]]] = topo.junction[ids[ids_at[q + 1] - 1]] = 1;
     };
     if (share) {
         // Up to 3 neighbours kept per vertex (3 means "more than 2"), as
@@ -180,7 +210,7 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
             for (std::size_t q = 0; q < parts.size(); ++q) {
                 const std::size_t* ids_q = ids.data() + ids_at[q];
                 const std::size_t n = ids_at[q + 1] - ids_at[q];
-                const std::size_t edges = parts[q].ring ? n : n - 1;
+                const std::size_t edges = parts.ring[q] ? n : n - 1;
                 for (std::size_t i = 0; i < edges; ++i) {
                     const std::size_t a = ids_q[i], b = ids_q[i + 1 == n ? 0 : i + 1];
                     link(a, b);
@@ -215,7 +245,8 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
         while (seen[k].second != SIZE_MAX) k = (k + 1) & (seen.size() - 1);
         seen[k] = {h, index};
     };
-    topo.parts.resize(parts.size());
+    topo.part_arc_at.assign(parts.size() + 1, 0);
+    topo.part_arc_list.reserve(parts.size());
     topo.arcs.reserve(parts.size());
     auto add_arc = [&](std::size_t q, std::vector<std::size_t> seq, std::vector<std::size_t> src, bool closed) {
         bool reversed = false;
@@ -264,14 +295,14 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
         if (index == topo.arcs.size()) topo.arcs.push_back({std::move(seq), closed, std::move(src), 0, {}});
         arc& a = topo.arcs[index];
         ++a.uses;
-        auto pos = std::lower_bound(a.features.begin(), a.features.end(), parts[q].feature);
-        if (pos == a.features.end() || *pos != parts[q].feature) a.features.insert(pos, parts[q].feature);
-        topo.parts[q].arcs.push_back({index, reversed});
+        auto pos = std::lower_bound(a.features.begin(), a.features.end(), parts.feature[q]);
+        if (pos == a.features.end() || *pos != parts.feature[q]) a.features.insert(pos, parts.feature[q]);
+        topo.part_arc_list.push_back({index, reversed});
     };
     // Vertices [i, j] (indices into the part, cyclically for a ring) as an arc.
     auto cut = [&](std::size_t q, std::size_t i, std::size_t j) {
         const std::size_t* s = ids.data() + ids_at[q];
-        const auto& src = parts[q].source;
+        const auto src = parts.source_of(q);
         // A ring with one junction is one arc from it round to it again.
         const std::size_t n = ids_at[q + 1] - ids_at[q], m = (j + n - i) % n == 0 ? n + 1 : (j + n - i) % n + 1;
         std::vector<std::size_t> seq(m), ssrc(m);
@@ -284,7 +315,7 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
     for (std::size_t q = 0; q < parts.size(); ++q) {
         const std::size_t* s = ids.data() + ids_at[q];
         const std::size_t n = ids_at[q + 1] - ids_at[q];
-        if (parts[q].ring) {
+        if (parts.ring[q]) {
             std::size_t first = n;
             for (std::size_t i = 0; i < n; ++i)
                 if (topo.junction[s[i]]) {
@@ -292,7 +323,9 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
                     break;
                 }
             if (first == n) {
-                add_arc(q, std::vector<std::size_t>(s, s + n), parts[q].source, true);
+                const auto src = parts.source_of(q);
+                add_arc(q, std::vector<std::size_t>(s, s + n), std::vector<std::size_t>(src.begin(), src.end()), true);
+                topo.part_arc_at[q + 1] = topo.part_arc_list.size();
                 continue;
             }
             // From the first junction round to it again, cut at each junction.
@@ -312,8 +345,16 @@ inline topology build_topology(const std::vector<clean_part>& parts, bool share)
                     from = i;
                 }
         }
+        topo.part_arc_at[q + 1] = topo.part_arc_list.size();
     }
     return topo;
+}
+
+/// The same from one cleaned part per element.
+inline topology build_topology(const std::vector<clean_part>& parts, bool share) {
+    clean_layer flat;
+    for (const auto& part : parts) flat.add(part);
+    return build_topology(flat, share);
 }
 
 }  // namespace crspline::geo
