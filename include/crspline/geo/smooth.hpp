@@ -1272,12 +1272,14 @@ inline smooth_result smooth(const layer& in, const smooth_options& opt) {
         return res;
     }
     // The cleaned parts in flat arrays (topology.hpp's clean_layer), each
-    // cleaned in one reused clean_part.
+    // cleaned in one reused clean_part; the layer vertex of each cleaned
+    // vertex is kept only to interpolate extra values.
     clean_layer clean;
+    clean.with_sources = E > 0;
     std::vector<std::size_t> clean_of(nparts, SIZE_MAX);  // part -> index in clean, or pass-through
     {
         clean.points.reserve(in.vertex_count());
-        clean.source.reserve(in.vertex_count());
+        if (clean.with_sources) clean.source.reserve(in.vertex_count());
         clean_part c;
         for (std::size_t p = 0; p < nparts; ++p) {
             c.points.clear();

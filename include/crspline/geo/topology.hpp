@@ -28,7 +28,7 @@ namespace crspline::geo {
 struct arc {
     std::vector<std::size_t> vertices;  ///< ids; an open arc runs from a junction to a junction
     bool closed = false;                ///< a ring without junctions (the first vertex is not repeated)
-    std::vector<std::size_t> source;    ///< layer vertex of each vertex, in the first part that made the arc
+    std::vector<std::size_t> source;    ///< layer vertex of each vertex, in the first part that made the arc (empty: clean_layer::with_sources false)
     std::size_t uses = 0;               ///< how many part traversals use it
     std::vector<std::size_t> features;  ///< the features that use it, each once, sorted
 };
@@ -85,36 +85,44 @@ struct clean_part {
 /// Cleaned parts in flat arrays, one of each for the whole layer (not two
 /// blocks per part: at 10^6 parts, freeing those scattered blocks cost more
 /// than filling them). Part q's points and sources are [at[q], at[q + 1]).
+/// Without sources (with_sources false: a layer without extra values has
+/// nothing to interpolate from them) none are kept, and the arcs have none.
 struct clean_layer {
     std::vector<std::array<double, 2>> points;
     std::vector<std::size_t> source;
     std::vector<std::size_t> at{0};
     std::vector<std::uint8_t> ring;
     std::vector<std::size_t> feature;
+    bool with_sources = true;
 
     std::size_t size() const noexcept { return ring.size(); }
     std::size_t size_of(std::size_t q) const noexcept { return at[q + 1] - at[q]; }
     std::span<const std::array<double, 2>> points_of(std::size_t q) const noexcept {
         return {points.data() + at[q], size_of(q)};
     }
-    std::span<const std::size_t> source_of(std::size_t q) const noexcept { return {source.data() + at[q], size_of(q)}; }
+    std::span<const std::size_t> source_of(std::size_t q) const noexcept {
+        if (!with_sources) return {};
+        return {source.data() + at[q], size_of(q)};
+    }
     void add(const clean_part& c) {
         points.insert(points.end(), c.points.begin(), c.points.end());
-        source.insert(source.end(), c.source.begin(), c.source.end());
+        if (with_sources) source.insert(source.end(), c.source.begin(), c.source.end());
         at.push_back(points.size());
         ring.push_back(c.ring);
         feature.push_back(c.feature);
     }
 };
 
-/// Cuts the parts into arcs. With `share` false every part is one arc of
-/// its own (no junctions, nothing shared): smoothing part by part.
-inline topology build_topology(const clean_layer& parts, bool share) {
+namespace detail {
+// build_topology() with vertex ids held as Id (32 bits where they fit:
+// half the memory of size_t, all of it fresh pages at 10^6 lines).
+template <class Id>
+topology build_topology_with(const clean_layer& parts, bool share) {
     topology topo;
     const std::size_t total = parts.points.size();
     topo.points.reserve(share ? 0 : total);
     // Every part's vertex ids, in one array (part q's from ids_at[q]).
-    std::vector<std::size_t> ids(total);
+    std::vector<Id> ids(total);
     const std::vector<std::size_t>& ids_at = parts.at;
     if (share) {
         // Vertex ids by exact coordinates, in order of first occurrence: an
@@ -162,14 +170,14 @@ inline topology build_topology(const clean_layer& parts, bool share) {
                         const std::size_t id = topo.points.size();
                         table[h] = tag | std::uint64_t(id);
                         topo.points.push_back(p);
-                        ids[v] = id;
+                        ids[v] = Id(id);
                         break;
                     }
                     if ((e & ~id_mask) == tag) {
                         const std::size_t id = std::size_t(e & id_mask);
                         const auto& o = topo.points[id];
                         if (detail::key_of(o[0], o[1]) == k) {
-                            ids[v] = id;
+                            ids[v] = Id(id);
                             break;
                         }
                     }
@@ -179,7 +187,7 @@ inline topology build_topology(const clean_layer& parts, bool share) {
         topo.points.shrink_to_fit();
     } else {
         for (const auto& p : parts.points) {
-            ids[topo.points.size()] = topo.points.size();
+            ids[topo.points.size()] = Id(topo.points.size());
             topo.points.push_back(p);
         }
     }
@@ -194,21 +202,21 @@ inline topology build_topology(const clean_layer& parts, bool share) {
         // Up to 3 neighbours kept per vertex (3 means "more than 2"), as
         // 32-bit ids where they fit (half the memory of size_t).
         auto find_junctions = [&](auto id_type) {
-            using id_t = decltype(id_type);
-            constexpr id_t none = std::numeric_limits<id_t>::max();
-            std::vector<std::array<id_t, 3>> nb(nv, {none, none, none});
+            using nb_id = decltype(id_type);
+            constexpr nb_id none = std::numeric_limits<nb_id>::max();
+            std::vector<std::array<nb_id, 3>> nb(nv, {none, none, none});
             auto link = [&](std::size_t a, std::size_t b) {
                 auto& s = nb[a];
                 for (std::size_t k = 0; k < 3; ++k) {
-                    if (s[k] == id_t(b)) return;
+                    if (s[k] == nb_id(b)) return;
                     if (s[k] == none) {
-                        s[k] = id_t(b);
+                        s[k] = nb_id(b);
                         return;
                     }
                 }
             };
             for (std::size_t q = 0; q < parts.size(); ++q) {
-                const std::size_t* ids_q = ids.data() + ids_at[q];
+                const Id* ids_q = ids.data() + ids_at[q];
                 const std::size_t n = ids_at[q + 1] - ids_at[q];
                 const std::size_t edges = parts.ring[q] ? n : n - 1;
                 for (std::size_t i = 0; i < edges; ++i) {
@@ -255,10 +263,10 @@ inline topology build_topology(const clean_layer& parts, bool share) {
             const std::size_t n = seq.size();
             const std::size_t m = std::size_t(std::min_element(seq.begin(), seq.end()) - seq.begin());
             std::rotate(seq.begin(), seq.begin() + std::ptrdiff_t(m), seq.end());
-            std::rotate(src.begin(), src.begin() + std::ptrdiff_t(m), src.end());
+            if (!src.empty()) std::rotate(src.begin(), src.begin() + std::ptrdiff_t(m), src.end());
             if (seq[n - 1] < seq[1]) {
                 std::reverse(seq.begin() + 1, seq.end());
-                std::reverse(src.begin() + 1, src.end());
+                if (!src.empty()) std::reverse(src.begin() + 1, src.end());
                 reversed = true;
             }
         } else {
@@ -301,19 +309,19 @@ inline topology build_topology(const clean_layer& parts, bool share) {
     };
     // Vertices [i, j] (indices into the part, cyclically for a ring) as an arc.
     auto cut = [&](std::size_t q, std::size_t i, std::size_t j) {
-        const std::size_t* s = ids.data() + ids_at[q];
+        const Id* s = ids.data() + ids_at[q];
         const auto src = parts.source_of(q);
         // A ring with one junction is one arc from it round to it again.
         const std::size_t n = ids_at[q + 1] - ids_at[q], m = (j + n - i) % n == 0 ? n + 1 : (j + n - i) % n + 1;
-        std::vector<std::size_t> seq(m), ssrc(m);
+        std::vector<std::size_t> seq(m), ssrc(src.empty() ? 0 : m);
         for (std::size_t k = 0, x = i; k < m; ++k, x = x + 1 == n ? 0 : x + 1) {
             seq[k] = s[x];
-            ssrc[k] = src[x];
+            if (!src.empty()) ssrc[k] = src[x];
         }
         add_arc(q, std::move(seq), std::move(ssrc), false);
     };
     for (std::size_t q = 0; q < parts.size(); ++q) {
-        const std::size_t* s = ids.data() + ids_at[q];
+        const Id* s = ids.data() + ids_at[q];
         const std::size_t n = ids_at[q + 1] - ids_at[q];
         if (parts.ring[q]) {
             std::size_t first = n;
@@ -348,6 +356,15 @@ inline topology build_topology(const clean_layer& parts, bool share) {
         topo.part_arc_at[q + 1] = topo.part_arc_list.size();
     }
     return topo;
+}
+}  // namespace detail
+
+/// Cuts the parts into arcs. With `share` false every part is one arc of
+/// its own (no junctions, nothing shared): smoothing part by part.
+inline topology build_topology(const clean_layer& parts, bool share) {
+    if (parts.points.size() < std::numeric_limits<std::uint32_t>::max())
+        return detail::build_topology_with<std::uint32_t>(parts, share);
+    return detail::build_topology_with<std::size_t>(parts, share);
 }
 
 /// The same from one cleaned part per element.
