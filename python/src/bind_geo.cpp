@@ -84,7 +84,7 @@ py::dict geo_smooth(carray<double> xy, carray<double> extra, carray<std::int64_t
     geo::smooth_result r;
     {
         py::gil_scoped_release release;
-        r = geo::smooth(l, opt);
+        r = geo::smooth(std::move(l), opt);  // measures only: the output takes the input's arrays
         l = {};  // the input's copy, before the output's
     }
     auto& o = r.output;

@@ -610,4 +610,76 @@ TEST(GeoSmooth, MeasuresAlonePartByPartAreThoseOfTheGeneralPath) {
     EXPECT_GT(tensioned, 0u);  // max_deviation raised tension somewhere
 }
 
+// smooth(layer&&) gives what smooth(const layer&) gives, field by field; with
+// measures only (the output is the input) the output holds the input's own
+// arrays (moved: the same storage), not a copy.
+TEST(GeoSmooth, MovedInputGivesTheSameResultsWithoutACopy) {
+    CRSPLINE_SEEDED(seed, 53);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::size_t compared = 0, moved_storage = 0, crossings = 0;
+    for (int rep = 0; rep < 8; ++rep) {
+        geo::layer l;
+        l.extra_dims = std::size_t(rep % 2);
+        const std::size_t features = 10 + rng() % 20;
+        for (std::size_t f = 0; f < features; ++f) {
+            const bool ring = rng() % 3 == 0;
+            const std::size_t n = 3 + rng() % 25;
+            // Packed close (12 units apart), so that some walks cross themselves or a neighbour.
+            const P at0{{12.0 * double(f % 5), 12.0 * double(f / 5)}};
+            std::vector<P> pts = ring ? star(rng, at0, 3.0, n + 1, 0.6) : std::vector<P>{};
+            if (!ring) {
+                P at = at0;
+                double h = 2 * std::numbers::pi * u(rng);
+                for (std::size_t k = 0; k < n; ++k) {
+                    pts.push_back(at);
+                    h += (2 * u(rng) - 1) * std::numbers::pi / 3;
+                    at = at + (0.5 + u(rng)) * P{{std::cos(h), std::sin(h)}};
+                }
+            }
+            std::vector<double> ex(pts.size() * l.extra_dims);
+            for (auto& e : ex) e = u(rng);
+            l.add_part(f, ring ? part_kind::ring : part_kind::line, flat(pts), ex);
+        }
+        geo::smooth_options opt{.tolerance = 0.01};
+        opt.preserve_topology = rep % 4 < 2;
+        opt.polylines = rep % 2 == 0;
+        const geo::smooth_result copied = geo::smooth(l, opt);
+        geo::layer given = l;
+        const double* storage = given.xy.data();
+        const geo::smooth_result moved = geo::smooth(std::move(given), opt);
+        const auto &a = moved.output, &b = copied.output;
+        EXPECT_EQ(a.xy, b.xy) << "rep " << rep;
+        EXPECT_EQ(a.extra, b.extra) << "rep " << rep;
+        EXPECT_EQ(a.extra_dims, b.extra_dims) << "rep " << rep;
+        EXPECT_EQ(a.part_offsets, b.part_offsets) << "rep " << rep;
+        EXPECT_EQ(a.part_kinds, b.part_kinds) << "rep " << rep;
+        EXPECT_EQ(a.part_features, b.part_features) << "rep " << rep;
+        EXPECT_EQ(a.feature_count, b.feature_count) << "rep " << rep;
+        ASSERT_EQ(moved.features.size(), copied.features.size()) << "rep " << rep;
+        for (std::size_t f = 0; f < copied.features.size(); ++f) {
+            const auto &x = moved.features[f], &y = copied.features[f];
+            EXPECT_EQ(x.status, y.status) << "rep " << rep << " feature " << f;
+            EXPECT_EQ(x.message, y.message) << "rep " << rep << " feature " << f;
+            EXPECT_EQ(x.verdict, y.verdict) << "rep " << rep << " feature " << f;
+            EXPECT_EQ(x.length, y.length) << "rep " << rep << " feature " << f;
+            EXPECT_EQ(x.max_deviation, y.max_deviation) << "rep " << rep << " feature " << f;
+            ++compared;
+        }
+        EXPECT_EQ(moved.stats.arcs, copied.stats.arcs) << "rep " << rep;
+        EXPECT_EQ(moved.stats.pairs_checked, copied.stats.pairs_checked) << "rep " << rep;
+        EXPECT_EQ(moved.stats.input_crossings, copied.stats.input_crossings) << "rep " << rep;
+        EXPECT_EQ(moved.stats.tensioned_vertices, copied.stats.tensioned_vertices) << "rep " << rep;
+        crossings += copied.stats.input_crossings;
+        if (!opt.polylines) {
+            EXPECT_EQ(a.xy, l.xy) << "rep " << rep;  // the output is the input
+            EXPECT_EQ(a.xy.data(), storage) << "rep " << rep << ": the input's coordinates were copied, not moved";
+            moved_storage += a.xy.data() == storage;
+        }
+    }
+    EXPECT_GT(compared, 80u);
+    EXPECT_EQ(moved_storage, 4u);  // reps 1, 3, 5, 7: measures only, with and without topology
+    EXPECT_GT(crossings, 0u);      // the proof had crossings to find
+}
+
 }  // namespace
