@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <span>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -17,6 +18,8 @@
 #include "bounds.hpp"
 #include "catmull_rom.hpp"
 #include "detail/format.hpp"
+#include "detail/storage.hpp"
+#include "detail/tessellate_lanes.hpp"
 #include "error.hpp"
 #include "segment.hpp"
 #include "vec.hpp"
@@ -154,16 +157,6 @@ polyline<D, T> tessellate(const catmull_rom<D, T>& c, std::type_identity_t<T> to
     if (!(tolerance > 0 && std::isfinite(tolerance)))
         throw invalid_input("tolerance must be positive and finite, got " + detail::num(double(tolerance)));
     polyline<D, T> out;
-    auto add = [&](T t) {
-        out.t.push_back(t);
-        out.points.push_back(c.evaluate_unchecked(t));
-    };
-    // A vertex strictly inside segment s: what evaluate_unchecked(t) computes
-    // there (its segment is s), without locating it.
-    auto add_inside = [&](const cubic_segment<D, T>& s, T t) {
-        out.t.push_back(t);
-        out.points.push_back(s.dt(s.local(t), 0));
-    };
     // Room for the most vertices there can be (uniform_piece_count per
     // segment bounds them), capped: the pages never written are never
     // touched, and the vectors neither grow nor copy on the way.
@@ -173,95 +166,62 @@ polyline<D, T> tessellate(const catmull_rom<D, T>& c, std::type_identity_t<T> to
             most += uniform_piece_count(c.segment(i), tolerance);
         most = std::min(most, std::size_t(1) << 24);
         out.t.reserve(most);
-        out.points.reserve(most);
+        detail::advise_huge_pages(out.t.data(), most * sizeof(T));
     }
-    add(c.t_min());
+    out.t.push_back(c.t_min());
     const auto grid = c.grid();
-    for (std::size_t i = 0; i < c.segment_count(); ++i) {
-        const cubic_segment<D, T>& s = c.segment(i);
-        // A constant segment: its end is its start, already a vertex.
-        if (s.c1 == vec<D, T>{} && s.c2 == vec<D, T>{} && s.c3 == vec<D, T>{}) continue;
-        const T t_end = grid[i + 1];
-        // Local u of a vertex parameter, as evaluate() computes it.
-        auto u_of = [&](T t) { return t == t_end ? T(1) : s.local(t); };
-        T a = grid[i];
-        const std::size_t n_uniform = uniform_piece_count(s, tolerance);
-        for (;;) {
-            const T u0 = u_of(a);
-            // A piece bound (1) of flatness_bound proves, in closed form:
-            // |C''| is convex in u, so on [u0, u0 + w] with w <= w0 its
-            // maximum is at most max(|C''(u0)|, |C''(u0 + w0)|), and
-            // w = sqrt(8 tol / that maximum) meets w^2 / 8 max|C''| <= tol.
-            const T k0 = norm(s.du(u0, 2));
-            const T w0 = k0 > 0 ? std::sqrt(T(8) * tolerance / k0) : T(1) - u0;
-            const T k1 = std::max(k0, norm(s.du(std::min(T(1), u0 + w0), 2)));
-            const T w1 = k1 > 0 ? std::sqrt(T(8) * tolerance / k1) : T(1) - u0;
-            // lo: the end of the longest piece proved so far (f its bound);
-            // hi: the nearest end not proved (t_end until tested).
-            T lo = a, hi = t_end, f = 0, f_hi = 0;
-            bool end_failed = false;
-            auto test = [&](T t) {
-                const T ft = flatness_bound(s, u0, u_of(t), k0);
-                if (ft <= tolerance) {
-                    lo = t, f = ft;
-                    return true;
-                }
-                hi = t, f_hi = ft;
-                end_failed = end_failed || t == t_end;
-                return false;
-            };
-            auto open = [&](T t) { return t > lo && (t < hi || (t == t_end && !end_failed)); };
-            const T first = std::min(t_end, a + w1 * s.h);
-            if (open(first)) test(first);
-            // No closed-form start proved (rounding): bisect from a until a
-            // piece is.
-            for (int halve = 0; halve < 64 && !(lo > a); ++halve) {
-                const T mid = lo + (hi - lo) / 2;
-                if (!(mid > lo && mid < hi)) break;
-                test(mid);
-            }
-            // Both bounds grow about like the square of the piece's width
-            // (bound (1) exactly; bound (2) as the control points' distance
-            // to the chord): from a proved width w with bound f, the longest
-            // width is about w sqrt(tol / f). Steps to 1% short of that
-            // prediction (the segment's end when it is within reach), each
-            // checked by the full bound, and after a failed one a step back
-            // from its end, bring lo within a few per cent of the longest
-            // piece the bound allows: about two bounds per vertex, where
-            // testing the rest of the segment, doubling and four halvings
-            // took nine.
-            for (int step = 0; step < 4 && lo > a && lo < t_end; ++step) {
-                const T grow = f > 0 ? std::min(T(4), T(0.99) * std::sqrt(tolerance / f)) : T(4);
-                if (!(grow > T(1.02))) break;
-                T next = std::min(t_end, a + grow * (lo - a));
-                if (!open(next)) next = lo + (hi - lo) / 2;
-                if (!open(next)) break;
-                if (test(next)) continue;
-                const T back = a + (next - a) * T(0.99) * std::sqrt(tolerance / f_hi);
-                if (back > lo + (hi - lo) / 8 && back < hi) test(back);
-                break;
-            }
-            if (lo == t_end) break;
-            // Never shorter than the uniform pieces (1/n of the segment, n =
-            // uniform_piece_count, proved by bound (1) with |C''| at its
-            // larger end), so a segment never gets more than n pieces.
-            lo = std::max(lo, std::min(t_end, a + s.h / T(n_uniform)));
-            // Below rounding no piece qualifies: step to the next parameter.
-            if (lo == a) lo = hi;
-            if (lo == t_end) break;
-            add_inside(s, lo);
-            a = lo;
+    const std::size_t n = c.segment_count();
+    // One segment at a time: the greedy cut (detail/tessellate_lanes.hpp).
+    auto cut_one_by_one = [&] {
+        for (std::size_t i = 0; i < n; ++i) {
+            const cubic_segment<D, T>& s = c.segment(i);
+            // A constant segment: its end is its start, already a vertex.
+            if (s.c1 == vec<D, T>{} && s.c2 == vec<D, T>{} && s.c3 == vec<D, T>{}) continue;
+            detail::tessellate_scalar_cut(
+                s, grid[i], grid[i + 1], tolerance, uniform_piece_count(s, tolerance),
+                [](const cubic_segment<D, T>& seg, T u0, T u1, T k0) { return flatness_bound(seg, u0, u1, k0); },
+                [&](T t) { out.t.push_back(t); });
+            out.t.push_back(grid[i + 1]);
         }
-        add(t_end);
+    };
+    if constexpr (std::is_same_v<T, double>) {
+        if (detail::cut_in_lanes()) {
+            // With AVX2: several segments at a time, each cut as one by
+            // one, then their vertices in order (the same bits). By blocks
+            // of segments, so that the lanes' buffers stay small and warm.
+            constexpr std::size_t block = 1024;
+            std::vector<double> buf[detail::cut_width];
+            std::vector<detail::cut_record> rec(std::min(n, block));
+            for (std::size_t i0 = 0; i0 < n; i0 += block) {
+                const std::size_t m = std::min(block, n - i0);
+                for (auto& b : buf) b.clear();
+                detail::cut_segments<D>(
+                    m, [&](std::size_t j) { return c.segment(i0 + j); }, grid.data() + i0, double(tolerance), buf,
+                    rec.data());
+                for (std::size_t j = 0; j < m; ++j) {
+                    const detail::cut_record& r = rec[j];
+                    if (r.lane < 0) continue;  // a constant segment
+                    const double* from = buf[r.lane].data() + r.start;
+                    out.t.insert(out.t.end(), from, from + r.count);
+                    out.t.push_back(grid[i0 + j + 1]);
+                }
+            }
+        } else {
+            cut_one_by_one();
+        }
+    } else {
+        cut_one_by_one();
     }
     // Trailing constant segments: the last vertex is already the end point;
     // a curve that is a single point gets its two ends.
-    if (out.t.size() == 1) {
-        add(c.t_max());
-    } else if (out.t.back() != c.t_max()) {
-        out.t.back() = c.t_max();
-        out.points.back() = c.evaluate_unchecked(c.t_max());
-    }
+    if (out.t.size() == 1) out.t.push_back(c.t_max());
+    else out.t.back() = c.t_max();
+    // The vertices: evaluate() at each t, as one sorted batch (the same bits
+    // as one at a time).
+    out.points.reserve(out.t.size());
+    detail::advise_huge_pages(out.points.data(), out.t.size() * sizeof(vec<D, T>));
+    out.points.resize(out.t.size());
+    c.evaluate(std::span<const T>(out.t), std::span<vec<D, T>>(out.points));
     return out;
 }
 

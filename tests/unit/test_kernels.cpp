@@ -518,6 +518,66 @@ TEST(Kernels, ArcLengthHardSegmentsAgreeBitForBit) {
     EXPECT_GE(single, 2u * 2u * 7u * segs.size());
 }
 
+/// Every vertex parameter and point of tessellate(c, tol) on both paths
+/// (AVX2: the cut in lanes; portable: one segment at a time), bit for bit;
+/// returns how many numbers were compared.
+template <std::size_t D>
+std::size_t compare_tessellations(const catmull_rom<D>& c, double tol, const char* what) {
+    const auto [fast, portable] = both_paths([&] { return tessellate(c, tol); });
+    EXPECT_EQ(fast.t.size(), portable.t.size()) << what << " tol " << tol;
+    if (fast.t.size() != portable.t.size()) return 0;
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < fast.t.size(); ++k) {
+        EXPECT_EQ(std::memcmp(&fast.t[k], &portable.t[k], sizeof(double)), 0) << what << " tol " << tol << " t " << k;
+        EXPECT_EQ(std::memcmp(&fast.points[k], &portable.points[k], sizeof(vec<D>)), 0)
+            << what << " tol " << tol << " point " << k;
+        n += 1 + D;
+    }
+    return n;
+}
+
+TEST(Kernels, TessellationLanesAgreeBitForBit) {
+    // The greedy cut of tessellate() in two groups of four lanes with AVX2
+    // (detail/tessellate_lanes.hpp, issue 30) against the portable cut, one
+    // segment at a time: the same vertices, bit for bit, on walks long
+    // enough that every lane refills many times (blocks of 1,024 segments),
+    // at tolerances from a few vertices a segment to hundreds, in 1 to 5
+    // dimensions, open and closed, with repeated points (constant segments),
+    // tension 1 (speed zeros at the knots) and coordinates near 1e-150 and
+    // 1e150 (the norms' rescaled path).
+    if (!detail::avx2_enabled()) GTEST_SKIP() << "no AVX2 on this CPU or build: one path only";
+    CRSPLINE_SEEDED(s, 77);
+    std::mt19937_64 rng(s);
+    std::normal_distribution<double> g;
+    std::size_t checked = 0;
+    for (int rep = 0; rep < 12; ++rep) {
+        const double scale = rep % 4 == 1 ? 1e-150 : rep % 4 == 2 ? 1e150 : 1.0;
+        std::vector<vec<3>> p(rep < 2 ? 2500 : 40 + 7 * rep);
+        for (auto& q : p) q = P3{{scale * g(rng), scale * g(rng), scale * g(rng)}};
+        for (std::size_t k = 5; k + 1 < p.size(); k += 11) p[k + 1] = p[k];  // constant segments
+        options<3> o{.alpha = rep % 3 * 0.5, .closed = rep % 2 == 1};
+        if (rep == 5) o.tension = 1.0;
+        const catmull_rom<3> c(p, o);
+        const double diag = tessellation_tolerance(c, 1.0);
+        for (double rel : {1e-2, 1e-4, 1e-6}) checked += compare_tessellations(c, rel * diag, "3-D");
+    }
+    for (int rep = 0; rep < 4; ++rep) {
+        std::vector<vec<1>> p1(30 + rep);
+        std::vector<vec<2>> p2(30 + rep);
+        std::vector<vec<5>> p5(30 + rep);
+        for (auto& q : p1) q[0] = g(rng);
+        for (auto& q : p2) q = vec<2>{{g(rng), g(rng)}};
+        for (auto& q : p5)
+            for (std::size_t k = 0; k < 5; ++k) q[k] = g(rng);
+        checked += compare_tessellations(catmull_rom<1>(p1), 1e-4, "1-D");
+        checked += compare_tessellations(catmull_rom<2>(p2, {.closed = rep % 2 == 1}), 1e-4, "2-D");
+        checked += compare_tessellations(catmull_rom<5>(p5), 1e-4, "5-D");
+    }
+    // At least: the two long walks at 1e-6 of their diagonal cut into more
+    // than 10 vertices a segment, 4 numbers each.
+    EXPECT_GT(checked, 2u * 2500u * 10u * 4u);
+}
+
 TEST(Kernels, MagnitudeReductionMatchesALoop) {
     // detail::max_abs_finite (SSE2, four accumulators; the construction's
     // checks, issue 30) against a plain loop: the same maximum, and "not

@@ -34,6 +34,23 @@ namespace crspline::detail {
 inline constexpr std::size_t huge_page_bytes = std::size_t(2) << 20;
 inline constexpr std::size_t large_array_bytes = std::size_t(4) << 20;
 
+/// Advice that the untouched memory [p, p + bytes) of a large buffer (at
+/// least large_array_bytes, e.g. a std::vector's reserved capacity) be
+/// backed by transparent huge pages when first touched: its 2 MiB-aligned
+/// inner part. Nothing where huge pages are off (CRSPLINE_NO_HUGE_PAGES,
+/// not Linux); advice only.
+inline void advise_huge_pages(const void* p, std::size_t bytes) noexcept {
+#ifdef CRSPLINE_HUGE_PAGES
+    if (bytes < large_array_bytes) return;
+    const std::uintptr_t r = reinterpret_cast<std::uintptr_t>(p);
+    const std::uintptr_t a = (r + huge_page_bytes - 1) / huge_page_bytes * huge_page_bytes;
+    const std::uintptr_t e = (r + bytes) / huge_page_bytes * huge_page_bytes;
+    if (e > a) ::madvise(reinterpret_cast<void*>(a), e - a, MADV_HUGEPAGE);
+#else
+    (void)p, (void)bytes;
+#endif
+}
+
 template <class T>
 struct storage_allocator {
     using value_type = T;

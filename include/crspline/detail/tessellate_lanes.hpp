@@ -1,0 +1,555 @@
+// crspline internal: tessellate()'s greedy cut of the segments, several
+// segments side by side in vector lanes, for double on CPUs with AVX2.
+//
+// Why lanes. One vertex of the greedy cut is a chain of about twenty
+// dependent square roots and divisions (|C''| at the piece's start, the
+// closed-form width, the bound at a first end, the predicted growth, the
+// bound again): the processor waits on their latency, about 100 ns a vertex
+// on the benchmark's walk, while it could start others. The segments are
+// independent, so each lane cuts its own segment (two groups of four lanes,
+// two independent chains); a lane that finishes takes the next segment that
+// nobody has taken, and tessellate() puts the vertices of each segment back
+// in order. Each lane does exactly the operations of the scalar cut
+// (tessellate_scalar_cut below, the text tessellate() had), in the same
+// order, with no FMA: the same vertices, bit for bit
+// (Kernels.TessellationLanesAgreeBitForBit). Issue 30: the benchmark's
+// sorted evaluation got three times faster, and tessellation per vertex
+// stood at 138 of its points where the goal is 50.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+#include "../segment.hpp"
+#include "../vec.hpp"
+#include "simd_lanes.hpp"
+
+namespace crspline::detail {
+
+/// The cut of one segment as tessellate() made it before the lanes: calls
+/// vertex(t) for each vertex strictly inside segment s (its parameter t),
+/// in order, from the segment's start a to its end t_end. The reference
+/// the lanes are tested against, and the path for float.
+template <std::size_t D, class T, class Bound, class Vertex>
+void tessellate_scalar_cut(const cubic_segment<D, T>& s, T a, T t_end, T tolerance, std::size_t n_uniform,
+                           const Bound& flatness_bound, Vertex&& vertex) {
+    // Local u of a vertex parameter, as evaluate() computes it.
+    auto u_of = [&](T t) { return t == t_end ? T(1) : s.local(t); };
+    for (;;) {
+        const T u0 = u_of(a);
+        // A piece bound (1) of flatness_bound proves, in closed form:
+        // |C''| is convex in u, so on [u0, u0 + w] with w <= w0 its
+        // maximum is at most max(|C''(u0)|, |C''(u0 + w0)|), and
+        // w = sqrt(8 tol / that maximum) meets w^2 / 8 max|C''| <= tol.
+        const T k0 = norm(s.du(u0, 2));
+        const T w0 = k0 > 0 ? std::sqrt(T(8) * tolerance / k0) : T(1) - u0;
+        const T k1 = std::max(k0, norm(s.du(std::min(T(1), u0 + w0), 2)));
+        const T w1 = k1 > 0 ? std::sqrt(T(8) * tolerance / k1) : T(1) - u0;
+        // lo: the end of the longest piece proved so far (f its bound);
+        // hi: the nearest end not proved (t_end until tested).
+        T lo = a, hi = t_end, f = 0, f_hi = 0;
+        bool end_failed = false;
+        auto test = [&](T t) {
+            const T ft = flatness_bound(s, u0, u_of(t), k0);
+            if (ft <= tolerance) {
+                lo = t, f = ft;
+                return true;
+            }
+            hi = t, f_hi = ft;
+            end_failed = end_failed || t == t_end;
+            return false;
+        };
+        auto open = [&](T t) { return t > lo && (t < hi || (t == t_end && !end_failed)); };
+        const T first = std::min(t_end, a + w1 * s.h);
+        if (open(first)) test(first);
+        // No closed-form start proved (rounding): bisect from a until a
+        // piece is.
+        for (int halve = 0; halve < 64 && !(lo > a); ++halve) {
+            const T mid = lo + (hi - lo) / 2;
+            if (!(mid > lo && mid < hi)) break;
+            test(mid);
+        }
+        // Both bounds grow about like the square of the piece's width
+        // (bound (1) exactly; bound (2) as the control points' distance
+        // to the chord): from a proved width w with bound f, the longest
+        // width is about w sqrt(tol / f). Steps to 1% short of that
+        // prediction (the segment's end when it is within reach), each
+        // checked by the full bound, and after a failed one a step back
+        // from its end, bring lo within a few per cent of the longest
+        // piece the bound allows: about two bounds per vertex, where
+        // testing the rest of the segment, doubling and four halvings
+        // took nine.
+        for (int step = 0; step < 4 && lo > a && lo < t_end; ++step) {
+            const T grow = f > 0 ? std::min(T(4), T(0.99) * std::sqrt(tolerance / f)) : T(4);
+            if (!(grow > T(1.02))) break;
+            T next = std::min(t_end, a + grow * (lo - a));
+            if (!open(next)) next = lo + (hi - lo) / 2;
+            if (!open(next)) break;
+            if (test(next)) continue;
+            const T back = a + (next - a) * T(0.99) * std::sqrt(tolerance / f_hi);
+            if (back > lo + (hi - lo) / 8 && back < hi) test(back);
+            break;
+        }
+        if (lo == t_end) return;
+        // Never shorter than the uniform pieces (1/n of the segment, n =
+        // uniform_piece_count, proved by bound (1) with |C''| at its
+        // larger end), so a segment never gets more than n pieces.
+        lo = std::max(lo, std::min(t_end, a + s.h / T(n_uniform)));
+        // Below rounding no piece qualifies: step to the next parameter.
+        if (lo == a) lo = hi;
+        if (lo == t_end) return;
+        vertex(lo);
+        a = lo;
+    }
+}
+
+/// Lanes of doubles for the cut, any width of the GCC/Clang vector
+/// extension: the same operations as simd_lanes.hpp's, as templates over
+/// the vector type V and its mask type M (V = double, M = bool: one lane).
+/// (Eight lanes, as 2 halves in the AVX2 clone or in one AVX-512 register,
+/// measured slower than four: GCC 12 lowers the wider vectors' masks and
+/// blends poorly.)
+template <class V>
+inline constexpr int vx_width = std::is_same_v<V, double> ? 1 : int(sizeof(V) / sizeof(double));
+/// x = a in the lanes where m holds.
+template <class V, class M>
+[[gnu::always_inline]] inline void vx_set(V& x, const M& m, const std::type_identity_t<V>& a) noexcept {
+    if constexpr (std::is_same_v<V, double>) {
+        if (m) x = a;
+    } else {
+        x = V((M(a) & m) | (M(x) & ~m));
+    }
+}
+/// Whether m holds in some lane; fails in some lane.
+template <class M>
+[[gnu::always_inline]] inline bool vx_any(const M& m) noexcept {
+    if constexpr (std::is_same_v<M, bool>) {
+        return m;
+    } else {
+        long long any = 0;
+        for (int l = 0; l < int(sizeof(M) / sizeof(long long)); ++l) any |= m[l];
+        return any != 0;
+    }
+}
+template <class M>
+[[gnu::always_inline]] inline bool vx_any_not(const M& m) noexcept {
+    if constexpr (std::is_same_v<M, bool>) {
+        return !m;
+    } else {
+        long long all = -1;
+        for (int l = 0; l < int(sizeof(M) / sizeof(long long)); ++l) all &= m[l];
+        return all == 0;
+    }
+}
+/// acc += |x| (the sign bit cleared), lane by lane.
+template <class V, class M>
+[[gnu::always_inline]] inline void vx_add_abs(V& acc, const V& x) noexcept {
+    if constexpr (std::is_same_v<V, double>) acc += std::abs(x);
+    else acc += V(M(x) & (M{} + 0x7fffffffffffffffLL));
+}
+/// Lane l of x; lane l of x set to v; of a mask, set or cleared.
+template <class V>
+[[gnu::always_inline]] inline auto vx_get(const V& x, int l) noexcept {
+    if constexpr (std::is_same_v<V, double> || std::is_same_v<V, bool>) return x;
+    else return x[l];
+}
+template <class V>
+[[gnu::always_inline]] inline void vx_put(V& x, int l, double v) noexcept {
+    if constexpr (std::is_same_v<V, double>) x = v;
+    else x[l] = v;
+}
+template <class M>
+[[gnu::always_inline]] inline void vx_put_mask(M& m, int l, bool v) noexcept {
+    if constexpr (std::is_same_v<M, bool>) m = v;
+    else m[l] = v ? -1 : 0;
+}
+/// x = a in the lanes where m fails.
+template <class V, class M>
+[[gnu::always_inline]] inline void vx_set_not(V& x, const M& m, const std::type_identity_t<V>& a) noexcept {
+    if constexpr (std::is_same_v<V, double>) {
+        if (!m) x = a;
+    } else {
+        x = V((M(x) & m) | (M(a) & ~m));
+    }
+}
+/// m = m and not off.
+template <class M>
+[[gnu::always_inline]] inline void vx_clear(M& m, const std::type_identity_t<M>& off) noexcept {
+    if constexpr (std::is_same_v<M, bool>) m = m && !off;
+    else m = m & ~off;
+}
+
+/// r = std::max(a, b) and std::min(a, b) lane by lane, the same choice:
+/// max(a, b) is b where a < b, else a; min(a, b) is b where b < a, else a.
+/// (Results through references: a 32-byte vector returned by value changes
+/// the calling convention without AVX, which GCC warns about.)
+template <class V>
+[[gnu::always_inline]] inline void lanes_max(V& r, const V& a, const V& b) noexcept {
+    const V x = a, y = b;
+    r = x;
+    vx_set(r, x < y, y);
+}
+template <class V>
+[[gnu::always_inline]] inline void lanes_min(V& r, const V& a, const V& b) noexcept {
+    const V x = a, y = b;
+    r = x;
+    vx_set(r, y < x, y);
+}
+
+/// The segments' cut in lanes of V (W of them): segment i's coefficients,
+/// knots and uniform piece count per lane, and the state of its cut.
+template <std::size_t D, class V, class M>
+struct cut_lanes {
+    V c1[D], c2[D], c3[D], t0, inv_h, h, t_end, n_uniform, a;
+};
+
+/// detail::plain_norm_range's limits for double: sqrt(min) / eps =
+/// 2^-511 / 2^-52 exactly, and sqrt(max / D) (folded by the compiler).
+inline constexpr double plain_norm_lo = 0x1p-459;
+static_assert(plain_norm_lo == 0x1p-511 / std::numeric_limits<double>::epsilon() &&
+              0x1p-511 * 0x1p-511 == std::numeric_limits<double>::min());
+
+/// r = norm(x) lane by lane: the plain formula where plain_norm_range
+/// holds, as norm() takes it; the lanes where it does not are done one by
+/// one by norm() itself (a zero, huge or tiny vector: rare).
+template <std::size_t D, class V, class M, class S>
+[[gnu::always_inline]] inline void lanes_norm(V& r, const V (&x)[D]) noexcept {
+    const V zero = x[0] - x[0];
+    if constexpr (D == 1) {
+        r = zero;
+        vx_add_abs<V, M>(r, x[0]);  // std::abs: 0 + |x|, the sign bit cleared
+    } else {
+        V m = zero, s = zero;
+        for (std::size_t k = 0; k < D; ++k) {
+            V ax = zero;
+            vx_add_abs<V, M>(ax, x[k]);
+            lanes_max(m, m, ax);
+            s += x[k] * x[k];
+        }
+        S::apply(s);
+        const M plain = (m > plain_norm_lo) & (m < std::sqrt(std::numeric_limits<double>::max() / double(D)));
+        if (S::any_not(plain)) [[unlikely]] {
+            constexpr int W = vx_width<V>;
+            for (int l = 0; l < W; ++l) {
+                if (vx_get(plain, l)) continue;
+                vec<D, double> v;
+                for (std::size_t k = 0; k < D; ++k) v[k] = vx_get(x[k], l);
+                vx_put(s, l, norm(v));
+            }
+        }
+        r = s;
+    }
+}
+
+/// r = flatness_bound (tessellate.hpp) lane by lane, the same operations:
+/// the piece [u0, u1] of each lane's segment, k0 = |C''(u0)|.
+template <std::size_t D, class V, class M, class S>
+[[gnu::always_inline]] inline void lanes_flatness(V& r, const cut_lanes<D, V, M>& c, const V& u0, const V& u1,
+                                                  const V& k0) noexcept {
+    const V w = u1 - u0, zero = w - w, one = zero + 1.0;
+    V d2[D], q1[D], q2[D], chord[D];
+    const V six_u1 = 6.0 * u1, three_u0 = 3.0 * u0, three_u1 = 3.0 * u1;
+    for (std::size_t k = 0; k < D; ++k) d2[k] = 2.0 * c.c2[k] + six_u1 * c.c3[k];
+    V curvature;
+    lanes_norm<D, V, M, S>(curvature, d2);
+    lanes_max(curvature, k0, curvature);
+    const V by_second_difference = w * w / 8.0 * curvature;
+    const V sum = u0 + u1, sq = u0 * u0 + u0 * u1 + u1 * u1, w3 = w / 3.0;
+    V len2 = zero;
+    for (std::size_t k = 0; k < D; ++k) {
+        chord[k] = w * (c.c1[k] + sum * c.c2[k] + sq * c.c3[k]);
+        q1[k] = w3 * (c.c1[k] + u0 * (2.0 * c.c2[k] + three_u0 * c.c3[k]));
+        q2[k] = chord[k] - w3 * (c.c1[k] + u1 * (2.0 * c.c2[k] + three_u1 * c.c3[k]));
+        len2 += chord[k] * chord[k];
+    }
+    const M has_len = len2 > 0;
+    V e1[D], e2[D];
+    // e = q - f chord, f = std::clamp(q.chord / len2, 0, 1) where len2 > 0,
+    // else 0 (clamp: 0 where f < 0, else 1 where 1 < f, else f).
+    for (int j = 0; j < 2; ++j) {
+        const V(&q)[D] = j == 0 ? q1 : q2;
+        V(&e)[D] = j == 0 ? e1 : e2;
+        V qc = zero;
+        for (std::size_t k = 0; k < D; ++k) qc += q[k] * chord[k];
+        const V f = qc / len2;
+        V g = f, ff = zero;
+        vx_set(g, one < f, one);
+        vx_set(g, f < zero, zero);
+        vx_set(ff, has_len, g);
+        for (std::size_t k = 0; k < D; ++k) e[k] = q[k] - ff * chord[k];
+    }
+    V by_hull, n1, n2;
+    if constexpr (D == 1) {
+        lanes_norm<D, V, M, S>(n1, e1);
+        lanes_norm<D, V, M, S>(n2, e2);
+        lanes_max(by_hull, n1, n2);
+    } else {
+        V m1 = zero, m2 = zero, s1 = zero, s2 = zero;
+        for (std::size_t k = 0; k < D; ++k) {
+            V a1 = zero, a2 = zero;
+            vx_add_abs<V, M>(a1, e1[k]);
+            vx_add_abs<V, M>(a2, e2[k]);
+            lanes_max(m1, m1, a1);
+            lanes_max(m2, m2, a2);
+            s1 += e1[k] * e1[k], s2 += e2[k] * e2[k];
+        }
+        V m;
+        lanes_max(m, m1, m2);
+        lanes_max(by_hull, s1, s2);
+        S::apply(by_hull);
+        const M plain = (m > plain_norm_lo) & (m < std::sqrt(std::numeric_limits<double>::max() / double(D)));
+        // Where plain fails in a lane: the larger norm, as norm() gives it.
+        if (S::any_not(plain)) [[unlikely]] {
+            lanes_norm<D, V, M, S>(n1, e1);
+            lanes_norm<D, V, M, S>(n2, e2);
+            lanes_max(n1, n1, n2);
+            vx_set_not(by_hull, plain, n1);
+        }
+    }
+    lanes_min(r, by_second_difference, by_hull);
+}
+
+/// Where one segment's vertices are in its lane's buffer.
+struct cut_record {
+    int lane = -1;
+    std::size_t start = 0, count = 0;
+};
+
+/// The greedy cut of segments 0 .. n-1 (segment_at(i) gives segment i,
+/// grid[i + 1] its end knot; a constant segment gets no vertex and an
+/// empty record) in G groups of lanes of V, each lane its own segment:
+/// buf[lane] (lane = W g + l) gets the parameters of the vertices strictly
+/// inside each segment it cut, in order, and rec[i] where segment i's are.
+/// Each lane does what tessellate_scalar_cut does, operation for
+/// operation; the G groups are independent chains of work side by side.
+template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
+[[gnu::always_inline]] inline void cut_segments_lanes(std::size_t n, const SegmentAt& segment_at, const double* grid,
+                                                      double tol, std::vector<double>* buf, cut_record* rec) {
+    constexpr int W = vx_width<V>;
+    cut_lanes<D, V, M> c[G];
+    const V zero = V{} - V{}, one = zero + 1.0, four = zero + 4.0;
+    const M none = zero != zero;
+    M live[G];
+    std::size_t seg[G][W] = {}, next = 0;
+    for (int g = 0; g < G; ++g) {
+        for (std::size_t k = 0; k < D; ++k) c[g].c1[k] = c[g].c2[k] = c[g].c3[k] = zero;
+        c[g].t0 = c[g].inv_h = c[g].h = c[g].t_end = c[g].n_uniform = c[g].a = zero;
+        live[g] = none;
+    }
+    // Segment next (or the first non-constant one after it) into lane l of
+    // group g.
+    auto refill = [&](int g, int l) __attribute__((always_inline)) {
+        while (next < n) {
+            const std::size_t i = next++;
+            const cubic_segment<D, double> s = segment_at(i);
+            if (s.c1 == vec<D, double>{} && s.c2 == vec<D, double>{} && s.c3 == vec<D, double>{}) {
+                rec[i] = cut_record{};
+                continue;
+            }
+            cut_lanes<D, V, M>& cg = c[g];
+            for (std::size_t k = 0; k < D; ++k)
+                vx_put(cg.c1[k], l, s.c1[k]), vx_put(cg.c2[k], l, s.c2[k]), vx_put(cg.c3[k], l, s.c3[k]);
+            vx_put(cg.t0, l, s.t0), vx_put(cg.inv_h, l, s.inv_h), vx_put(cg.h, l, s.h);
+            vx_put(cg.t_end, l, grid[i + 1]), vx_put(cg.a, l, grid[i]);
+            vx_put(cg.n_uniform, l, double(uniform_piece_count(s, tol)));
+            rec[i] = {W * g + l, buf[W * g + l].size(), 0};
+            seg[g][l] = i;
+            vx_put_mask(live[g], l, true);
+            return;
+        }
+        vx_put_mask(live[g], l, false);
+    };
+    for (int g = 0; g < G; ++g)
+        for (int l = 0; l < W; ++l) refill(g, l);
+    // Whether m holds in some lane of some group.
+    auto any_of = [&](const M (&m)[G]) __attribute__((always_inline)) {
+        bool any = false;
+        for (int g = 0; g < G; ++g) any = any || S::any(m[g]);
+        return any;
+    };
+    // Local u of vertex parameters, as evaluate() computes it. (Results
+    // through references here too.)
+    auto u_of = [&](int g, V& u, const V& t) __attribute__((always_inline)) {
+        u = (t - c[g].t0) * c[g].inv_h;
+        vx_set(u, t == c[g].t_end, one);
+    };
+    auto c2_norm = [&](int g, V& r, const V& u) __attribute__((always_inline)) {
+        V d2[D];
+        const V six_u = 6.0 * u;
+        for (std::size_t k = 0; k < D; ++k) d2[k] = 2.0 * c[g].c2[k] + six_u * c[g].c3[k];
+        lanes_norm<D, V, M, S>(r, d2);
+    };
+    // k > 0 ? sqrt(8 tol / k) : 1 - u0.
+    auto closed_width = [&](V& w, const V& k, const V& u0) __attribute__((always_inline)) {
+        w = 8.0 * tol / k;
+        S::apply(w);
+        vx_set_not(w, k > 0, one - u0);
+    };
+    while (any_of(live)) {
+        V a[G], u0[G], k0[G], lo[G], hi[G], f[G], f_hi[G], pt[G];
+        M end_failed[G], pass[G], o[G];
+        // The test of the pieces [a, t] in the lanes act of group g: their
+        // bounds; where one holds, lo = t, else hi = t. pass: where it held.
+        auto test = [&](int g, const V& t, const M& act) __attribute__((always_inline)) {
+            V ut, ft;
+            u_of(g, ut, t);
+            lanes_flatness<D, V, M, S>(ft, c[g], u0[g], ut, k0[g]);
+            const M ok = ft <= tol;
+            pass[g] = act & ok;
+            M fail = act;
+            vx_clear(fail, ok);
+            vx_set(lo[g], pass[g], t), vx_set(f[g], pass[g], ft);
+            vx_set(hi[g], fail, t), vx_set(f_hi[g], fail, ft);
+            end_failed[g] = end_failed[g] | (fail & (t == c[g].t_end));
+        };
+        auto open = [&](int g, const V& t) __attribute__((always_inline)) {
+            M at_end = t == c[g].t_end;
+            vx_clear(at_end, end_failed[g]);
+            o[g] = (t > lo[g]) & ((t < hi[g]) | at_end);
+        };
+        // The closed-form start, and the first end tested.
+        for (int g = 0; g < G; ++g) {
+            V w0, k1, w1, x;
+            a[g] = c[g].a;
+            u_of(g, u0[g], a[g]);
+            c2_norm(g, k0[g], u0[g]);
+            closed_width(w0, k0[g], u0[g]);
+            lanes_min(x, one, u0[g] + w0);
+            c2_norm(g, k1, x);
+            lanes_max(k1, k0[g], k1);
+            closed_width(w1, k1, u0[g]);
+            lo[g] = a[g], hi[g] = c[g].t_end, f[g] = zero, f_hi[g] = zero, end_failed[g] = none;
+            lanes_min(pt[g], c[g].t_end, a[g] + w1 * c[g].h);
+            open(g, pt[g]);
+            test(g, pt[g], live[g] & o[g]);
+        }
+        // No closed-form start proved (rounding): bisect from a until a
+        // piece is.
+        M bisect[G];
+        for (int g = 0; g < G; ++g) bisect[g] = live[g];
+        for (int halve = 0; halve < 64; ++halve) {
+            V mid[G];
+            for (int g = 0; g < G; ++g) {
+                vx_clear(bisect[g], lo[g] > a[g]);
+                mid[g] = lo[g] + (hi[g] - lo[g]) / 2.0;
+                bisect[g] = bisect[g] & (mid[g] > lo[g]) & (mid[g] < hi[g]);
+            }
+            if (!any_of(bisect)) break;
+            for (int g = 0; g < G; ++g)
+                if (S::any(bisect[g])) test(g, mid[g], bisect[g]);
+        }
+        // The grow steps (at most 4), and after a failed one the step back,
+        // as the scalar loop takes them lane by lane; a lane's step back is
+        // tested together with the other lanes' next grow step (one bound
+        // a round, not two).
+        M grow_on[G], back_on[G], act[G];
+        V steps[G];
+        for (int g = 0; g < G; ++g) grow_on[g] = live[g], back_on[g] = none, steps[g] = zero;
+        for (;;) {
+            for (int g = 0; g < G; ++g) {
+                grow_on[g] = grow_on[g] & (steps[g] < 4.0) & (lo[g] > a[g]) & (lo[g] < c[g].t_end);
+                V root = tol / f[g], grow, nx;
+                S::apply(root);
+                lanes_min(grow, four, 0.99 * root);
+                vx_set_not(grow, f[g] > 0, four);
+                grow_on[g] = grow_on[g] & (grow > 1.02);
+                lanes_min(nx, c[g].t_end, a[g] + grow * (lo[g] - a[g]));
+                open(g, nx);
+                vx_set_not(nx, o[g], lo[g] + (hi[g] - lo[g]) / 2.0);
+                open(g, nx);
+                grow_on[g] = grow_on[g] & o[g];
+                act[g] = grow_on[g] | back_on[g];
+                vx_set(pt[g], grow_on[g], nx);
+            }
+            if (!any_of(act)) break;
+            for (int g = 0; g < G; ++g) {
+                if (!S::any(act[g])) continue;
+                test(g, pt[g], act[g]);
+                vx_set(steps[g], grow_on[g], steps[g] + 1.0);
+                M failed = grow_on[g];
+                vx_clear(failed, pass[g]);
+                back_on[g] = none;
+                if (S::any(failed)) {
+                    V back_root = tol / f_hi[g];
+                    S::apply(back_root);
+                    const V back = a[g] + (pt[g] - a[g]) * 0.99 * back_root;
+                    back_on[g] = failed & (back > lo[g] + (hi[g] - lo[g]) / 8.0) & (back < hi[g]);
+                    vx_set(pt[g], back_on[g], back);
+                }
+                grow_on[g] = grow_on[g] & pass[g];
+            }
+        }
+        for (int g = 0; g < G; ++g) {
+            V x;
+            M fin = lo[g] == c[g].t_end;
+            lanes_min(x, c[g].t_end, a[g] + c[g].h / c[g].n_uniform);
+            lanes_max(lo[g], lo[g], x);
+            vx_set(lo[g], lo[g] == a[g], hi[g]);
+            fin = fin | (lo[g] == c[g].t_end);
+            c[g].a = lo[g];
+            for (int l = 0; l < W; ++l) {
+                if (!vx_get(live[g], l)) continue;
+                if (vx_get(fin, l)) {
+                    cut_record& r = rec[seg[g][l]];
+                    r.count = buf[W * g + l].size() - r.start;
+                    refill(g, l);
+                } else {
+                    buf[W * g + l].push_back(vx_get(lo[g], l));
+                }
+            }
+        }
+    }
+}
+
+#if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
+/// The square roots and mask tests of the cut's lanes in the AVX2 clone:
+/// one instruction each.
+struct cut_avx2 {
+    [[gnu::always_inline]] static void apply(lanes& x) noexcept { sqrt_avx::apply(x); }
+    CRSPLINE_TARGET_AVX2 static bool any(const lanes_mask& m) noexcept { return _mm256_movemask_pd(__m256d(m)) != 0; }
+    CRSPLINE_TARGET_AVX2 static bool any_not(const lanes_mask& m) noexcept {
+        return _mm256_movemask_pd(__m256d(m)) != 0xF;
+    }
+};
+/// The groups of four lanes side by side (two: three or four measured no
+/// faster), and the lanes in all (their buffers).
+inline constexpr int cut_groups = 2;
+inline constexpr int cut_width = cut_groups * lanes_width;
+
+template <std::size_t D, class SegmentAt>
+CRSPLINE_TARGET_AVX2 void cut_segments_avx2(std::size_t n, const SegmentAt& segment_at, const double* grid,
+                                            double tol, std::vector<double>* buf, cut_record* rec) {
+    cut_segments_lanes<D, cut_groups, lanes, lanes_mask, cut_avx2>(n, segment_at, grid, tol, buf, rec);
+}
+#else
+inline constexpr int cut_width = 1;
+#endif
+
+/// Whether tessellate() cuts in lanes: with AVX2 (avx2_enabled()). On the
+/// x86-64 baseline, four lanes in SSE2 pairs measured slower than one
+/// segment at a time (143 against 101 ns a vertex on the benchmark's walk
+/// at 1e-5), so the portable code cuts one by one.
+inline bool cut_in_lanes() noexcept {
+#if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
+    return avx2_enabled();
+#else
+    return false;
+#endif
+}
+
+/// cut_segments_lanes in the AVX2 clone (only where cut_in_lanes()).
+template <std::size_t D, class SegmentAt>
+void cut_segments(std::size_t n, const SegmentAt& segment_at, const double* grid, double tol,
+                  std::vector<double>* buf, cut_record* rec) {
+#if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
+    cut_segments_avx2<D>(n, segment_at, grid, tol, buf, rec);
+#else
+    (void)n, (void)segment_at, (void)grid, (void)tol, (void)buf, (void)rec;
+#endif
+}
+
+}  // namespace crspline::detail
