@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -183,23 +184,6 @@ template <class M>
     else m = m & ~off;
 }
 
-/// r = std::max(a, b) and std::min(a, b) lane by lane, the same choice:
-/// max(a, b) is b where a < b, else a; min(a, b) is b where b < a, else a.
-/// (Results through references: a 32-byte vector returned by value changes
-/// the calling convention without AVX, which GCC warns about.)
-template <class V>
-[[gnu::always_inline]] inline void lanes_max(V& r, const V& a, const V& b) noexcept {
-    const V x = a, y = b;
-    r = x;
-    vx_set(r, x < y, y);
-}
-template <class V>
-[[gnu::always_inline]] inline void lanes_min(V& r, const V& a, const V& b) noexcept {
-    const V x = a, y = b;
-    r = x;
-    vx_set(r, y < x, y);
-}
-
 /// The segments' cut in lanes of V (W of them): segment i's coefficients,
 /// knots and uniform piece count per lane, and the state of its cut.
 template <std::size_t D, class V, class M>
@@ -227,7 +211,7 @@ template <std::size_t D, class V, class M, class S>
         for (std::size_t k = 0; k < D; ++k) {
             V ax = zero;
             vx_add_abs<V, M>(ax, x[k]);
-            lanes_max(m, m, ax);
+            S::max(m, m, ax);
             s += x[k] * x[k];
         }
         S::apply(s);
@@ -256,7 +240,7 @@ template <std::size_t D, class V, class M, class S>
     for (std::size_t k = 0; k < D; ++k) d2[k] = 2.0 * c.c2[k] + six_u1 * c.c3[k];
     V curvature;
     lanes_norm<D, V, M, S>(curvature, d2);
-    lanes_max(curvature, k0, curvature);
+    S::max(curvature, k0, curvature);
     const V by_second_difference = w * w / 8.0 * curvature;
     const V sum = u0 + u1, sq = u0 * u0 + u0 * u1 + u1 * u1, w3 = w / 3.0;
     V len2 = zero;
@@ -269,16 +253,18 @@ template <std::size_t D, class V, class M, class S>
     const M has_len = len2 > 0;
     V e1[D], e2[D];
     // e = q - f chord, f = std::clamp(q.chord / len2, 0, 1) where len2 > 0,
-    // else 0 (clamp: 0 where f < 0, else 1 where 1 < f, else f).
+    // else 0.
     for (int j = 0; j < 2; ++j) {
         const V(&q)[D] = j == 0 ? q1 : q2;
         V(&e)[D] = j == 0 ? e1 : e2;
         V qc = zero;
         for (std::size_t k = 0; k < D; ++k) qc += q[k] * chord[k];
         const V f = qc / len2;
-        V g = f, ff = zero;
-        vx_set(g, one < f, one);
-        vx_set(g, f < zero, zero);
+        // std::clamp(f, 0, 1) = std::max(std::min(f, 1), 0) (where f < 0,
+        // min(f, 1) is f), NaN included.
+        V g, ff = zero;
+        S::min(g, f, one);
+        S::max(g, g, zero);
         vx_set(ff, has_len, g);
         for (std::size_t k = 0; k < D; ++k) e[k] = q[k] - ff * chord[k];
     }
@@ -286,31 +272,31 @@ template <std::size_t D, class V, class M, class S>
     if constexpr (D == 1) {
         lanes_norm<D, V, M, S>(n1, e1);
         lanes_norm<D, V, M, S>(n2, e2);
-        lanes_max(by_hull, n1, n2);
+        S::max(by_hull, n1, n2);
     } else {
         V m1 = zero, m2 = zero, s1 = zero, s2 = zero;
         for (std::size_t k = 0; k < D; ++k) {
             V a1 = zero, a2 = zero;
             vx_add_abs<V, M>(a1, e1[k]);
             vx_add_abs<V, M>(a2, e2[k]);
-            lanes_max(m1, m1, a1);
-            lanes_max(m2, m2, a2);
+            S::max(m1, m1, a1);
+            S::max(m2, m2, a2);
             s1 += e1[k] * e1[k], s2 += e2[k] * e2[k];
         }
         V m;
-        lanes_max(m, m1, m2);
-        lanes_max(by_hull, s1, s2);
+        S::max(m, m1, m2);
+        S::max(by_hull, s1, s2);
         S::apply(by_hull);
         const M plain = (m > plain_norm_lo) & (m < std::sqrt(std::numeric_limits<double>::max() / double(D)));
         // Where plain fails in a lane: the larger norm, as norm() gives it.
         if (S::any_not(plain)) [[unlikely]] {
             lanes_norm<D, V, M, S>(n1, e1);
             lanes_norm<D, V, M, S>(n2, e2);
-            lanes_max(n1, n1, n2);
+            S::max(n1, n1, n2);
             vx_set_not(by_hull, plain, n1);
         }
     }
-    lanes_min(r, by_second_difference, by_hull);
+    S::min(r, by_second_difference, by_hull);
 }
 
 /// Where one segment's vertices are in its lane's buffer.
@@ -418,12 +404,12 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
             u_of(g, u0[g], a[g]);
             c2_norm(g, k0[g], u0[g]);
             closed_width(w0, k0[g], u0[g]);
-            lanes_min(x, one, u0[g] + w0);
+            S::min(x, one, u0[g] + w0);
             c2_norm(g, k1, x);
-            lanes_max(k1, k0[g], k1);
+            S::max(k1, k0[g], k1);
             closed_width(w1, k1, u0[g]);
             lo[g] = a[g], hi[g] = c[g].t_end, f[g] = zero, f_hi[g] = zero, end_failed[g] = none;
-            lanes_min(pt[g], c[g].t_end, a[g] + w1 * c[g].h);
+            S::min(pt[g], c[g].t_end, a[g] + w1 * c[g].h);
             open(g, pt[g]);
             test(g, pt[g], live[g] & o[g]);
         }
@@ -454,10 +440,10 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
                 grow_on[g] = grow_on[g] & (steps[g] < 4.0) & (lo[g] > a[g]) & (lo[g] < c[g].t_end);
                 V root = tol / f[g], grow, nx;
                 S::apply(root);
-                lanes_min(grow, four, 0.99 * root);
+                S::min(grow, four, 0.99 * root);
                 vx_set_not(grow, f[g] > 0, four);
                 grow_on[g] = grow_on[g] & (grow > 1.02);
-                lanes_min(nx, c[g].t_end, a[g] + grow * (lo[g] - a[g]));
+                S::min(nx, c[g].t_end, a[g] + grow * (lo[g] - a[g]));
                 open(g, nx);
                 vx_set_not(nx, o[g], lo[g] + (hi[g] - lo[g]) / 2.0);
                 open(g, nx);
@@ -486,19 +472,24 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
         for (int g = 0; g < G; ++g) {
             V x;
             M fin = lo[g] == c[g].t_end;
-            lanes_min(x, c[g].t_end, a[g] + c[g].h / c[g].n_uniform);
-            lanes_max(lo[g], lo[g], x);
+            S::min(x, c[g].t_end, a[g] + c[g].h / c[g].n_uniform);
+            S::max(lo[g], lo[g], x);
             vx_set(lo[g], lo[g] == a[g], hi[g]);
             fin = fin | (lo[g] == c[g].t_end);
             c[g].a = lo[g];
+            // The lanes' outcomes as bits and the new vertices as scalars,
+            // each in one instruction, not lane by lane.
+            const unsigned live_bits = S::bits(live[g]), fin_bits = S::bits(fin);
+            double vertex[W];
+            std::memcpy(vertex, &lo[g], sizeof vertex);
             for (int l = 0; l < W; ++l) {
-                if (!vx_get(live[g], l)) continue;
-                if (vx_get(fin, l)) {
+                if (!((live_bits >> l) & 1u)) continue;
+                if ((fin_bits >> l) & 1u) {
                     cut_record& r = rec[seg[g][l]];
                     r.count = buf[W * g + l].size() - r.start;
                     refill(g, l);
                 } else {
-                    buf[W * g + l].push_back(vx_get(lo[g], l));
+                    buf[W * g + l].push_back(vertex[l]);
                 }
             }
         }
@@ -510,7 +501,19 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
 /// one instruction each.
 struct cut_avx2 {
     [[gnu::always_inline]] static void apply(lanes& x) noexcept { sqrt_avx::apply(x); }
+    // r = std::max(a, b) = (a < b ? b : a) and r = std::min(a, b) = (b < a ?
+    // b : a) exactly, NaN and signed zeros included: vmaxpd(x, y) is (x > y
+    // ? x : y) and vminpd(x, y) is (x < y ? x : y), so with x = b, y = a.
+    CRSPLINE_TARGET_AVX2 static void max(lanes& r, const lanes& a, const lanes& b) noexcept {
+        r = lanes(_mm256_max_pd(__m256d(b), __m256d(a)));
+    }
+    CRSPLINE_TARGET_AVX2 static void min(lanes& r, const lanes& a, const lanes& b) noexcept {
+        r = lanes(_mm256_min_pd(__m256d(b), __m256d(a)));
+    }
     CRSPLINE_TARGET_AVX2 static bool any(const lanes_mask& m) noexcept { return _mm256_movemask_pd(__m256d(m)) != 0; }
+    CRSPLINE_TARGET_AVX2 static unsigned bits(const lanes_mask& m) noexcept {
+        return unsigned(_mm256_movemask_pd(__m256d(m)));
+    }
     CRSPLINE_TARGET_AVX2 static bool any_not(const lanes_mask& m) noexcept {
         return _mm256_movemask_pd(__m256d(m)) != 0xF;
     }
