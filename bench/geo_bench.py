@@ -182,7 +182,7 @@ def main():
     ap.add_argument("--tolerance", type=float, default=0.01)
     ap.add_argument("--dask-lines", type=int, default=10000)
     ap.add_argument("--rows", default="smooth,measure,length",
-                    help="core rows to time (10^6 lines: smooth peaks at about 6.0 GB, measure 3.2 GB, length 1.9 GB; BENCHMARKS.md)")
+                    help="core rows to time (10^6 lines: smooth peaks at about 5.7 GB, measure 2.7 GB, length 1.9 GB; BENCHMARKS.md)")
     ap.add_argument("--out")
     ap.add_argument("--smoke", action="store_true", help="tiny sizes, one rep: checks the script runs")
     args = ap.parse_args()
