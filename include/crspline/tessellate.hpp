@@ -157,38 +157,32 @@ polyline<D, T> tessellate(const catmull_rom<D, T>& c, std::type_identity_t<T> to
     if (!(tolerance > 0 && std::isfinite(tolerance)))
         throw invalid_input("tolerance must be positive and finite, got " + detail::num(double(tolerance)));
     polyline<D, T> out;
-    // Room for the most vertices there can be (uniform_piece_count per
-    // segment bounds them), capped: the pages never written are never
-    // touched, and the vectors neither grow nor copy on the way.
-    {
-        std::size_t most = 2;
-        for (std::size_t i = 0; i < c.segment_count() && most < (std::size_t(1) << 24); ++i)
-            most += uniform_piece_count(c.segment(i), tolerance);
-        most = std::min(most, std::size_t(1) << 24);
-        out.t.reserve(most);
-        detail::advise_huge_pages(out.t.data(), most * sizeof(T));
-    }
-    out.t.push_back(c.t_min());
     const auto grid = c.grid();
     const std::size_t n = c.segment_count();
-    // One segment at a time: the greedy cut (detail/tessellate_lanes.hpp).
-    auto cut_one_by_one = [&] {
-        for (std::size_t i = 0; i < n; ++i) {
-            const cubic_segment<D, T>& s = c.segment(i);
-            // A constant segment: its end is its start, already a vertex.
-            if (s.c1 == vec<D, T>{} && s.c2 == vec<D, T>{} && s.c3 == vec<D, T>{}) continue;
-            detail::tessellate_scalar_cut(
-                s, grid[i], grid[i + 1], tolerance, uniform_piece_count(s, tolerance),
-                [](const cubic_segment<D, T>& seg, T u0, T u1, T k0) { return flatness_bound(seg, u0, u1, k0); },
-                [&](T t) { out.t.push_back(t); });
-            out.t.push_back(grid[i + 1]);
-        }
-    };
-    if constexpr (std::is_same_v<T, double>) {
-        if (detail::cut_in_lanes()) {
-            // With AVX2: several segments at a time, each cut as one by
-            // one, then their vertices in order (the same bits). By blocks
-            // of segments, so that the lanes' buffers stay small and warm.
+    // With AVX2 and enough segments: several segments at a time
+    // (detail/tessellate_lanes.hpp), the same vertices. (Short curves one
+    // by one: the lanes' buffers cost more than they save there; smoothing
+    // 10^6 GIS lines of 10-50 vertices, each tessellated alone, took 15%
+    // longer per line than 10^4 lines when they went through the lanes.)
+    bool lanes = false;
+    if constexpr (std::is_same_v<T, double>) lanes = n >= detail::cut_lanes_from && detail::cut_in_lanes();
+    // Room for the most vertices there can be (uniform_piece_count per
+    // segment bounds them), capped: the pages never written are never
+    // touched (where large, they are advised for huge pages), and the
+    // vectors neither grow nor copy on the way.
+    std::size_t most = 2;
+    for (std::size_t i = 0; i < n && most < (std::size_t(1) << 24); ++i)
+        most += uniform_piece_count(c.segment(i), tolerance);
+    most = std::min(most, std::size_t(1) << 24);
+    out.t.reserve(most);
+    detail::advise_huge_pages(out.t.data(), most * sizeof(T));
+    if (!lanes) out.points.reserve(most);
+    out.t.push_back(c.t_min());
+    if (!lanes) out.points.push_back(c.evaluate_unchecked(c.t_min()));
+    if (lanes) {
+        if constexpr (std::is_same_v<T, double>) {
+            // Each segment's vertices put back in order, by blocks of
+            // segments, so that the lanes' buffers stay small and warm.
             constexpr std::size_t block = 1024;
             std::vector<double> buf[detail::cut_width];
             std::vector<detail::cut_record> rec(std::min(n, block));
@@ -200,28 +194,49 @@ polyline<D, T> tessellate(const catmull_rom<D, T>& c, std::type_identity_t<T> to
                     rec.data());
                 for (std::size_t j = 0; j < m; ++j) {
                     const detail::cut_record& r = rec[j];
-                    if (r.lane < 0) continue;  // a constant segment
+                    if (r.lane < 0) continue;  // a constant segment: its end is its start, already a vertex
                     const double* from = buf[r.lane].data() + r.start;
                     out.t.insert(out.t.end(), from, from + r.count);
                     out.t.push_back(grid[i0 + j + 1]);
                 }
             }
-        } else {
-            cut_one_by_one();
         }
     } else {
-        cut_one_by_one();
+        // One segment at a time; a vertex strictly inside segment s is what
+        // evaluate_unchecked(t) computes there (its segment is s), without
+        // locating it.
+        for (std::size_t i = 0; i < n; ++i) {
+            const cubic_segment<D, T>& s = c.segment(i);
+            // A constant segment: its end is its start, already a vertex.
+            if (s.c1 == vec<D, T>{} && s.c2 == vec<D, T>{} && s.c3 == vec<D, T>{}) continue;
+            detail::tessellate_scalar_cut(
+                s, grid[i], grid[i + 1], tolerance, uniform_piece_count(s, tolerance),
+                [](const cubic_segment<D, T>& seg, T u0, T u1, T k0) { return flatness_bound(seg, u0, u1, k0); },
+                [&](T t) {
+                    out.t.push_back(t);
+                    out.points.push_back(s.dt(s.local(t), 0));
+                });
+            out.t.push_back(grid[i + 1]);
+            out.points.push_back(c.evaluate_unchecked(grid[i + 1]));
+        }
     }
     // Trailing constant segments: the last vertex is already the end point;
     // a curve that is a single point gets its two ends.
-    if (out.t.size() == 1) out.t.push_back(c.t_max());
-    else out.t.back() = c.t_max();
-    // The vertices: evaluate() at each t, as one sorted batch (the same bits
-    // as one at a time).
-    out.points.reserve(out.t.size());
-    detail::advise_huge_pages(out.points.data(), out.t.size() * sizeof(vec<D, T>));
-    out.points.resize(out.t.size());
-    c.evaluate(std::span<const T>(out.t), std::span<vec<D, T>>(out.points));
+    if (out.t.size() == 1) {
+        out.t.push_back(c.t_max());
+        if (!lanes) out.points.push_back(c.evaluate_unchecked(c.t_max()));
+    } else if (out.t.back() != c.t_max()) {
+        out.t.back() = c.t_max();
+        if (!lanes) out.points.back() = c.evaluate_unchecked(c.t_max());
+    }
+    if (lanes) {
+        // The vertices: evaluate() at each t, as one sorted batch (the same
+        // bits as one at a time), into pages advised for huge pages.
+        out.points.reserve(out.t.size());
+        detail::advise_huge_pages(out.points.data(), out.t.size() * sizeof(vec<D, T>));
+        out.points.resize(out.t.size());
+        c.evaluate(std::span<const T>(out.t), std::span<vec<D, T>>(out.points));
+    }
     return out;
 }
 

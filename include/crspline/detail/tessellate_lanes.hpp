@@ -532,6 +532,9 @@ CRSPLINE_TARGET_AVX2 void cut_segments_avx2(std::size_t n, const SegmentAt& segm
 inline constexpr int cut_width = 1;
 #endif
 
+/// The fewest segments tessellate() cuts in lanes.
+inline constexpr std::size_t cut_lanes_from = 64;
+
 /// Whether tessellate() cuts in lanes: with AVX2 (avx2_enabled()). On the
 /// x86-64 baseline, four lanes in SSE2 pairs measured slower than one
 /// segment at a time (143 against 101 ns a vertex on the benchmark's walk
