@@ -162,8 +162,9 @@ polyline<D, T> tessellate(const catmull_rom<D, T>& c, std::type_identity_t<T> to
     // With AVX2 and enough segments: several segments at a time
     // (detail/tessellate_lanes.hpp), the same vertices. (Short curves one
     // by one: the lanes' buffers cost more than they save there; smoothing
-    // 10^6 GIS lines of 10-50 vertices, each tessellated alone, took 15%
-    // longer per line than 10^4 lines when they went through the lanes.)
+    // GIS lines of 10-50 vertices, each tessellated alone, grew from 23 to
+    // 34 us per line between 10^4 and 10^6 lines through the lanes, 27 to
+    // 29-30 one by one: BENCHMARKS.md, issue 29.)
     bool lanes = false;
     if constexpr (std::is_same_v<T, double>) lanes = n >= detail::cut_lanes_from && detail::cut_in_lanes();
     // Room for the most vertices there can be (uniform_piece_count per
