@@ -951,7 +951,9 @@ std::string kernels() {
     const bool avx2 = crspline::detail::avx2_enabled(), avx512 = crspline::detail::avx512_enabled();
     return std::string("evaluation double: ") + (avx2 && avx512 ? "AVX-512 (sorted), AVX2 (unsorted)" : avx2 ? "AVX2" : "SSE2") +
            "; evaluation float: " + (avx2 && avx512 ? "AVX-512" : avx2 ? "AVX2" : "SSE2") +
-           "; arc length rules and first pass: " + (avx2 ? "AVX2" : "SSE2") + "; construction: SSE2";
+           "; arc length rules and first pass: " + (avx2 ? "AVX2" : "SSE2") +
+           "; tessellation cut: " + (avx2 && avx512 ? "AVX-512 (2 x 8 lanes)" : avx2 ? "AVX2 (2 x 4 lanes)" : "one segment at a time") +
+           "; construction: SSE2";
 #else
     return "portable (no x86 dispatch)";
 #endif

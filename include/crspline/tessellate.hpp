@@ -159,7 +159,7 @@ polyline<D, T> tessellate(const catmull_rom<D, T>& c, std::type_identity_t<T> to
     polyline<D, T> out;
     const auto grid = c.grid();
     const std::size_t n = c.segment_count();
-    // With AVX2 and enough segments: several segments at a time
+    // With AVX2 (or AVX-512) and enough segments: several segments at a time
     // (detail/tessellate_lanes.hpp), the same vertices. (Short curves one
     // by one: the lanes' buffers cost more than they save there; smoothing
     // GIS lines of 10-50 vertices, each tessellated alone, grew from 23 to

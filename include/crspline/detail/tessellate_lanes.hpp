@@ -1,20 +1,25 @@
 // crspline internal: tessellate()'s greedy cut of the segments, several
-// segments side by side in vector lanes, for double on CPUs with AVX2.
+// segments side by side in vector lanes, for double on CPUs with AVX2
+// (AVX-512F where the CPU has it).
 //
 // Why lanes. One vertex of the greedy cut is a chain of about twenty
 // dependent square roots and divisions (|C''| at the piece's start, the
 // closed-form width, the bound at a first end, the predicted growth, the
 // bound again): the processor waits on their latency, about 100 ns a vertex
 // on the benchmark's walk, while it could start others. The segments are
-// independent, so each lane cuts its own segment (two groups of four lanes,
-// two independent chains); a lane that finishes takes the next segment that
+// independent, so each lane cuts its own segment (two groups of four lanes
+// with AVX2, of eight with AVX-512: two independent chains); a lane that
+// finishes takes the next segment that
 // nobody has taken, and tessellate() puts the vertices of each segment back
 // in order. Each lane does exactly the operations of the scalar cut
 // (tessellate_scalar_cut below, the text tessellate() had), in the same
 // order, with no FMA: the same vertices, bit for bit
 // (Kernels.TessellationLanesAgreeBitForBit). Issue 30: the benchmark's
 // sorted evaluation got three times faster, and tessellation per vertex
-// stood at 138 of its points where the goal is 50.
+// stood at 138 of its points where the goal is 50. On a Zen 5 EPYC a
+// square root costs the same per instruction for 4 or 8 doubles, and the
+// AVX-512 lanes took the benchmark's walk at 1e-5 from 35 to 22 ns a
+// vertex (BENCHMARKS.md).
 #pragma once
 
 #include <algorithm>
@@ -108,85 +113,24 @@ void tessellate_scalar_cut(const cubic_segment<D, T>& s, T a, T t_end, T toleran
     }
 }
 
-/// Lanes of doubles for the cut, any width of the GCC/Clang vector
-/// extension: the same operations as simd_lanes.hpp's, as templates over
-/// the vector type V and its mask type M (V = double, M = bool: one lane).
-/// (Eight lanes, as 2 halves in the AVX2 clone or in one AVX-512 register,
-/// measured slower than four: GCC 12 lowers the wider vectors' masks and
-/// blends poorly.)
+/// Lanes of doubles for the cut: V, a GCC/Clang vector of doubles (its
+/// arithmetic written with the usual operators), M its mask, and S the
+/// policy of the instruction set (cut_avx2, cut_avx512 below): square
+/// roots, max and min, comparisons (M: a vector of all-ones or zero lanes
+/// with AVX2, a k-register's bits with AVX-512, where GCC 12 would lower
+/// the vector extension's comparisons lane by lane), blends and mask
+/// tests. Masks combine with & and |.
 template <class V>
-inline constexpr int vx_width = std::is_same_v<V, double> ? 1 : int(sizeof(V) / sizeof(double));
-/// x = a in the lanes where m holds.
-template <class V, class M>
-[[gnu::always_inline]] inline void vx_set(V& x, const M& m, const std::type_identity_t<V>& a) noexcept {
-    if constexpr (std::is_same_v<V, double>) {
-        if (m) x = a;
-    } else {
-        x = V((M(a) & m) | (M(x) & ~m));
-    }
-}
-/// Whether m holds in some lane; fails in some lane.
-template <class M>
-[[gnu::always_inline]] inline bool vx_any(const M& m) noexcept {
-    if constexpr (std::is_same_v<M, bool>) {
-        return m;
-    } else {
-        long long any = 0;
-        for (int l = 0; l < int(sizeof(M) / sizeof(long long)); ++l) any |= m[l];
-        return any != 0;
-    }
-}
-template <class M>
-[[gnu::always_inline]] inline bool vx_any_not(const M& m) noexcept {
-    if constexpr (std::is_same_v<M, bool>) {
-        return !m;
-    } else {
-        long long all = -1;
-        for (int l = 0; l < int(sizeof(M) / sizeof(long long)); ++l) all &= m[l];
-        return all == 0;
-    }
-}
-/// acc += |x| (the sign bit cleared), lane by lane.
-template <class V, class M>
-[[gnu::always_inline]] inline void vx_add_abs(V& acc, const V& x) noexcept {
-    if constexpr (std::is_same_v<V, double>) acc += std::abs(x);
-    else acc += V(M(x) & (M{} + 0x7fffffffffffffffLL));
-}
-/// Lane l of x; lane l of x set to v; of a mask, set or cleared.
-template <class V>
-[[gnu::always_inline]] inline auto vx_get(const V& x, int l) noexcept {
-    if constexpr (std::is_same_v<V, double> || std::is_same_v<V, bool>) return x;
-    else return x[l];
-}
-template <class V>
-[[gnu::always_inline]] inline void vx_put(V& x, int l, double v) noexcept {
-    if constexpr (std::is_same_v<V, double>) x = v;
-    else x[l] = v;
-}
-template <class M>
-[[gnu::always_inline]] inline void vx_put_mask(M& m, int l, bool v) noexcept {
-    if constexpr (std::is_same_v<M, bool>) m = v;
-    else m[l] = v ? -1 : 0;
-}
-/// x = a in the lanes where m fails.
-template <class V, class M>
-[[gnu::always_inline]] inline void vx_set_not(V& x, const M& m, const std::type_identity_t<V>& a) noexcept {
-    if constexpr (std::is_same_v<V, double>) {
-        if (!m) x = a;
-    } else {
-        x = V((M(x) & m) | (M(a) & ~m));
-    }
-}
+inline constexpr int vx_width = int(sizeof(V) / sizeof(double));
 /// m = m and not off.
 template <class M>
 [[gnu::always_inline]] inline void vx_clear(M& m, const std::type_identity_t<M>& off) noexcept {
-    if constexpr (std::is_same_v<M, bool>) m = m && !off;
-    else m = m & ~off;
+    m = M(m & ~off);
 }
 
-/// The segments' cut in lanes of V (W of them): segment i's coefficients,
-/// knots and uniform piece count per lane, and the state of its cut.
-template <std::size_t D, class V, class M>
+/// The segments' cut in lanes of V: segment i's coefficients, knots and
+/// uniform piece count per lane, and the state of its cut.
+template <std::size_t D, class V>
 struct cut_lanes {
     V c1[D], c2[D], c3[D], t0, inv_h, h, t_end, n_uniform, a;
 };
@@ -202,27 +146,32 @@ static_assert(plain_norm_lo == 0x1p-511 / std::numeric_limits<double>::epsilon()
 /// one by norm() itself (a zero, huge or tiny vector: rare).
 template <std::size_t D, class V, class M, class S>
 [[gnu::always_inline]] inline void lanes_norm(V& r, const V (&x)[D]) noexcept {
+#if defined(__clang__)
+#pragma clang fp contract(off)  // the same roundings as the scalar cut (cut_avx512)
+#endif
     const V zero = x[0] - x[0];
     if constexpr (D == 1) {
         r = zero;
-        vx_add_abs<V, M>(r, x[0]);  // std::abs: 0 + |x|, the sign bit cleared
+        S::add_abs(r, x[0]);  // std::abs: 0 + |x|, the sign bit cleared
     } else {
         V m = zero, s = zero;
         for (std::size_t k = 0; k < D; ++k) {
             V ax = zero;
-            vx_add_abs<V, M>(ax, x[k]);
+            S::add_abs(ax, x[k]);
             S::max(m, m, ax);
             s += x[k] * x[k];
         }
         S::apply(s);
-        const M plain = (m > plain_norm_lo) & (m < std::sqrt(std::numeric_limits<double>::max() / double(D)));
+        M plain;
+        S::gt(plain, m, zero + plain_norm_lo);
+        S::and_lt(plain, m, zero + std::sqrt(std::numeric_limits<double>::max() / double(D)));
         if (S::any_not(plain)) [[unlikely]] {
             constexpr int W = vx_width<V>;
             for (int l = 0; l < W; ++l) {
-                if (vx_get(plain, l)) continue;
+                if ((S::bits(plain) >> l) & 1u) continue;
                 vec<D, double> v;
-                for (std::size_t k = 0; k < D; ++k) v[k] = vx_get(x[k], l);
-                vx_put(s, l, norm(v));
+                for (std::size_t k = 0; k < D; ++k) v[k] = x[k][l];
+                s[l] = norm(v);
             }
         }
         r = s;
@@ -232,8 +181,11 @@ template <std::size_t D, class V, class M, class S>
 /// r = flatness_bound (tessellate.hpp) lane by lane, the same operations:
 /// the piece [u0, u1] of each lane's segment, k0 = |C''(u0)|.
 template <std::size_t D, class V, class M, class S>
-[[gnu::always_inline]] inline void lanes_flatness(V& r, const cut_lanes<D, V, M>& c, const V& u0, const V& u1,
+[[gnu::always_inline]] inline void lanes_flatness(V& r, const cut_lanes<D, V>& c, const V& u0, const V& u1,
                                                   const V& k0) noexcept {
+#if defined(__clang__)
+#pragma clang fp contract(off)  // the same roundings as the scalar cut (cut_avx512)
+#endif
     const V w = u1 - u0, zero = w - w, one = zero + 1.0;
     V d2[D], q1[D], q2[D], chord[D];
     const V six_u1 = 6.0 * u1, three_u0 = 3.0 * u0, three_u1 = 3.0 * u1;
@@ -250,7 +202,8 @@ template <std::size_t D, class V, class M, class S>
         q2[k] = chord[k] - w3 * (c.c1[k] + u1 * (2.0 * c.c2[k] + three_u1 * c.c3[k]));
         len2 += chord[k] * chord[k];
     }
-    const M has_len = len2 > 0;
+    M has_len;
+    S::gt(has_len, len2, zero);
     V e1[D], e2[D];
     // e = q - f chord, f = std::clamp(q.chord / len2, 0, 1) where len2 > 0,
     // else 0.
@@ -265,7 +218,7 @@ template <std::size_t D, class V, class M, class S>
         V g, ff = zero;
         S::min(g, f, one);
         S::max(g, g, zero);
-        vx_set(ff, has_len, g);
+        S::set(ff, has_len, g);
         for (std::size_t k = 0; k < D; ++k) e[k] = q[k] - ff * chord[k];
     }
     V by_hull, n1, n2;
@@ -277,8 +230,8 @@ template <std::size_t D, class V, class M, class S>
         V m1 = zero, m2 = zero, s1 = zero, s2 = zero;
         for (std::size_t k = 0; k < D; ++k) {
             V a1 = zero, a2 = zero;
-            vx_add_abs<V, M>(a1, e1[k]);
-            vx_add_abs<V, M>(a2, e2[k]);
+            S::add_abs(a1, e1[k]);
+            S::add_abs(a2, e2[k]);
             S::max(m1, m1, a1);
             S::max(m2, m2, a2);
             s1 += e1[k] * e1[k], s2 += e2[k] * e2[k];
@@ -287,13 +240,15 @@ template <std::size_t D, class V, class M, class S>
         S::max(m, m1, m2);
         S::max(by_hull, s1, s2);
         S::apply(by_hull);
-        const M plain = (m > plain_norm_lo) & (m < std::sqrt(std::numeric_limits<double>::max() / double(D)));
+        M plain;
+        S::gt(plain, m, zero + plain_norm_lo);
+        S::and_lt(plain, m, zero + std::sqrt(std::numeric_limits<double>::max() / double(D)));
         // Where plain fails in a lane: the larger norm, as norm() gives it.
         if (S::any_not(plain)) [[unlikely]] {
             lanes_norm<D, V, M, S>(n1, e1);
             lanes_norm<D, V, M, S>(n2, e2);
             S::max(n1, n1, n2);
-            vx_set_not(by_hull, plain, n1);
+            S::set_not(by_hull, plain, n1);
         }
     }
     S::min(r, by_second_difference, by_hull);
@@ -315,10 +270,14 @@ struct cut_record {
 template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
 [[gnu::always_inline]] inline void cut_segments_lanes(std::size_t n, const SegmentAt& segment_at, const double* grid,
                                                       double tol, std::vector<double>* buf, cut_record* rec) {
+#if defined(__clang__)
+#pragma clang fp contract(off)  // the same roundings as the scalar cut (cut_avx512)
+#endif
     constexpr int W = vx_width<V>;
-    cut_lanes<D, V, M> c[G];
-    const V zero = V{} - V{}, one = zero + 1.0, four = zero + 4.0;
-    const M none = zero != zero;
+    cut_lanes<D, V> c[G];
+    const V zero = V{} - V{}, one = zero + 1.0, four = zero + 4.0, tol_v = zero + tol, least_grow = zero + 1.02;
+    M none;
+    S::gt(none, zero, zero);
     M live[G];
     std::size_t seg[G][W] = {}, next = 0;
     for (int g = 0; g < G; ++g) {
@@ -336,18 +295,18 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
                 rec[i] = cut_record{};
                 continue;
             }
-            cut_lanes<D, V, M>& cg = c[g];
+            cut_lanes<D, V>& cg = c[g];
             for (std::size_t k = 0; k < D; ++k)
-                vx_put(cg.c1[k], l, s.c1[k]), vx_put(cg.c2[k], l, s.c2[k]), vx_put(cg.c3[k], l, s.c3[k]);
-            vx_put(cg.t0, l, s.t0), vx_put(cg.inv_h, l, s.inv_h), vx_put(cg.h, l, s.h);
-            vx_put(cg.t_end, l, grid[i + 1]), vx_put(cg.a, l, grid[i]);
-            vx_put(cg.n_uniform, l, double(uniform_piece_count(s, tol)));
+                cg.c1[k][l] = s.c1[k], cg.c2[k][l] = s.c2[k], cg.c3[k][l] = s.c3[k];
+            cg.t0[l] = s.t0, cg.inv_h[l] = s.inv_h, cg.h[l] = s.h;
+            cg.t_end[l] = grid[i + 1], cg.a[l] = grid[i];
+            cg.n_uniform[l] = double(uniform_piece_count(s, tol));
             rec[i] = {W * g + l, buf[W * g + l].size(), 0};
             seg[g][l] = i;
-            vx_put_mask(live[g], l, true);
+            S::put_mask(live[g], l, true);
             return;
         }
-        vx_put_mask(live[g], l, false);
+        S::put_mask(live[g], l, false);
     };
     for (int g = 0; g < G; ++g)
         for (int l = 0; l < W; ++l) refill(g, l);
@@ -361,7 +320,9 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
     // through references here too.)
     auto u_of = [&](int g, V& u, const V& t) __attribute__((always_inline)) {
         u = (t - c[g].t0) * c[g].inv_h;
-        vx_set(u, t == c[g].t_end, one);
+        M at_end;
+        S::eq(at_end, t, c[g].t_end);
+        S::set(u, at_end, one);
     };
     auto c2_norm = [&](int g, V& r, const V& u) __attribute__((always_inline)) {
         V d2[D];
@@ -373,7 +334,9 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
     auto closed_width = [&](V& w, const V& k, const V& u0) __attribute__((always_inline)) {
         w = 8.0 * tol / k;
         S::apply(w);
-        vx_set_not(w, k > 0, one - u0);
+        M positive;
+        S::gt(positive, k, zero);
+        S::set_not(w, positive, one - u0);
     };
     while (any_of(live)) {
         V a[G], u0[G], k0[G], lo[G], hi[G], f[G], f_hi[G], pt[G];
@@ -384,18 +347,23 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
             V ut, ft;
             u_of(g, ut, t);
             lanes_flatness<D, V, M, S>(ft, c[g], u0[g], ut, k0[g]);
-            const M ok = ft <= tol;
+            M ok, at_end;
+            S::le(ok, ft, tol_v);
             pass[g] = act & ok;
             M fail = act;
             vx_clear(fail, ok);
-            vx_set(lo[g], pass[g], t), vx_set(f[g], pass[g], ft);
-            vx_set(hi[g], fail, t), vx_set(f_hi[g], fail, ft);
-            end_failed[g] = end_failed[g] | (fail & (t == c[g].t_end));
+            S::set(lo[g], pass[g], t), S::set(f[g], pass[g], ft);
+            S::set(hi[g], fail, t), S::set(f_hi[g], fail, ft);
+            S::eq(at_end, t, c[g].t_end);
+            end_failed[g] = end_failed[g] | (fail & at_end);
         };
         auto open = [&](int g, const V& t) __attribute__((always_inline)) {
-            M at_end = t == c[g].t_end;
+            M at_end, below;
+            S::eq(at_end, t, c[g].t_end);
             vx_clear(at_end, end_failed[g]);
-            o[g] = (t > lo[g]) & ((t < hi[g]) | at_end);
+            S::lt(below, t, hi[g]);
+            o[g] = below | at_end;
+            S::and_gt(o[g], t, lo[g]);
         };
         // The closed-form start, and the first end tested.
         for (int g = 0; g < G; ++g) {
@@ -420,9 +388,12 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
         for (int halve = 0; halve < 64; ++halve) {
             V mid[G];
             for (int g = 0; g < G; ++g) {
-                vx_clear(bisect[g], lo[g] > a[g]);
+                M proved;
+                S::gt(proved, lo[g], a[g]);
+                vx_clear(bisect[g], proved);
                 mid[g] = lo[g] + (hi[g] - lo[g]) / 2.0;
-                bisect[g] = bisect[g] & (mid[g] > lo[g]) & (mid[g] < hi[g]);
+                S::and_gt(bisect[g], mid[g], lo[g]);
+                S::and_lt(bisect[g], mid[g], hi[g]);
             }
             if (!any_of(bisect)) break;
             for (int g = 0; g < G; ++g)
@@ -437,25 +408,29 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
         for (int g = 0; g < G; ++g) grow_on[g] = live[g], back_on[g] = none, steps[g] = zero;
         for (;;) {
             for (int g = 0; g < G; ++g) {
-                grow_on[g] = grow_on[g] & (steps[g] < 4.0) & (lo[g] > a[g]) & (lo[g] < c[g].t_end);
+                S::and_lt(grow_on[g], steps[g], four);
+                S::and_gt(grow_on[g], lo[g], a[g]);
+                S::and_lt(grow_on[g], lo[g], c[g].t_end);
                 V root = tol / f[g], grow, nx;
                 S::apply(root);
                 S::min(grow, four, 0.99 * root);
-                vx_set_not(grow, f[g] > 0, four);
-                grow_on[g] = grow_on[g] & (grow > 1.02);
+                M positive;
+                S::gt(positive, f[g], zero);
+                S::set_not(grow, positive, four);
+                S::and_gt(grow_on[g], grow, least_grow);
                 S::min(nx, c[g].t_end, a[g] + grow * (lo[g] - a[g]));
                 open(g, nx);
-                vx_set_not(nx, o[g], lo[g] + (hi[g] - lo[g]) / 2.0);
+                S::set_not(nx, o[g], lo[g] + (hi[g] - lo[g]) / 2.0);
                 open(g, nx);
                 grow_on[g] = grow_on[g] & o[g];
                 act[g] = grow_on[g] | back_on[g];
-                vx_set(pt[g], grow_on[g], nx);
+                S::set(pt[g], grow_on[g], nx);
             }
             if (!any_of(act)) break;
             for (int g = 0; g < G; ++g) {
                 if (!S::any(act[g])) continue;
                 test(g, pt[g], act[g]);
-                vx_set(steps[g], grow_on[g], steps[g] + 1.0);
+                S::set(steps[g], grow_on[g], steps[g] + 1.0);
                 M failed = grow_on[g];
                 vx_clear(failed, pass[g]);
                 back_on[g] = none;
@@ -463,19 +438,24 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
                     V back_root = tol / f_hi[g];
                     S::apply(back_root);
                     const V back = a[g] + (pt[g] - a[g]) * 0.99 * back_root;
-                    back_on[g] = failed & (back > lo[g] + (hi[g] - lo[g]) / 8.0) & (back < hi[g]);
-                    vx_set(pt[g], back_on[g], back);
+                    back_on[g] = failed;
+                    S::and_gt(back_on[g], back, lo[g] + (hi[g] - lo[g]) / 8.0);
+                    S::and_lt(back_on[g], back, hi[g]);
+                    S::set(pt[g], back_on[g], back);
                 }
                 grow_on[g] = grow_on[g] & pass[g];
             }
         }
         for (int g = 0; g < G; ++g) {
             V x;
-            M fin = lo[g] == c[g].t_end;
+            M fin, stuck, fin_now;
+            S::eq(fin, lo[g], c[g].t_end);
             S::min(x, c[g].t_end, a[g] + c[g].h / c[g].n_uniform);
             S::max(lo[g], lo[g], x);
-            vx_set(lo[g], lo[g] == a[g], hi[g]);
-            fin = fin | (lo[g] == c[g].t_end);
+            S::eq(stuck, lo[g], a[g]);
+            S::set(lo[g], stuck, hi[g]);
+            S::eq(fin_now, lo[g], c[g].t_end);
+            fin = fin | fin_now;
             c[g].a = lo[g];
             // The lanes' outcomes as bits and the new vertices as scalars,
             // each in one instruction, not lane by lane.
@@ -497,36 +477,118 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
 }
 
 #if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
-/// The square roots and mask tests of the cut's lanes in the AVX2 clone:
-/// one instruction each.
+/// The operations of the cut's lanes in the AVX2 clone (four lanes, masks
+/// as vectors): one instruction each.
 struct cut_avx2 {
-    [[gnu::always_inline]] static void apply(lanes& x) noexcept { sqrt_avx::apply(x); }
+    using V = lanes;
+    using M = lanes_mask;
+    [[gnu::always_inline]] static void apply(V& x) noexcept { sqrt_avx::apply(x); }
     // r = std::max(a, b) = (a < b ? b : a) and r = std::min(a, b) = (b < a ?
     // b : a) exactly, NaN and signed zeros included: vmaxpd(x, y) is (x > y
     // ? x : y) and vminpd(x, y) is (x < y ? x : y), so with x = b, y = a.
-    CRSPLINE_TARGET_AVX2 static void max(lanes& r, const lanes& a, const lanes& b) noexcept {
-        r = lanes(_mm256_max_pd(__m256d(b), __m256d(a)));
+    CRSPLINE_TARGET_AVX2 static void max(V& r, const V& a, const V& b) noexcept {
+        r = V(_mm256_max_pd(__m256d(b), __m256d(a)));
     }
-    CRSPLINE_TARGET_AVX2 static void min(lanes& r, const lanes& a, const lanes& b) noexcept {
-        r = lanes(_mm256_min_pd(__m256d(b), __m256d(a)));
+    CRSPLINE_TARGET_AVX2 static void min(V& r, const V& a, const V& b) noexcept {
+        r = V(_mm256_min_pd(__m256d(b), __m256d(a)));
     }
-    CRSPLINE_TARGET_AVX2 static bool any(const lanes_mask& m) noexcept { return _mm256_movemask_pd(__m256d(m)) != 0; }
-    CRSPLINE_TARGET_AVX2 static unsigned bits(const lanes_mask& m) noexcept {
-        return unsigned(_mm256_movemask_pd(__m256d(m)));
+    // r = (a < b), ... lane by lane; and_lt, and_gt: r = r and (a < b), ...
+    [[gnu::always_inline]] static void lt(M& r, const V& a, const V& b) noexcept { r = a < b; }
+    [[gnu::always_inline]] static void le(M& r, const V& a, const V& b) noexcept { r = a <= b; }
+    [[gnu::always_inline]] static void gt(M& r, const V& a, const V& b) noexcept { r = a > b; }
+    [[gnu::always_inline]] static void eq(M& r, const V& a, const V& b) noexcept { r = a == b; }
+    [[gnu::always_inline]] static void and_lt(M& r, const V& a, const V& b) noexcept { r &= a < b; }
+    [[gnu::always_inline]] static void and_gt(M& r, const V& a, const V& b) noexcept { r &= a > b; }
+    /// x = a in the lanes where m holds; where it fails.
+    [[gnu::always_inline]] static void set(V& x, const M& m, const V& a) noexcept {
+        x = V((M(a) & m) | (M(x) & ~m));
     }
-    CRSPLINE_TARGET_AVX2 static bool any_not(const lanes_mask& m) noexcept {
-        return _mm256_movemask_pd(__m256d(m)) != 0xF;
+    [[gnu::always_inline]] static void set_not(V& x, const M& m, const V& a) noexcept {
+        x = V((M(x) & m) | (M(a) & ~m));
     }
+    [[gnu::always_inline]] static void put_mask(M& m, int l, bool v) noexcept { m[l] = v ? -1 : 0; }
+    /// acc += |x| (the sign bit cleared).
+    [[gnu::always_inline]] static void add_abs(V& acc, const V& x) noexcept {
+        acc += V(M(x) & (M{} + 0x7fffffffffffffffLL));
+    }
+    CRSPLINE_TARGET_AVX2 static unsigned bits(const M& m) noexcept { return unsigned(_mm256_movemask_pd(__m256d(m))); }
+    CRSPLINE_TARGET_AVX2 static bool any(const M& m) noexcept { return bits(m) != 0; }
+    CRSPLINE_TARGET_AVX2 static bool any_not(const M& m) noexcept { return bits(m) != 0xFu; }
 };
-/// The groups of four lanes side by side (two: three or four measured no
-/// faster), and the lanes in all (their buffers).
+
+/// The operations of the cut's lanes in the AVX-512 clone: eight lanes in
+/// one register, masks in k-registers (GCC 12 makes the vector extension's
+/// 512-bit comparisons lane by lane, so intrinsics here: the ordered, quiet
+/// comparisons of C++'s <, <=, >, ==, false where a NaN is; blends are
+/// masked moves). AVX-512F brings FMA with it: GCC's contraction of a
+/// product and a sum is off in CRSPLINE_TARGET_AVX512 functions, Clang's
+/// (made in the front end, expression by expression) by the pragma in the
+/// generic functions above, so that each lane rounds as the scalar cut.
+using lanes8 = double __attribute__((vector_size(64)));
+using lanes8_bits = long long __attribute__((vector_size(64)));
+struct cut_avx512 {
+    using V = lanes8;
+    using M = __mmask8;
+    // (The masked forms with every lane on: the plain intrinsics' undefined
+    // source draws GCC 12's -Wmaybe-uninitialized; the same instructions.)
+    CRSPLINE_TARGET_AVX512 static void apply(V& x) noexcept {
+        x = V(_mm512_mask_sqrt_pd(__m512d(x), __mmask8(0xFF), __m512d(x)));
+    }
+    CRSPLINE_TARGET_AVX512 static void max(V& r, const V& a, const V& b) noexcept {
+        r = V(_mm512_mask_max_pd(__m512d(a), __mmask8(0xFF), __m512d(b), __m512d(a)));
+    }
+    CRSPLINE_TARGET_AVX512 static void min(V& r, const V& a, const V& b) noexcept {
+        r = V(_mm512_mask_min_pd(__m512d(a), __mmask8(0xFF), __m512d(b), __m512d(a)));
+    }
+    CRSPLINE_TARGET_AVX512 static void lt(M& r, const V& a, const V& b) noexcept {
+        r = _mm512_cmp_pd_mask(__m512d(a), __m512d(b), _CMP_LT_OQ);
+    }
+    CRSPLINE_TARGET_AVX512 static void le(M& r, const V& a, const V& b) noexcept {
+        r = _mm512_cmp_pd_mask(__m512d(a), __m512d(b), _CMP_LE_OQ);
+    }
+    CRSPLINE_TARGET_AVX512 static void gt(M& r, const V& a, const V& b) noexcept {
+        r = _mm512_cmp_pd_mask(__m512d(a), __m512d(b), _CMP_GT_OQ);
+    }
+    CRSPLINE_TARGET_AVX512 static void eq(M& r, const V& a, const V& b) noexcept {
+        r = _mm512_cmp_pd_mask(__m512d(a), __m512d(b), _CMP_EQ_OQ);
+    }
+    CRSPLINE_TARGET_AVX512 static void and_lt(M& r, const V& a, const V& b) noexcept {
+        r = _mm512_mask_cmp_pd_mask(r, __m512d(a), __m512d(b), _CMP_LT_OQ);
+    }
+    CRSPLINE_TARGET_AVX512 static void and_gt(M& r, const V& a, const V& b) noexcept {
+        r = _mm512_mask_cmp_pd_mask(r, __m512d(a), __m512d(b), _CMP_GT_OQ);
+    }
+    CRSPLINE_TARGET_AVX512 static void set(V& x, M m, const V& a) noexcept {
+        x = V(_mm512_mask_mov_pd(__m512d(x), m, __m512d(a)));
+    }
+    CRSPLINE_TARGET_AVX512 static void set_not(V& x, M m, const V& a) noexcept {
+        x = V(_mm512_mask_mov_pd(__m512d(a), m, __m512d(x)));
+    }
+    [[gnu::always_inline]] static void put_mask(M& m, int l, bool v) noexcept {
+        m = M(v ? m | (1u << l) : m & ~(1u << l));
+    }
+    [[gnu::always_inline]] static void add_abs(V& acc, const V& x) noexcept {
+        acc += V(lanes8_bits(x) & (lanes8_bits{} + 0x7fffffffffffffffLL));
+    }
+    [[gnu::always_inline]] static unsigned bits(M m) noexcept { return m; }
+    [[gnu::always_inline]] static bool any(M m) noexcept { return m != 0; }
+    [[gnu::always_inline]] static bool any_not(M m) noexcept { return m != 0xFFu; }
+};
+
+/// The groups of lanes side by side (two: three or four measured no
+/// faster with AVX2), and the lanes' buffers (the most lanes of a path).
 inline constexpr int cut_groups = 2;
-inline constexpr int cut_width = cut_groups * lanes_width;
+inline constexpr int cut_width = cut_groups * 8;
 
 template <std::size_t D, class SegmentAt>
 CRSPLINE_TARGET_AVX2 void cut_segments_avx2(std::size_t n, const SegmentAt& segment_at, const double* grid,
                                             double tol, std::vector<double>* buf, cut_record* rec) {
     cut_segments_lanes<D, cut_groups, lanes, lanes_mask, cut_avx2>(n, segment_at, grid, tol, buf, rec);
+}
+template <std::size_t D, class SegmentAt>
+CRSPLINE_TARGET_AVX512 void cut_segments_avx512(std::size_t n, const SegmentAt& segment_at, const double* grid,
+                                                double tol, std::vector<double>* buf, cut_record* rec) {
+    cut_segments_lanes<D, cut_groups, lanes8, __mmask8, cut_avx512>(n, segment_at, grid, tol, buf, rec);
 }
 #else
 inline constexpr int cut_width = 1;
@@ -547,11 +609,13 @@ inline bool cut_in_lanes() noexcept {
 #endif
 }
 
-/// cut_segments_lanes in the AVX2 clone (only where cut_in_lanes()).
+/// cut_segments_lanes in the AVX-512 clone where the CPU has AVX-512F, else
+/// in the AVX2 clone (only where cut_in_lanes()).
 template <std::size_t D, class SegmentAt>
 void cut_segments(std::size_t n, const SegmentAt& segment_at, const double* grid, double tol,
                   std::vector<double>* buf, cut_record* rec) {
 #if CRSPLINE_X86_DISPATCH && CRSPLINE_LANES4
+    if (avx512_enabled()) return cut_segments_avx512<D>(n, segment_at, grid, tol, buf, rec);
     cut_segments_avx2<D>(n, segment_at, grid, tol, buf, rec);
 #else
     (void)n, (void)segment_at, (void)grid, (void)tol, (void)buf, (void)rec;
