@@ -128,11 +128,12 @@ template <class M>
     m = M(m & ~off);
 }
 
-/// The segments' cut in lanes of V: segment i's coefficients, knots and
-/// uniform piece count per lane, and the state of its cut.
+/// The segments' cut in lanes of V: segment i's coefficients (and 2 c2,
+/// which the bounds take: doubling is exact), knots and uniform piece count
+/// per lane, and the state of its cut.
 template <std::size_t D, class V>
 struct cut_lanes {
-    V c1[D], c2[D], c3[D], t0, inv_h, h, t_end, n_uniform, a;
+    V c1[D], c2[D], c3[D], c2x2[D], t0, inv_h, h, t_end, n_uniform, a;
 };
 
 /// detail::plain_norm_range's limits for double: sqrt(min) / eps =
@@ -140,6 +141,40 @@ struct cut_lanes {
 inline constexpr double plain_norm_lo = 0x1p-459;
 static_assert(plain_norm_lo == 0x1p-511 / std::numeric_limits<double>::epsilon() &&
               0x1p-511 * 0x1p-511 == std::numeric_limits<double>::min());
+template <std::size_t D>
+inline double plain_norm_hi() noexcept {
+    return std::sqrt(std::numeric_limits<double>::max() / double(D));
+}
+
+/// Whether the sums of squares s (of D numbers each, computed as the plain
+/// formula does) prove plain_norm_range for the largest magnitude m of
+/// those numbers, in the lanes where they do: s > D lo^2 and s < fl(hi^2).
+/// A proof, not the same test: each term fl(x^2) is at most fl(lo^2) =
+/// lo^2 where every |x| <= lo, and their rounded sum at most D lo^2 (exact
+/// in double); and s >= fl(m^2) >= fl(hi^2) where m >= hi (rounding is
+/// monotone). A NaN fails it. Where it fails (tiny, huge, zero or NaN
+/// vectors: rare), the callers test m itself, as norm() does; so the same
+/// lanes take the plain formula, and it costs two compares, not D
+/// magnitudes and maxima.
+template <std::size_t D, class V, class M, class S>
+[[gnu::always_inline]] inline void plain_by_squares(M& r, const V& s, const V& zero) noexcept {
+    S::gt(r, s, zero + double(D) * (plain_norm_lo * plain_norm_lo));
+    S::and_lt(r, s, zero + plain_norm_hi<D>() * plain_norm_hi<D>());
+}
+
+/// Where plain_norm_range holds for the largest magnitude of x, lane by
+/// lane (the test norm() makes).
+template <std::size_t D, class V, class M, class S>
+[[gnu::always_inline]] inline void plain_by_magnitude(M& r, const V (&x)[D], const V& zero) noexcept {
+    V m = zero;
+    for (std::size_t k = 0; k < D; ++k) {
+        V ax = zero;
+        S::add_abs(ax, x[k]);
+        S::max(m, m, ax);
+    }
+    S::gt(r, m, zero + plain_norm_lo);
+    S::and_lt(r, m, zero + plain_norm_hi<D>());
+}
 
 /// r = norm(x) lane by lane: the plain formula where plain_norm_range
 /// holds, as norm() takes it; the lanes where it does not are done one by
@@ -154,18 +189,13 @@ template <std::size_t D, class V, class M, class S>
         r = zero;
         S::add_abs(r, x[0]);  // std::abs: 0 + |x|, the sign bit cleared
     } else {
-        V m = zero, s = zero;
-        for (std::size_t k = 0; k < D; ++k) {
-            V ax = zero;
-            S::add_abs(ax, x[k]);
-            S::max(m, m, ax);
-            s += x[k] * x[k];
-        }
-        S::apply(s);
+        V s = zero;
+        for (std::size_t k = 0; k < D; ++k) s += x[k] * x[k];
         M plain;
-        S::gt(plain, m, zero + plain_norm_lo);
-        S::and_lt(plain, m, zero + std::sqrt(std::numeric_limits<double>::max() / double(D)));
+        plain_by_squares<D, V, M, S>(plain, s, zero);
+        S::apply(s);
         if (S::any_not(plain)) [[unlikely]] {
+            plain_by_magnitude<D, V, M, S>(plain, x, zero);
             constexpr int W = vx_width<V>;
             for (int l = 0; l < W; ++l) {
                 if ((S::bits(plain) >> l) & 1u) continue;
@@ -179,17 +209,19 @@ template <std::size_t D, class V, class M, class S>
 }
 
 /// r = flatness_bound (tessellate.hpp) lane by lane, the same operations:
-/// the piece [u0, u1] of each lane's segment, k0 = |C''(u0)|.
+/// the piece [u0, u1] of each lane's segment, k0 = |C''(u0)|, d0 = C'(u0)
+/// as flatness_bound computes it (c1 + u0 (2 c2 + 3 u0 c3): the same for
+/// every piece from u0).
 template <std::size_t D, class V, class M, class S>
 [[gnu::always_inline]] inline void lanes_flatness(V& r, const cut_lanes<D, V>& c, const V& u0, const V& u1,
-                                                  const V& k0) noexcept {
+                                                  const V& k0, const V (&d0)[D]) noexcept {
 #if defined(__clang__)
 #pragma clang fp contract(off)  // the same roundings as the scalar cut (cut_avx512)
 #endif
     const V w = u1 - u0, zero = w - w, one = zero + 1.0;
     V d2[D], q1[D], q2[D], chord[D];
-    const V six_u1 = 6.0 * u1, three_u0 = 3.0 * u0, three_u1 = 3.0 * u1;
-    for (std::size_t k = 0; k < D; ++k) d2[k] = 2.0 * c.c2[k] + six_u1 * c.c3[k];
+    const V six_u1 = 6.0 * u1, three_u1 = 3.0 * u1;
+    for (std::size_t k = 0; k < D; ++k) d2[k] = c.c2x2[k] + six_u1 * c.c3[k];
     V curvature;
     lanes_norm<D, V, M, S>(curvature, d2);
     S::max(curvature, k0, curvature);
@@ -198,8 +230,8 @@ template <std::size_t D, class V, class M, class S>
     V len2 = zero;
     for (std::size_t k = 0; k < D; ++k) {
         chord[k] = w * (c.c1[k] + sum * c.c2[k] + sq * c.c3[k]);
-        q1[k] = w3 * (c.c1[k] + u0 * (2.0 * c.c2[k] + three_u0 * c.c3[k]));
-        q2[k] = chord[k] - w3 * (c.c1[k] + u1 * (2.0 * c.c2[k] + three_u1 * c.c3[k]));
+        q1[k] = w3 * d0[k];
+        q2[k] = chord[k] - w3 * (c.c1[k] + u1 * (c.c2x2[k] + three_u1 * c.c3[k]));
         len2 += chord[k] * chord[k];
     }
     M has_len;
@@ -227,24 +259,36 @@ template <std::size_t D, class V, class M, class S>
         lanes_norm<D, V, M, S>(n2, e2);
         S::max(by_hull, n1, n2);
     } else {
-        V m1 = zero, m2 = zero, s1 = zero, s2 = zero;
-        for (std::size_t k = 0; k < D; ++k) {
-            V a1 = zero, a2 = zero;
-            S::add_abs(a1, e1[k]);
-            S::add_abs(a2, e2[k]);
-            S::max(m1, m1, a1);
-            S::max(m2, m2, a2);
-            s1 += e1[k] * e1[k], s2 += e2[k] * e2[k];
-        }
-        V m;
-        S::max(m, m1, m2);
+        V s1 = zero, s2 = zero;
+        for (std::size_t k = 0; k < D; ++k) s1 += e1[k] * e1[k], s2 += e2[k] * e2[k];
+        // flatness_bound's test, plain_norm_range of m = max(max_abs(e1),
+        // max_abs(e2)), proved from the sums of squares where it can be
+        // (plain_by_squares: both below fl(hi^2) bound both magnitudes
+        // above; either above D lo^2 bounds m below), else made as it makes it.
+        const V s_lo = zero + double(D) * (plain_norm_lo * plain_norm_lo),
+                s_hi = zero + plain_norm_hi<D>() * plain_norm_hi<D>();
+        M plain, lower2;
+        S::gt(plain, s1, s_lo);
+        S::gt(lower2, s2, s_lo);
+        plain = plain | lower2;
+        S::and_lt(plain, s1, s_hi);
+        S::and_lt(plain, s2, s_hi);
         S::max(by_hull, s1, s2);
         S::apply(by_hull);
-        M plain;
-        S::gt(plain, m, zero + plain_norm_lo);
-        S::and_lt(plain, m, zero + std::sqrt(std::numeric_limits<double>::max() / double(D)));
         // Where plain fails in a lane: the larger norm, as norm() gives it.
         if (S::any_not(plain)) [[unlikely]] {
+            V m1 = zero, m2 = zero;
+            for (std::size_t k = 0; k < D; ++k) {
+                V a1 = zero, a2 = zero;
+                S::add_abs(a1, e1[k]);
+                S::add_abs(a2, e2[k]);
+                S::max(m1, m1, a1);
+                S::max(m2, m2, a2);
+            }
+            V m;
+            S::max(m, m1, m2);
+            S::gt(plain, m, zero + plain_norm_lo);
+            S::and_lt(plain, m, zero + plain_norm_hi<D>());
             lanes_norm<D, V, M, S>(n1, e1);
             lanes_norm<D, V, M, S>(n2, e2);
             S::max(n1, n1, n2);
@@ -281,7 +325,7 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
     M live[G];
     std::size_t seg[G][W] = {}, next = 0;
     for (int g = 0; g < G; ++g) {
-        for (std::size_t k = 0; k < D; ++k) c[g].c1[k] = c[g].c2[k] = c[g].c3[k] = zero;
+        for (std::size_t k = 0; k < D; ++k) c[g].c1[k] = c[g].c2[k] = c[g].c3[k] = c[g].c2x2[k] = zero;
         c[g].t0 = c[g].inv_h = c[g].h = c[g].t_end = c[g].n_uniform = c[g].a = zero;
         live[g] = none;
     }
@@ -297,7 +341,7 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
             }
             cut_lanes<D, V>& cg = c[g];
             for (std::size_t k = 0; k < D; ++k)
-                cg.c1[k][l] = s.c1[k], cg.c2[k][l] = s.c2[k], cg.c3[k][l] = s.c3[k];
+                cg.c1[k][l] = s.c1[k], cg.c2[k][l] = s.c2[k], cg.c3[k][l] = s.c3[k], cg.c2x2[k][l] = 2.0 * s.c2[k];
             cg.t0[l] = s.t0, cg.inv_h[l] = s.inv_h, cg.h[l] = s.h;
             cg.t_end[l] = grid[i + 1], cg.a[l] = grid[i];
             cg.n_uniform[l] = double(uniform_piece_count(s, tol));
@@ -327,7 +371,7 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
     auto c2_norm = [&](int g, V& r, const V& u) __attribute__((always_inline)) {
         V d2[D];
         const V six_u = 6.0 * u;
-        for (std::size_t k = 0; k < D; ++k) d2[k] = 2.0 * c[g].c2[k] + six_u * c[g].c3[k];
+        for (std::size_t k = 0; k < D; ++k) d2[k] = c[g].c2x2[k] + six_u * c[g].c3[k];
         lanes_norm<D, V, M, S>(r, d2);
     };
     // k > 0 ? sqrt(8 tol / k) : 1 - u0.
@@ -339,14 +383,14 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
         S::set_not(w, positive, one - u0);
     };
     while (any_of(live)) {
-        V a[G], u0[G], k0[G], lo[G], hi[G], f[G], f_hi[G], pt[G];
+        V a[G], u0[G], k0[G], d0[G][D], lo[G], hi[G], f[G], f_hi[G], pt[G];
         M end_failed[G], pass[G], o[G];
         // The test of the pieces [a, t] in the lanes act of group g: their
         // bounds; where one holds, lo = t, else hi = t. pass: where it held.
         auto test = [&](int g, const V& t, const M& act) __attribute__((always_inline)) {
             V ut, ft;
             u_of(g, ut, t);
-            lanes_flatness<D, V, M, S>(ft, c[g], u0[g], ut, k0[g]);
+            lanes_flatness<D, V, M, S>(ft, c[g], u0[g], ut, k0[g], d0[g]);
             M ok, at_end;
             S::le(ok, ft, tol_v);
             pass[g] = act & ok;
@@ -370,6 +414,9 @@ template <std::size_t D, int G, class V, class M, class S, class SegmentAt>
             V w0, k1, w1, x;
             a[g] = c[g].a;
             u_of(g, u0[g], a[g]);
+            const V three_u0 = 3.0 * u0[g];
+            for (std::size_t k = 0; k < D; ++k)
+                d0[g][k] = c[g].c1[k] + u0[g] * (c[g].c2x2[k] + three_u0 * c[g].c3[k]);
             c2_norm(g, k0[g], u0[g]);
             closed_width(w0, k0[g], u0[g]);
             S::min(x, one, u0[g] + w0);
