@@ -976,15 +976,27 @@ int main(int argc, char** argv) {
         }
     }
     // --pages=4k: the evaluation cases' buffers in 4 KiB pages instead of
-    // 2 MiB ones (bench/memory_policy.hpp); taken out before Google
+    // 2 MiB ones (bench/memory_policy.hpp). --no-avx512, --no-avx2: the
+    // kernels a CPU without AVX-512F (or without AVX2) would run, on this
+    // one (the report's second line names them). Taken out before Google
     // Benchmark reads the arguments.
-    for (int i = 1; i < argc; ++i)
-        if (std::string_view(argv[i]) == "--pages=4k") {
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view a = argv[i];
+        if (a == "--pages=4k") {
             crspline_bench::eval_huge_pages() = false;
-            for (int j = i; j + 1 < argc; ++j) argv[j] = argv[j + 1];
-            argv[--argc] = nullptr;
-            --i;
+#if CRSPLINE_X86_DISPATCH
+        } else if (a == "--no-avx512") {
+            crspline::detail::avx512_enabled() = false;
+        } else if (a == "--no-avx2") {
+            crspline::detail::avx512_enabled() = crspline::detail::avx2_enabled() = false;
+#endif
+        } else {
+            continue;
         }
+        for (int j = i; j + 1 < argc; ++j) argv[j] = argv[j + 1];
+        argv[--argc] = nullptr;
+        --i;
+    }
     crspline_bench::fresh_memory();
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
