@@ -146,32 +146,39 @@ inline double plain_norm_hi() noexcept {
     return std::sqrt(std::numeric_limits<double>::max() / double(D));
 }
 
-/// Whether the sums of squares s (of D numbers each, computed as the plain
-/// formula does) prove plain_norm_range for the largest magnitude m of
-/// those numbers, in the lanes where they do: s > D lo^2 and s < fl(hi^2).
-/// A proof, not the same test: each term fl(x^2) is at most fl(lo^2) =
-/// lo^2 where every |x| <= lo, and their rounded sum at most D lo^2 (exact
-/// in double); and s >= fl(m^2) >= fl(hi^2) where m >= hi (rounding is
-/// monotone). A NaN fails it. Where it fails (tiny, huge, zero or NaN
-/// vectors: rare), the callers test m itself, as norm() does; so the same
-/// lanes take the plain formula, and it costs two compares, not D
-/// magnitudes and maxima.
-template <std::size_t D, class V, class M, class S>
-[[gnu::always_inline]] inline void plain_by_squares(M& r, const V& s, const V& zero) noexcept {
-    S::gt(r, s, zero + double(D) * (plain_norm_lo * plain_norm_lo));
-    S::and_lt(r, s, zero + plain_norm_hi<D>() * plain_norm_hi<D>());
+/// The bounds on a sum of squares s of D numbers (computed as the plain
+/// formula does) that prove plain_norm_range for their largest magnitude m:
+/// s > D lo^2 proves m > lo, s < fl(hi^2) proves m < hi. Each term fl(x^2)
+/// is at most fl(lo^2) = lo^2 where every |x| <= lo, and their rounded sum
+/// at most D lo^2 (exact in double); and s >= fl(m^2) >= fl(hi^2) where
+/// m >= hi (rounding is monotone). A NaN fails both. Where they fail (tiny,
+/// huge, zero or NaN vectors: rare), the callers test m itself, as norm()
+/// does (plain_by_magnitude); so the same lanes take the plain formula, at
+/// the cost of two compares, not D magnitudes and maxima.
+template <std::size_t D>
+inline double squares_lo() noexcept {
+    return double(D) * (plain_norm_lo * plain_norm_lo);
+}
+template <std::size_t D>
+inline double squares_hi() noexcept {
+    return plain_norm_hi<D>() * plain_norm_hi<D>();
 }
 
-/// Where plain_norm_range holds for the largest magnitude of x, lane by
-/// lane (the test norm() makes).
-template <std::size_t D, class V, class M, class S>
-[[gnu::always_inline]] inline void plain_by_magnitude(M& r, const V (&x)[D], const V& zero) noexcept {
-    V m = zero;
+/// m = the largest magnitude of x, lane by lane, as max_abs() finds it.
+template <std::size_t D, class V, class S>
+[[gnu::always_inline]] inline void lanes_max_abs(V& m, const V (&x)[D], const V& zero) noexcept {
+    m = zero;
     for (std::size_t k = 0; k < D; ++k) {
         V ax = zero;
         S::add_abs(ax, x[k]);
         S::max(m, m, ax);
     }
+}
+
+/// Where plain_norm_range holds for the magnitude m, lane by lane (the test
+/// norm() makes).
+template <std::size_t D, class V, class M, class S>
+[[gnu::always_inline]] inline void plain_by_magnitude(M& r, const V& m, const V& zero) noexcept {
     S::gt(r, m, zero + plain_norm_lo);
     S::and_lt(r, m, zero + plain_norm_hi<D>());
 }
@@ -191,11 +198,14 @@ template <std::size_t D, class V, class M, class S>
     } else {
         V s = zero;
         for (std::size_t k = 0; k < D; ++k) s += x[k] * x[k];
-        M plain;
-        plain_by_squares<D, V, M, S>(plain, s, zero);
+        M plain;  // proved by the sum of squares, else tested on the magnitude
+        S::gt(plain, s, zero + squares_lo<D>());
+        S::and_lt(plain, s, zero + squares_hi<D>());
         S::apply(s);
         if (S::any_not(plain)) [[unlikely]] {
-            plain_by_magnitude<D, V, M, S>(plain, x, zero);
+            V m;
+            lanes_max_abs<D, V, S>(m, x, zero);
+            plain_by_magnitude<D, V, M, S>(plain, m, zero);
             constexpr int W = vx_width<V>;
             for (int l = 0; l < W; ++l) {
                 if ((S::bits(plain) >> l) & 1u) continue;
@@ -263,10 +273,9 @@ template <std::size_t D, class V, class M, class S>
         for (std::size_t k = 0; k < D; ++k) s1 += e1[k] * e1[k], s2 += e2[k] * e2[k];
         // flatness_bound's test, plain_norm_range of m = max(max_abs(e1),
         // max_abs(e2)), proved from the sums of squares where it can be
-        // (plain_by_squares: both below fl(hi^2) bound both magnitudes
+        // (squares_lo, squares_hi: both below fl(hi^2) bound both magnitudes
         // above; either above D lo^2 bounds m below), else made as it makes it.
-        const V s_lo = zero + double(D) * (plain_norm_lo * plain_norm_lo),
-                s_hi = zero + plain_norm_hi<D>() * plain_norm_hi<D>();
+        const V s_lo = zero + squares_lo<D>(), s_hi = zero + squares_hi<D>();
         M plain, lower2;
         S::gt(plain, s1, s_lo);
         S::gt(lower2, s2, s_lo);
@@ -277,18 +286,11 @@ template <std::size_t D, class V, class M, class S>
         S::apply(by_hull);
         // Where plain fails in a lane: the larger norm, as norm() gives it.
         if (S::any_not(plain)) [[unlikely]] {
-            V m1 = zero, m2 = zero;
-            for (std::size_t k = 0; k < D; ++k) {
-                V a1 = zero, a2 = zero;
-                S::add_abs(a1, e1[k]);
-                S::add_abs(a2, e2[k]);
-                S::max(m1, m1, a1);
-                S::max(m2, m2, a2);
-            }
-            V m;
-            S::max(m, m1, m2);
-            S::gt(plain, m, zero + plain_norm_lo);
-            S::and_lt(plain, m, zero + plain_norm_hi<D>());
+            V m1, m2;
+            lanes_max_abs<D, V, S>(m1, e1, zero);
+            lanes_max_abs<D, V, S>(m2, e2, zero);
+            S::max(m1, m1, m2);
+            plain_by_magnitude<D, V, M, S>(plain, m1, zero);
             lanes_norm<D, V, M, S>(n1, e1);
             lanes_norm<D, V, M, S>(n2, e2);
             S::max(n1, n1, n2);
