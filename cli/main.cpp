@@ -374,10 +374,20 @@ void add_options(CLI::App* sub, std::string_view name, cli_options& o) {
 }  // namespace
 
 namespace crspline::cli { int smooth_main(int argc, char** argv); }  // smooth.cpp: crspline smooth (issue 29)
+namespace crspline::cli { int fit_main(int argc, char** argv); }     // fit.cpp: crspline fit (issue 40)
+namespace crspline::cli { int sweep_main(int argc, char** argv); }   // sweep.cpp: crspline sweep (issue 41)
+namespace crspline::cli { int stroke_main(int argc, char** argv); }  // sweep.cpp: crspline stroke (issue 41)
 
 int main(int argc, char** argv) {
     using namespace crspline::cli;
     if (argc > 1 && std::string_view(argv[1]) == "smooth") return smooth_main(argc - 1, argv + 1);
+#ifdef CRSPLINE_CLI_FIT
+    if (argc > 1 && std::string_view(argv[1]) == "fit") return fit_main(argc - 1, argv + 1);
+#endif
+#ifdef CRSPLINE_CLI_SWEEP
+    if (argc > 1 && std::string_view(argv[1]) == "sweep") return sweep_main(argc - 1, argv + 1);
+    if (argc > 1 && std::string_view(argv[1]) == "stroke") return stroke_main(argc - 1, argv + 1);
+#endif
 
     CLI::App app{std::string("crspline ") + crspline::version +
                  ": cubic Catmull-Rom curves through points in 1 to 16 dimensions. "

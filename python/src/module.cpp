@@ -13,6 +13,8 @@ using namespace crspline::python;
 namespace crspline::python { void bind_rotation(py::module_& m); }  // bind_rotation.cpp: crspline.rotation's core
 namespace crspline::python { void bind_geo(py::module_& m); }  // bind_geo.cpp: crspline.geo's core
 namespace crspline::python { void bind_decision(py::module_& m); }  // bind_decision.cpp: the decision (issue 27)
+namespace crspline::python { void bind_fit(py::module_& m); }  // bind_fit.cpp: crspline.fit (issue 40)
+namespace crspline::python { void bind_sweep(py::module_& m); }  // bind_sweep.cpp: crspline.sweep, stroke (issue 41)
 
 PYBIND11_MODULE(_crspline, m) {
     m.doc() = "Compiled core of the crspline package (private: use crspline.CatmullRom).";
@@ -75,5 +77,11 @@ PYBIND11_MODULE(_crspline, m) {
 #endif
 #ifdef CRSPLINE_PY_ANALYSIS
     bind_analysis(m, cls);
+#endif
+#ifdef CRSPLINE_PY_FIT
+    bind_fit(m);
+#endif
+#ifdef CRSPLINE_PY_SWEEP
+    bind_sweep(m);
 #endif
 }
