@@ -1,0 +1,358 @@
+// crspline: sweeps. A cross-section carried along a 3-D curve by a frame,
+// as a triangle mesh within a proved distance of the swept surface.
+//
+//   auto mesh = crspline::sweep(curve, {.profile = crspline::sweep_profile::circle(0.1)});
+//   // mesh.positions, mesh.normals (3 per vertex), mesh.uvs (2), mesh.indices (3 per triangle)
+//
+// The frame is rotation-minimizing (no twist that the curve does not
+// force); on a closed curve the twist it gathers once around (the
+// holonomy) is spread evenly in t, so the last ring meets the first: the
+// surface closes with no seam (the closing ring's positions and normals are
+// the first ring's, bit for bit; texture u is the same, v runs 0 to 1).
+// Optional: roll keys (angles about the tangent at the knots or at arc
+// lengths, interpolated by the rotation splines), an up vector (the normal
+// follows the up vector's projection and never flips: see
+// sweep/rings.hpp for the poles), and a scale along arc length (keys,
+// a Catmull-Rom interpolant in s). How the tolerance is proved:
+// sweep/sampling.hpp. Everything is in double; the result is plain arrays
+// (what WASM and NumPy take as they are).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "arc_length.hpp"
+#include "bounds.hpp"
+#include "catmull_rom.hpp"
+#include "decision.hpp"
+#include "detail/format.hpp"
+#include "error.hpp"
+#include "sweep/keys.hpp"
+#include "sweep/profile.hpp"
+#include "sweep/rings.hpp"
+#include "sweep/sampling.hpp"
+#include "vec.hpp"
+
+namespace crspline {
+
+/// The default sweep tolerance, relative to the curve's bounding-box
+/// diagonal plus twice the largest radius.
+inline constexpr double default_sweep_tolerance = 1e-3;
+
+/// The cross-section, in the plane of the frame's normal (first
+/// coordinate) and binormal (second).
+struct sweep_profile {
+    enum class kind { circle, polyline, curve };
+    kind type = kind::circle;
+    double radius = 1;            ///< circle
+    std::vector<vec<2>> points{}; ///< polyline vertices or curve control points
+    bool closed = true;           ///< polyline: a closed polygon; curve: a closed curve
+    double alpha = 0.5;           ///< curve: knot exponent
+
+    static sweep_profile circle(double r) { return {kind::circle, r, {}, true, 0.5}; }
+    static sweep_profile polyline(std::vector<vec<2>> p, bool closed = false) {
+        return {kind::polyline, 1, std::move(p), closed, 0.5};
+    }
+    static sweep_profile curve(std::vector<vec<2>> p, bool closed = true, double alpha = 0.5) {
+        return {kind::curve, 1, std::move(p), closed, alpha};
+    }
+};
+
+/// Where roll keys sit: one angle per knot (a closed curve's knots without
+/// the repeated last), or at given arc lengths.
+enum class roll_position { knots, arc_length };
+
+struct sweep_options {
+    sweep_profile profile = sweep_profile::circle(1);
+    std::vector<double> roll{};            ///< angles (radians) about the tangent, empty: none
+    roll_position roll_at = roll_position::knots;
+    std::vector<double> roll_s{};          ///< arc lengths of the roll keys (roll_at == arc_length)
+    std::vector<double> scale{};           ///< scale of the profile at the arc lengths scale_s; empty: 1
+    std::vector<double> scale_s{};
+    std::optional<vec<3>> up{};            ///< the normal follows this vector's projection
+    double tolerance = 0;                  ///< distance; 0: default_sweep_tolerance x (diagonal + 2 radius)
+    std::size_t tubular_segments = 0;      ///< > 0: this many pieces along, equal in arc length
+    std::size_t radial_segments = 0;       ///< > 0: a circle or curve profile in this many pieces
+    bool clearance = true;                 ///< measure the centre line's clearance for the report
+};
+
+/// What the sweep found.
+struct sweep_report {
+    double tolerance = 0;            ///< the tolerance asked for (adaptive) or 0 (given counts)
+    double bound = 0;                ///< the mesh's distance bound to the surface (+inf: not proved)
+    bool tolerance_met = true;       ///< bound <= tolerance (adaptive)
+    bool proved = true;              ///< false with an up vector: its turning is measured at the rings, not bounded
+    double holonomy = 0;             ///< the rotation-minimizing frame's twist after one loop (closed, no up), radians
+    double length = 0;               ///< the curve's arc length (v = s / length)
+    double largest_radius = 0;       ///< largest scale x |profile point|
+    double clearance = std::numeric_limits<double>::infinity();  ///< centre line, non-adjacent segments
+    double min_radius_of_curvature = std::numeric_limits<double>::infinity();  ///< at the rings
+    bool far_contact = false;        ///< clearance < 2 largest_radius: distant parts of the tube may meet
+    bool local_fold = false;         ///< at some ring the radius reaches the radius of curvature
+    bool self_intersects = false;    ///< far_contact or local_fold
+};
+
+struct sweep_mesh {
+    std::vector<double> positions, normals, uvs;  ///< 3, 3 and 2 per vertex; vertex k * ring_size + j
+    std::vector<std::uint32_t> indices;           ///< 3 per triangle
+    std::size_t rings = 0, ring_size = 0;
+    std::vector<double> t, s;                     ///< the curve parameter and arc length of each ring
+    sweep_report report;
+};
+
+namespace detail {
+
+inline void sweep_error(const char* field, std::optional<std::size_t> index, double value, const std::string& what) {
+    throw spec_error(field, index, std::nullopt, num(value), std::string(field) + ": " + what);
+}
+
+inline void check_sweep_options(const catmull_rom<3>& c, const sweep_options& o) {
+    const auto& p = o.profile;
+    if (p.type == sweep_profile::kind::circle) {
+        if (!(p.radius > 0) || !std::isfinite(p.radius))
+            sweep_error("radius", std::nullopt, p.radius, "must be positive and finite, got " + num(p.radius));
+    } else {
+        check_profile_points(p.points);
+    }
+    if (!(o.tolerance >= 0) || !std::isfinite(o.tolerance))
+        sweep_error("tolerance", std::nullopt, o.tolerance, "must be positive and finite (0: the default), got " +
+                                                                num(o.tolerance));
+    if (o.up) {
+        for (std::size_t i = 0; i < 3; ++i)
+            if (!std::isfinite((*o.up)[i])) sweep_error("up", i, (*o.up)[i], "coordinate is not finite");
+        if (!(norm(*o.up) > 0)) sweep_error("up", std::nullopt, 0, "must not be the zero vector");
+    }
+    if (!o.roll.empty() && o.roll_at == roll_position::knots) {
+        const std::size_t knots = c.points().size();
+        if (o.roll.size() != knots)
+            throw spec_error("roll", std::nullopt, std::nullopt, std::to_string(o.roll.size()),
+                             "roll: " + std::to_string(o.roll.size()) + " angles for " + std::to_string(knots) +
+                                 " knots (one per curve point)");
+    }
+}
+
+}  // namespace detail
+
+/// The sweep of opt.profile along the curve (see the top of this file).
+/// Throws spec_error naming the field ("radius", "profile", "roll",
+/// "scale", "up", "tolerance") for bad options.
+inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = {}) {
+    using namespace detail;
+    check_sweep_options(curve, opt);
+    sweep_mesh out;
+    const arc_length_table<3> table(curve);
+    const double length = table.total();
+    const bool closed = curve.closed();
+    const double period = curve.t_max() - curve.t_min();
+    // 1. Roll and scale functions.
+    piecewise_cubic roll, scale;
+    const bool roll_in_s = opt.roll_at == roll_position::arc_length;
+    double roll_turn = 0;
+    if (!opt.roll.empty()) {
+        if (roll_in_s) {
+            roll = roll_function(opt.roll_s, opt.roll, closed ? std::optional<double>(length) : std::nullopt);
+        } else {
+            std::vector<double> w(curve.grid().begin(), curve.grid().begin() + std::ptrdiff_t(opt.roll.size()));
+            roll = roll_function(w, opt.roll, closed ? std::optional<double>(period) : std::nullopt);
+        }
+        if (roll.periodic) roll_turn = roll.pieces.back().b[3] - roll.pieces.front().b[0];
+    }
+    if (!opt.scale.empty()) scale = scale_function(opt.scale_s, opt.scale);
+    double scale_max = 1;
+    if (!scale.empty()) {
+        scale_max = 0;
+        for (const auto& p : scale.pieces) scale_max = std::max(scale_max, p.max_abs());
+    }
+    // 2. The tolerance and the profile's share of it.
+    double rho0 = opt.profile.type == sweep_profile::kind::circle ? opt.profile.radius : 0.0;
+    if (opt.profile.type != sweep_profile::kind::circle)
+        for (const auto& q : opt.profile.points) rho0 = std::max(rho0, norm(q));
+    const bool given_counts = opt.tubular_segments > 0 || opt.radial_segments > 0;
+    const double tol = opt.tolerance > 0 ? opt.tolerance
+                                         : default_sweep_tolerance *
+                                               (double(bounding_box(curve).diagonal()) + 2 * rho0 * scale_max);
+    profile_polyline prof;
+    double around_share = opt.profile.type == sweep_profile::kind::polyline ? 0.0 : tol / 2;
+    switch (opt.profile.type) {
+        case sweep_profile::kind::circle:
+            prof = circle_profile(opt.profile.radius,
+                                  given_counts ? std::max<std::size_t>(opt.radial_segments ? opt.radial_segments : 8, 3)
+                                               : circle_pieces(opt.profile.radius, around_share / scale_max));
+            break;
+        case sweep_profile::kind::polyline: prof = polyline_profile(opt.profile.points, opt.profile.closed); break;
+        case sweep_profile::kind::curve: {
+            std::optional<catmull_rom<2>> pc;
+            try {
+                options<2> po;
+                po.alpha = opt.profile.alpha;
+                po.closed = opt.profile.closed;
+                pc.emplace(std::span<const vec<2>>(opt.profile.points), po);
+            } catch (const std::exception& e) {
+                throw spec_error("profile", std::nullopt, std::nullopt, "", std::string("profile: ") + e.what());
+            }
+            prof = curve_profile(*pc, around_share / scale_max, given_counts ? opt.radial_segments : 0);
+            break;
+        }
+    }
+    const double around = scale_max * prof.chord;
+    const double along_tol = std::max(tol - around, tol * 1e-3);
+    // 3. Breakpoints: roll and scale keys at arc lengths become rings.
+    std::vector<double> key_t;
+    auto add_key = [&](double s) {
+        if (s > 0 && s < length) key_t.push_back(table.t_at(s));
+    };
+    if (roll_in_s)
+        for (double s : opt.roll_s) add_key(closed ? std::fmod(std::fmod(s, length) + length, length) : s);
+    for (double s : opt.scale_s) add_key(s);
+    std::sort(key_t.begin(), key_t.end());
+    // 4. The rates over an interval of a segment (for the bound).
+    const auto grid = curve.grid();
+    auto rates_for = [&](std::size_t i, double ua, double ub, double twist, double up_u1) {
+        piece_rates q;
+        q.rho = prof.rho;
+        q.edge = prof.edge;
+        q.dt_du = grid[i + 1] - grid[i];
+        const double ta = grid[i] + ua * q.dt_du, tb = ub == 1 ? grid[i + 1] : grid[i] + ub * q.dt_du;
+        const double sa = table.s_at(ta), sb = table.s_at(tb);
+        if (!scale.empty()) {
+            const auto b = scale.bounds(sa, sb);
+            q.scale = b[0], q.scale_s1 = b[1], q.scale_s2 = b[2];
+        }
+        if (!roll.empty()) {
+            const auto b = roll_in_s ? roll.bounds(sa, sb) : roll.bounds(ta, tb);
+            q.roll_w1 = b[1], q.roll_w2 = b[2];
+            q.roll_in_s = roll_in_s;
+        }
+        q.twist_t = twist;
+        q.up_u1 = up_u1;
+        return q;
+    };
+    auto site = [&](std::size_t i, double u) {
+        ring_site r;
+        r.segment = i;
+        r.u = u;
+        r.t = u == 1 ? grid[i + 1] : grid[i] + u * (grid[i + 1] - grid[i]);
+        r.s = table.s_at(r.t);
+        return r;
+    };
+    auto constant = [&](std::size_t i) {
+        const auto& s = curve.segment(i);
+        return s.c1 == vec<3>{} && s.c2 == vec<3>{} && s.c3 == vec<3>{};
+    };
+    ring_inputs in;
+    in.curve = &curve;
+    in.roll = &roll;
+    in.roll_in_s = roll_in_s;
+    in.roll_turn = roll_turn;
+    in.scale = &scale;
+    if (opt.up) in.up = *opt.up;
+    std::vector<ring_site> sites;
+    ring_frames frames;
+    bool met = true;
+    double bound = 0;
+    if (!given_counts) {
+        auto place = [&](double twist, double up_u1) {
+            sites.clear();
+            met = true;
+            std::vector<double> cuts;
+            for (std::size_t i = 0; i < curve.segment_count(); ++i) {
+                if (constant(i)) continue;
+                if (sites.empty()) sites.push_back(site(i, 0));
+                std::vector<double> br{0.0};
+                for (double t : key_t)
+                    if (t > grid[i] && t < grid[i + 1]) br.push_back((t - grid[i]) / (grid[i + 1] - grid[i]));
+                br.push_back(1.0);
+                for (std::size_t b = 0; b + 1 < br.size(); ++b) {
+                    cuts.clear();
+                    met &= cut_interval(curve.segment(i), br[b], br[b + 1], rates_for(i, br[b], br[b + 1], twist, up_u1),
+                                        along_tol, 1u << 16, cuts);
+                    for (double u : cuts) sites.push_back(site(i, u));
+                    sites.push_back(site(i, br[b + 1]));
+                }
+            }
+            if (sites.empty()) sites = {site(0, 0), site(curve.segment_count() - 1, 1)};  // a single point
+        };
+        place(0, 0);
+        frames = compute_rings(sites, in);
+        const double twist = closed && !opt.up ? std::abs(frames.holonomy) / period * 1.01 : 0.0;
+        const double up_u1 = opt.up ? frames.up_turn_u * 1.5 : 0.0;
+        if (twist > 0 || up_u1 > 0) {
+            place(twist, up_u1);
+            frames = compute_rings(sites, in);
+        }
+        bound = met ? along_tol + around : std::numeric_limits<double>::infinity();
+        out.report.tolerance = tol;
+    } else {
+        // Given counts: rings equally spaced in arc length (three.js' tubularSegments).
+        const std::size_t K = opt.tubular_segments ? opt.tubular_segments : 64;
+        std::vector<double> s(K + 1), t(K + 1);
+        for (std::size_t k = 0; k <= K; ++k) s[k] = k == K ? length : length * double(k) / double(K);
+        table.t_at(std::span<const double>(s), std::span<double>(t));
+        for (std::size_t k = 0; k <= K; ++k) {
+            ring_site r;
+            r.segment = k == K ? curve.segment_count() - 1 : curve.locate(t[k]);
+            const double d = grid[r.segment + 1] - grid[r.segment];
+            r.t = k == K ? curve.t_max() : t[k];
+            r.u = k == K ? 1.0 : (d > 0 ? (r.t - grid[r.segment]) / d : 0.0);
+            r.s = s[k];
+            sites.push_back(r);
+        }
+        frames = compute_rings(sites, in);
+        // The bound these rings achieve, piece by piece (split at knots).
+        const double twist = closed && !opt.up ? std::abs(frames.holonomy) / period : 0.0;
+        double along = 0;
+        for (std::size_t k = 0; k + 1 < sites.size(); ++k) {
+            const auto &a = sites[k], &b = sites[k + 1];
+            for (std::size_t i = a.segment; i <= b.segment; ++i) {
+                if (constant(i)) continue;
+                const double ua = i == a.segment ? a.u : 0.0, ub = i == b.segment ? b.u : 1.0;
+                if (ub > ua) along = std::max(along, along_bound(curve.segment(i), ua, ub, rates_for(i, ua, ub, twist, 0)));
+            }
+        }
+        bound = along + around;
+        out.report.proved = !opt.up;
+    }
+    // 5. The mesh.
+    write_mesh(frames, sites, prof, length, closed, out.positions, out.normals, out.uvs, out.indices);
+    out.rings = sites.size();
+    out.ring_size = prof.points.size();
+    for (const auto& r : sites) out.t.push_back(r.t), out.s.push_back(r.s);
+    // 6. The report.
+    auto& rep = out.report;
+    rep.bound = bound;
+    rep.tolerance_met = given_counts || bound <= tol * (1 + 1e-12);
+    if (opt.up) rep.proved = false;
+    rep.holonomy = frames.holonomy;
+    rep.length = length;
+    for (std::size_t k = 0; k < sites.size(); ++k) {
+        const double extent = frames.scale[k] * prof.rho;
+        rep.largest_radius = std::max(rep.largest_radius, extent);
+        const double sp = norm(frames.dx[k]);
+        const auto& s = curve.segment(sites[k].segment);
+        const double d = grid[sites[k].segment + 1] - grid[sites[k].segment];
+        const vec<3> a2 = d > 0 ? s.du(sites[k].u, 2) / (d * d) : vec<3>{};
+        const double kappa = sp > 0 ? norm(cross(frames.dx[k], a2)) / (sp * sp * sp) : 0.0;
+        if (kappa > 0) rep.min_radius_of_curvature = std::min(rep.min_radius_of_curvature, 1 / kappa);
+        if (extent * kappa >= 1) rep.local_fold = true;
+    }
+    if (opt.clearance && curve.segment_count() >= 3) rep.clearance = clearance(curve).distance;
+    rep.far_contact = rep.clearance < 2 * rep.largest_radius;
+    rep.self_intersects = rep.far_contact || rep.local_fold;
+    return out;
+}
+
+/// Sweeps need a 3-D curve: for another dimension, a spec_error naming "curve".
+template <std::size_t D>
+    requires(D != 3)
+sweep_mesh sweep(const catmull_rom<D>&, const sweep_options& = {}) {
+    throw spec_error("curve", std::nullopt, std::nullopt, std::to_string(D),
+                     "curve: sweep needs a 3-D curve, got a " + std::to_string(D) + "-D one");
+}
+
+}  // namespace crspline

@@ -1,0 +1,214 @@
+// crspline sweeps, internals: the frame at each ring and the mesh written
+// from the rings and the profile.
+//
+// The frame: rotation-minimizing (double reflection, frames.hpp), turned
+// about the tangent by psi = the spread holonomy + the roll; with an up
+// vector, by the angle that takes the rotation-minimizing normal to the up
+// vector's projection (or its opposite, whichever continues the previous
+// ring's: the frame never flips), held where the tangent is within 1 degree
+// of vertical (the poles, where the projection vanishes) and eased back
+// between 1 and 5 degrees.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <numbers>
+#include <optional>
+#include <vector>
+
+#include "../frames.hpp"
+#include "../segment.hpp"
+#include "../vec.hpp"
+#include "keys.hpp"
+#include "profile.hpp"
+
+namespace crspline::detail {
+
+using v3 = vec<3, double>;
+
+/// Where a ring is on the curve: segment, local u, t, arc length.
+struct ring_site {
+    std::size_t segment = 0;
+    double u = 0, t = 0, s = 0;
+};
+
+/// The frame and rates at each ring.
+struct ring_frames {
+    std::vector<v3> x, dx, normal, binormal, tangent, omega;  ///< omega: the frame's angular velocity per unit t
+    std::vector<double> scale, scale_t;                        ///< r and dr/dt
+    double holonomy = 0;
+    double up_turn_u = 0;  ///< up mode: the largest turn of psi per unit u between rings
+};
+
+inline double angle_about(const v3& from, const v3& to, const v3& axis) {
+    return std::atan2(dot(cross(from, to), axis), dot(from, to));
+}
+
+struct ring_inputs {
+    const catmull_rom<3>* curve = nullptr;
+    const piecewise_cubic* roll = nullptr;
+    bool roll_in_s = false;
+    double roll_turn = 0;  ///< whole turns the roll makes per period (closed, in s)
+    const piecewise_cubic* scale = nullptr;
+    std::optional<v3> up;
+    bool spread_holonomy = true;
+};
+
+inline ring_frames compute_rings(const std::vector<ring_site>& sites, const ring_inputs& in) {
+    const catmull_rom<3>& c = *in.curve;
+    const std::size_t n = sites.size();
+    ring_frames f;
+    f.x.resize(n), f.dx.resize(n), f.normal.resize(n), f.binormal.resize(n), f.tangent.resize(n), f.omega.resize(n);
+    f.scale.assign(n, 1.0), f.scale_t.assign(n, 0.0);
+    const auto grid = c.grid();
+    std::vector<v3> d2(n);
+    // 1. Positions, derivatives in t and tangents (carried over zero-speed
+    //    points; points before the first tangent take that one).
+    std::vector<std::optional<v3>> e(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const auto& s = c.segment(sites[k].segment);
+        const double dt = grid[sites[k].segment + 1] - grid[sites[k].segment];
+        const double inv = dt > 0 ? 1 / dt : 0;
+        const double u = sites[k].u;
+        f.x[k] = s.at(u);
+        f.dx[k] = s.du(u, 1) * inv;
+        d2[k] = s.du(u, 2) * (inv * inv);
+        e[k] = unit_tangent(std::array<v3, 3>{s.du(u, 1), s.du(u, 2), s.du(u, 3)});
+    }
+    v3 carried{{1, 0, 0}};
+    for (const auto& x : e)
+        if (x) {
+            carried = *x;
+            break;
+        }
+    for (std::size_t k = 0; k < n; ++k) {
+        if (e[k]) carried = *e[k];
+        f.tangent[k] = carried;
+    }
+    if (n == 0) return f;
+    // 2. Rotation-minimizing normals, from the Frenet normal at the start.
+    {
+        const double t0 = sites[0].t;
+        const auto fr = frenet_frames(c, std::span<const double>(&t0, 1));
+        f.normal[0] = perpendicular(fr[0].normal, f.tangent[0]).value_or(any_perpendicular(f.tangent[0]));
+        if (in.up) {  // the up vector's projection, where it has one
+            if (auto p = perpendicular(*in.up, f.tangent[0])) f.normal[0] = *p;
+        }
+    }
+    for (std::size_t k = 1; k < n; ++k)
+        f.normal[k] = double_reflection(f.x[k - 1], f.tangent[k - 1], f.normal[k - 1], f.x[k], f.tangent[k]);
+    // 3. The turn about the tangent at each ring.
+    std::vector<double> psi(n, 0.0), psi_t(n, 0.0);
+    const double period = c.t_max() - c.t_min();
+    if (in.up) {
+        const v3 up = *in.up / norm(*in.up);
+        const double s0 = std::sin(std::numbers::pi / 180), s1 = std::sin(5 * std::numbers::pi / 180);
+        double prev = 0;
+        for (std::size_t k = 0; k < n; ++k) {
+            const double sin_up = norm(cross(f.tangent[k], up));
+            const double weight = std::clamp((sin_up - s0) / (s1 - s0), 0.0, 1.0);
+            double target = prev;
+            if (sin_up > 0) {
+                const v3 p = (up - dot(up, f.tangent[k]) * f.tangent[k]) / sin_up;
+                const double a = angle_about(f.normal[k], p, f.tangent[k]);
+                // The projection or its opposite: the one nearer the previous turn.
+                target = a + std::numbers::pi * std::round((prev - a) / std::numbers::pi);
+            }
+            psi[k] = k == 0 && weight > 0 ? target : prev + weight * (target - prev);
+            prev = psi[k];
+        }
+        for (std::size_t k = 1; k < n; ++k) {
+            const double du = sites[k].segment == sites[k - 1].segment ? sites[k].u - sites[k - 1].u : 0;
+            if (du > 0) f.up_turn_u = std::max(f.up_turn_u, std::abs(psi[k] - psi[k - 1]) / du);
+        }
+        for (std::size_t k = 0; k < n; ++k) {  // rate by differences (for the normals only)
+            const std::size_t a = k > 0 ? k - 1 : k, b = k + 1 < n ? k + 1 : k;
+            const double dt = sites[b].t - sites[a].t;
+            psi_t[k] = dt > 0 ? (psi[b] - psi[a]) / dt : 0.0;
+        }
+    } else if (c.closed() && n >= 2 && in.spread_holonomy && period > 0) {
+        // The last ring is the first point again: the carried normal's turn
+        // from the first normal, spread evenly in t.
+        f.holonomy = angle_about(f.normal[n - 1], f.normal[0], f.tangent[0]);
+        for (std::size_t k = 0; k < n; ++k) {
+            psi[k] = f.holonomy * ((sites[k].t - sites[0].t) / period);
+            psi_t[k] = f.holonomy / period;
+        }
+    }
+    if (in.roll && !in.roll->empty()) {
+        for (std::size_t k = 0; k < n; ++k) {
+            const double w = in.roll_in_s ? sites[k].s : sites[k].t;
+            psi[k] += in.roll->value(w, in.roll_turn);
+            psi_t[k] += in.roll->slope(w) * (in.roll_in_s ? norm(f.dx[k]) : 1.0);
+        }
+    }
+    // 4. Turned normals, binormals, angular velocities and scales.
+    for (std::size_t k = 0; k < n; ++k) {
+        const v3& e = f.tangent[k];
+        if (psi[k] != 0) {
+            const v3 r = rotate_about(f.normal[k], e, psi[k]);
+            f.normal[k] = perpendicular(r, e).value_or(r);
+        }
+        f.binormal[k] = cross(e, f.normal[k]);
+        const double sp2 = dot(f.dx[k], f.dx[k]);
+        f.omega[k] = (sp2 > 0 ? cross(f.dx[k], d2[k]) / sp2 : v3{}) + psi_t[k] * e;
+        if (in.scale && !in.scale->empty()) {
+            f.scale[k] = in.scale->value(sites[k].s);
+            f.scale_t[k] = in.scale->slope(sites[k].s) * norm(f.dx[k]);
+        }
+    }
+    return f;
+}
+
+/// Vertex buffers and triangles: ring k, profile vertex j at k * m + j.
+/// Triangles wind counterclockwise seen from where the normals point (for a
+/// profile counterclockwise in the (normal, binormal) plane, outwards).
+inline void write_mesh(const ring_frames& f, const std::vector<ring_site>& sites, const profile_polyline& prof,
+                       double length, bool seamless, std::vector<double>& positions, std::vector<double>& normals,
+                       std::vector<double>& uvs, std::vector<std::uint32_t>& indices) {
+    const std::size_t n = f.x.size(), m = prof.points.size();
+    positions.resize(3 * n * m);
+    normals.resize(3 * n * m);
+    uvs.resize(2 * n * m);
+    for (std::size_t k = 0; k < n; ++k) {
+        const v3 &x = f.x[k], &nn = f.normal[k], &bb = f.binormal[k], &w = f.omega[k];
+        const double r = f.scale[k], r1 = f.scale_t[k];
+        const double v = length > 0 ? sites[k].s / length : 0.0;
+        double* pos = positions.data() + 3 * k * m;
+        double* nor = normals.data() + 3 * k * m;
+        double* uv = uvs.data() + 2 * k * m;
+        for (std::size_t j = 0; j < m; ++j) {
+            const vec<2>& p = prof.points[j];
+            const vec<2>& d = prof.directions[j];
+            const v3 fp = p[0] * nn + p[1] * bb;
+            const v3 fd = d[0] * nn + d[1] * bb;
+            const v3 q = x + r * fp;
+            // S_phi x S_t with S_t = x' + r' F p + r omega x F p.
+            const v3 st = f.dx[k] + r1 * fp + r * cross(w, fp);
+            v3 nv = cross(fd, st);
+            double l = norm(nv);
+            if (!(l > 0)) nv = cross(fd, f.tangent[k]), l = norm(nv);
+            nv = l > 0 ? nv / l : nv;
+            for (int i = 0; i < 3; ++i) pos[3 * j + i] = q[i], nor[3 * j + i] = nv[i];
+            uv[2 * j] = prof.u[j];
+            uv[2 * j + 1] = v;
+        }
+    }
+    // A closed sweep's last ring is its first: the same positions and normals.
+    if (seamless && n >= 2) {
+        std::copy_n(positions.begin(), 3 * m, positions.begin() + 3 * (n - 1) * m);
+        std::copy_n(normals.begin(), 3 * m, normals.begin() + 3 * (n - 1) * m);
+    }
+    indices.clear();
+    indices.reserve(n > 0 && m > 0 ? 6 * (n - 1) * (m - 1) : 0);
+    for (std::size_t k = 0; k + 1 < n; ++k)
+        for (std::size_t j = 0; j + 1 < m; ++j) {
+            const auto a = std::uint32_t(k * m + j), b = std::uint32_t(k * m + j + 1);
+            const auto c = std::uint32_t((k + 1) * m + j), d = std::uint32_t((k + 1) * m + j + 1);
+            indices.insert(indices.end(), {a, b, c, b, d, c});
+        }
+}
+
+}  // namespace crspline::detail

@@ -1,0 +1,110 @@
+// crspline sweeps, internals: where the rings go along the curve, with the
+// bound that proves the mesh within the tolerance of the swept surface.
+//
+// The surface is S(u, p) = x(u) + r(u) F(u) p on a segment's local u, p a
+// point of the profile plane, F = [N B] the frame's normal and binormal, r
+// the scale. Between rings u_a and u_b (width w) and profile vertices p_j,
+// p_(j+1) (edge length e), every point of a mesh triangle is the chord
+// point lambda of the surface curve c(lambda) = S(u(lambda), q(lambda)), u
+// and q linear in lambda from one triangle corner to a point of the
+// opposite edge (q stays on the profile's edge). A chord is within
+// max|c''| / 8 of its curve at the same lambda (the Green's function bound
+// that tessellate.hpp's flatness bound (1) uses), and
+//     c'' = w^2 (x'' + (rF)'' q) + 2 w (rF)' (q_(j+1) - q_j),
+// so the mesh is within
+//     w^2 / 8 (|x''| + rho |(rF)''|) + w e / 4 |(rF)'|          (along)
+// of the surface through the profile's polygon, and that polygon within its
+// own chord bound delta of the profile (around): r_max delta. With omega
+// the frame's angular velocity (the rotation-minimizing part x' x x'' /
+// |x'|^2 plus the roll and the spread holonomy psi' along the tangent):
+//     |(rF)'|  <= |r'| + r |omega|,
+//     |(rF)''| <= |r''| + 2 |r'| |omega| + r (|omega|^2 + |omega'|),
+//     |omega|  <= |x''| / |x'| + |psi'|,
+//     |omega'| <= |x'''| / |x'| + 2 |x''|^2 / |x'|^2 + |psi''| + |psi'| |x''| / |x'|,
+// each maximum taken over the piece: |x''| at an end (x'' is affine),
+// |x'''| = 6 |c3|, |x'| from below by (|x'(u_a)| + |x'(u_b)| - w max|x''|) / 2,
+// the roll and the scale by their Bézier control polygons. A piece whose
+// speed bound is not positive (a cusp) cannot be proved; it is cut until a
+// budget runs out and the report says the tolerance is not met.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "../segment.hpp"
+#include "../vec.hpp"
+
+namespace crspline::detail {
+
+/// What the bound needs to know besides the curve's segment, over one
+/// interval of a segment between breakpoints (knots, roll keys, scale keys).
+struct piece_rates {
+    double rho = 0;         ///< largest |p| of the profile
+    double edge = 0;        ///< longest profile edge
+    double scale = 1;       ///< max r over the interval
+    double scale_s1 = 0;    ///< max |dr/ds|
+    double scale_s2 = 0;    ///< max |d2r/ds2|
+    double roll_w1 = 0;     ///< max |dpsi/dw| of the roll keys
+    double roll_w2 = 0;     ///< max |d2psi/dw2|
+    bool roll_in_s = false; ///< w is arc length (else t)
+    double dt_du = 1;       ///< the segment's knot interval (dt/du)
+    double twist_t = 0;     ///< |holonomy| / period: the spread twist per unit t (constant)
+    double up_u1 = 0;       ///< the up frame's turning per unit u, estimated (up mode only)
+};
+
+/// The along-curve bound of the piece [ua, ub] of segment s (see above);
+/// +infinity when the speed bound is not positive.
+inline double along_bound(const cubic_segment<3, double>& s, double ua, double ub, const piece_rates& q) {
+    const double w = ub - ua;
+    const double k2 = std::max(norm(s.du(ua, 2)), norm(s.du(ub, 2)));
+    const double k3 = norm(s.du(0, 3));
+    const double va = norm(s.du(ua, 1)), vb = norm(s.du(ub, 1));
+    const double v_lo = (va + vb - w * k2) / 2, v_hi = (va + vb + w * k2) / 2;
+    if (!(v_lo > 0)) return std::numeric_limits<double>::infinity();
+    // Roll, spread holonomy and scale per unit u.
+    const double p1 = (q.roll_in_s ? q.roll_w1 * v_hi : q.roll_w1 * q.dt_du) + q.twist_t * q.dt_du + q.up_u1;
+    const double p2 = q.roll_in_s ? q.roll_w2 * v_hi * v_hi + q.roll_w1 * k2 : q.roll_w2 * q.dt_du * q.dt_du;
+    const double r = q.scale, r1 = q.scale_s1 * v_hi, r2 = q.scale_s2 * v_hi * v_hi + q.scale_s1 * k2;
+    // The frame's angular velocity and its derivative.
+    const double turn = k2 / v_lo;
+    const double omega = turn + p1;
+    const double omega1 = k3 / v_lo + 2 * turn * turn + p2 + p1 * turn;
+    const double rf1 = r1 + r * omega;
+    const double rf2 = r2 + 2 * r1 * omega + r * (omega * omega + omega1);
+    return w * w / 8 * (k2 + q.rho * rf2) + w * q.edge / 4 * rf1;
+}
+
+/// Cuts [u0, u1] of segment s into the fewest equal pieces (searched
+/// upwards from one) that along_bound proves within `tol`; appends the
+/// inner cut points' u to `out`. Returns false when the budget of pieces
+/// ran out first (a cusp): the pieces are then as many as the budget.
+inline bool cut_interval(const cubic_segment<3, double>& s, double u0, double u1, const piece_rates& q, double tol,
+                         std::size_t budget, std::vector<double>& out) {
+    std::size_t n = 1;
+    bool met = false;
+    while (true) {
+        double worst = 0;
+        const double w = (u1 - u0) / double(n);
+        for (std::size_t k = 0; k < n && worst <= tol; ++k) {
+            const double a = u0 + w * double(k), b = k + 1 == n ? u1 : u0 + w * double(k + 1);
+            worst = std::max(worst, along_bound(s, a, b, q));
+        }
+        if (worst <= tol) {
+            met = true;
+            break;
+        }
+        if (n >= budget) break;
+        // The bound falls like the width squared (or the width, for the
+        // twist term): grow n by the square root of the excess, at least by one.
+        const double grow = std::isfinite(worst) ? std::sqrt(worst / tol) * 1.02 : 2.0;
+        n = std::min(budget, std::max(n + 1, std::size_t(std::ceil(double(n) * grow))));
+    }
+    const double w = (u1 - u0) / double(n);
+    for (std::size_t k = 1; k < n; ++k) out.push_back(u0 + w * double(k));
+    return met;
+}
+
+}  // namespace crspline::detail
