@@ -1,0 +1,100 @@
+// crspline: what fit() builds, as formulas it can try cheaply: the
+// Catmull-Rom segment between two chosen points from its neighbours, the
+// curve's options and the per-vertex tension levels (catmull_rom.hpp's
+// construction, written for one segment at a time), and the final curve.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "../catmull_rom.hpp"
+#include "../end_condition.hpp"
+#include "../segment.hpp"
+#include "../vec.hpp"
+
+namespace crspline::detail {
+
+/// Tension levels a vertex may be raised through where no choice of points
+/// keeps the tolerance (geo/smooth.hpp's levels): at 1 a vertex's tangent is
+/// zero, and a segment with both ends at 1 is its chord.
+inline constexpr double fit_tension_levels[] = {0, 0.5, 0.8, 0.95, 1};
+inline constexpr std::uint8_t fit_top_level = 4;
+
+/// The fit's fixed choices: the points (consecutive duplicates removed),
+/// closed or open, alpha, the global tension and the kinds of the two ends.
+template <std::size_t D, class T>
+struct fit_problem {
+    using point = vec<D, T>;
+    std::span<const point> pts;
+    bool closed = false;
+    double alpha = 0.5;
+    T tension = 0;
+    bool start_reflect = false, end_reflect = false;  // otherwise natural
+    T tolerance = 0, slack = 0;
+
+    std::size_t size() const noexcept { return pts.size(); }
+    /// The point at an unrolled index (a closed curve's index size() is 0 again).
+    const point& at(std::size_t i) const noexcept { return pts[i >= pts.size() ? i - pts.size() : i]; }
+
+    T interval(const point& a, const point& b) const noexcept {
+        const T d = norm(b - a);
+        if (alpha == 0) return d > 0 ? T(1) : T(0);
+        if (alpha == 0.5) return std::sqrt(d);
+        if (alpha == 1) return d;
+        return T(std::pow(double(d), alpha));
+    }
+    /// The plain Catmull-Rom tangent dx/dt at x between l and r.
+    point vertex_tangent(const point& l, const point& x, const point& r) const noexcept {
+        const T h0 = interval(l, x), h1 = interval(x, r);
+        if (!(h0 > 0) || !(h1 > 0)) return point{};
+        return (h1 * ((x - l) / h0) + h0 * ((r - x) / h1)) / (h0 + h1);
+    }
+
+    /// The segment from a to b (u in [0, 1]) with neighbours p (before a)
+    /// and n (after b), absent at an open curve's ends, and the tension
+    /// levels of a and b; as catmull_rom builds it up to rounding.
+    cubic_segment<D, T> segment(const point* p, const point& a, const point& b, const point* n, std::uint8_t la,
+                                std::uint8_t lb) const noexcept {
+        const T h = interval(a, b);
+        const point v = h > 0 ? (b - a) / h : point{};
+        const T keep = T(1) - tension;
+        const T ka = T(1) - T(fit_tension_levels[la]), kb = T(1) - T(fit_tension_levels[lb]);
+        point ta, tb;
+        if (!p && !n) {
+            ta = tb = v;  // two points: a straight line, whatever the options
+        } else {
+            const point cra = p ? vertex_tangent(*p, a, b) : point{};
+            const point crb = n ? vertex_tangent(a, b, *n) : point{};
+            if (p) ta = keep * (ka * cra);
+            else ta = keep * (start_reflect ? v : (T(3) * v - kb * crb) / T(2));
+            if (n) tb = keep * (kb * crb);
+            else tb = keep * (end_reflect ? v : (T(3) * v - ka * cra) / T(2));
+        }
+        return cubic_segment<D, T>::hermite(a, b, h * ta, h * tb, T(0), T(1));
+    }
+
+    /// The curve's options: alpha, closed, ends, tension, and the tension
+    /// levels as Kochanek-Bartels tension per vertex (none when all are 0).
+    crspline::options<D, T> curve_options(std::span<const std::uint8_t> levels) const {
+        crspline::options<D, T> o;
+        o.alpha = alpha;
+        o.closed = closed;
+        o.tension = tension;
+        o.start = start_reflect ? end_condition<D, T>::reflect() : end_condition<D, T>::natural();
+        o.end = end_reflect ? end_condition<D, T>::reflect() : end_condition<D, T>::natural();
+        bool any = false;
+        for (auto l : levels) any = any || l > 0;
+        if (any) {
+            o.kb.tension.resize(levels.size());
+            for (std::size_t i = 0; i < levels.size(); ++i) o.kb.tension[i] = T(fit_tension_levels[levels[i]]);
+        }
+        return o;
+    }
+};
+
+}  // namespace crspline::detail

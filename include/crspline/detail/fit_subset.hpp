@@ -1,0 +1,326 @@
+// crspline: fit()'s choice of control points among the input points, and the
+// proof of the final curve with its repairs (tension, more points).
+//
+// Choice. A segment from point i to point j covers the input points i..j;
+// whether it keeps the tolerance depends on its neighbours too (they set its
+// end tangents). reach(i, p) is the farthest j for which the segment from i
+// (its chosen predecessor p) passes the proof with the next point guessed
+// one step of the same length ahead, found by doubling the step and then
+// halving it. The walk takes, among the last few points within reach of
+// the current one, the point from which the next reach goes farthest (a
+// lookahead of two segments instead of the greedy's one), so that a point
+// that makes the next segment's tangent bad is passed over.
+//
+// Proof and repair. The curve is built (catmull_rom, the curve returned)
+// and every segment proved against its input points (fit_proof.hpp) with
+// its real neighbours. A failed segment that covers more than one input
+// segment first has the tension of its two vertices raised (one level,
+// up to 0.8), then is split at its worst input point; one that covers a
+// single input segment has its vertices' tension raised up to 1, where
+// the segment is that input segment itself (exact). Levels only grow and
+// points are only added, so the repairs end, at worst with the input
+// polyline itself. Only segments whose four points or levels changed are
+// proved again.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <stdexcept>
+#include <vector>
+
+#include "../catmull_rom.hpp"
+#include "fit_model.hpp"
+#include "fit_proof.hpp"
+
+namespace crspline::detail {
+
+inline constexpr std::size_t fit_none = std::size_t(-1);
+
+/// A fitted selection: control points as (unrolled) input indices (the
+/// input point each one stands for, and where its segment's coverage
+/// starts), their positions (the input points themselves in subset mode),
+/// their tension levels, and the proved bounds.
+template <std::size_t D, class T>
+struct fit_selection {
+    std::vector<std::size_t> idx;
+    std::vector<vec<D, T>> pos;
+    std::vector<std::uint8_t> level;
+    T curve_to_input = 0, input_to_curve = 0;
+};
+
+template <std::size_t D, class T>
+class subset_search {
+public:
+    using point = vec<D, T>;
+    explicit subset_search(const fit_problem<D, T>& pb) : pb_(pb) {
+        const std::size_t n = pb.size();
+        last_ = pb.closed ? n : n - 1;
+    }
+
+    /// Whether the segment i -> j (unrolled indices) with predecessor p and
+    /// successor nx (fit_none: an open end) keeps the tolerance, at level 0.
+    bool passes(std::size_t p, std::size_t i, std::size_t j, std::size_t nx) const {
+        const point* pp = p == fit_none ? nullptr : &pb_.at(p);
+        const point* np = nx == fit_none ? nullptr : &pb_.at(nx);
+        const auto seg = pb_.segment(pp, pb_.at(i), pb_.at(j), np, 0, 0);
+        const poly_range<D, T> pr{pb_.pts, i >= pb_.size() ? i - pb_.size() : i, j - i + 1};
+        return prove_segment(seg, pr, pb_.tolerance, pb_.slack, 1, j - i).proved;
+    }
+
+    /// The guessed successor of the segment i -> j: one step of the same
+    /// length further, the last point at most; none past an open end.
+    std::size_t guess_next(std::size_t i, std::size_t j) const {
+        if (j >= last_) return pb_.closed ? 1 + (j - last_) : fit_none;
+        return std::min(last_, j + (j - i));
+    }
+    std::size_t guess_prev(std::size_t i, std::size_t j) const {
+        if (!pb_.closed) return fit_none;
+        const std::size_t n = pb_.size(), step = j - i;
+        return (i + n - std::min(step, n - 1) % n) % n;
+    }
+
+    /// The farthest point reached from i with predecessor p.
+    std::size_t reach(std::size_t p, std::size_t i) const {
+        std::size_t ok = i + 1, bad = fit_none;
+        for (std::size_t step = 1;; step *= 2) {
+            const std::size_t j = i + 1 + step;
+            if (j > last_) {
+                if (ok < last_ && passes(p, i, last_, guess_next(i, last_))) return last_;
+                if (ok == last_) return last_;
+                bad = last_;
+                break;
+            }
+            if (passes(p, i, j, guess_next(i, j))) {
+                ok = j;
+            } else {
+                bad = j;
+                break;
+            }
+        }
+        while (bad - ok > 1) {
+            const std::size_t mid = ok + (bad - ok) / 2;
+            if (passes(p, i, mid, guess_next(i, mid))) ok = mid;
+            else bad = mid;
+        }
+        return ok;
+    }
+
+    /// The choice: a shortest path over states (a, b), the last two chosen
+    /// points, each knowing its best predecessor z. From a state, the
+    /// candidates for the next point c are the last `lookahead` points
+    /// within reach of b (with predecessor a); a candidate must keep the
+    /// segment a -> b within the tolerance now that its successor is known
+    /// (its four points z, a, b, c are then the curve's own). States that
+    /// reach the same point are kept `beam` at most, the fewest points
+    /// first. Returns unrolled indices from 0 to the last point.
+    std::vector<std::size_t> choose(std::size_t lookahead, std::size_t beam) const {
+        struct state {
+            std::size_t z, a, b, count, parent;
+        };
+        std::vector<state> st;
+        std::vector<std::vector<std::size_t>> at(last_ + 1);
+        const std::size_t start_prev = pb_.closed ? guess_prev(0, std::min<std::size_t>(last_, 8)) : fit_none;
+        st.push_back({fit_none, start_prev, 0, 1, fit_none});
+        at[0].push_back(0);
+        std::size_t done = fit_none;
+        for (std::size_t b = 0; b <= last_ && done == fit_none; ++b) {
+            auto& here = at[b];
+            if (here.empty()) continue;
+            std::stable_sort(here.begin(), here.end(), [&](std::size_t x, std::size_t y) { return st[x].count < st[y].count; });
+            if (here.size() > beam) here.resize(beam);
+            for (std::size_t id : here) {
+                const state s = st[id];
+                const bool first = id == 0;
+                if (b == last_) {
+                    if (done == fit_none) done = id;  // the fewest points: sorted
+                    continue;
+                }
+                const std::size_t r = reach(s.a, b);
+                const std::size_t from = r > b + lookahead ? r - lookahead + 1 : b + 1;
+                bool any = false;
+                for (std::size_t c = r + 1; c-- > from;) {
+                    if (!first && !passes(s.z, s.a, b, c)) continue;
+                    any = true;
+                    // Merge with a state (b, c) already there.
+                    bool merged = false;
+                    for (std::size_t o : at[c])
+                        if (st[o].a == b) {
+                            if (s.count + 1 < st[o].count) st[o] = {s.a, b, c, s.count + 1, id};
+                            merged = true;
+                            break;
+                        }
+                    if (!merged) {
+                        st.push_back({s.a, b, c, s.count + 1, id});
+                        at[c].push_back(st.size() - 1);
+                    }
+                }
+                if (!any) {  // nothing keeps a -> b: go one point on, the repairs will prove it
+                    bool merged = false;
+                    for (std::size_t o : at[b + 1])
+                        if (st[o].a == b) merged = true;
+                    if (!merged) {
+                        st.push_back({s.a, b, b + 1, s.count + 1, id});
+                        at[b + 1].push_back(st.size() - 1);
+                    }
+                }
+            }
+        }
+        std::vector<std::size_t> idx;
+        for (std::size_t id = done; id != fit_none; id = st[id].parent) idx.push_back(st[id].b);
+        std::reverse(idx.begin(), idx.end());
+        return idx;
+    }
+
+private:
+    const fit_problem<D, T>& pb_;
+    std::size_t last_ = 0;
+};
+
+/// Builds the curve of a selection (a closed curve's last entry, the first
+/// point again, dropped).
+template <std::size_t D, class T>
+catmull_rom<D, T> selection_curve(const fit_problem<D, T>& pb, const std::vector<vec<D, T>>& pos,
+                                  const std::vector<std::uint8_t>& level) {
+    const std::size_t nv = pb.closed ? pos.size() - 1 : pos.size();
+    return catmull_rom<D, T>(std::span<const vec<D, T>>(pos.data(), nv),
+                             pb.curve_options(std::span<const std::uint8_t>(level.data(), nv)));
+}
+
+/// Proves the selection's curve segment by segment and repairs it until
+/// every segment keeps the tolerance. `idx` holds unrolled indices from 0
+/// to the last point (the size of the input when closed); `pos` the control
+/// points, one per entry of idx (moved ones in free mode; empty: the input
+/// points at idx). A failed segment with a moved end first has its ends put
+/// back on their input points; then the repairs of the file comment.
+template <std::size_t D, class T>
+fit_selection<D, T> prove_and_repair(const fit_problem<D, T>& pb, std::vector<std::size_t> idx,
+                                     std::vector<vec<D, T>> pos = {}) {
+    const bool closed = pb.closed;
+    std::vector<std::uint8_t> level(idx.size(), 0);
+    std::vector<std::uint8_t> moved(idx.size(), 0);
+    if (pos.empty()) {
+        for (std::size_t i : idx) pos.push_back(pb.at(i));
+    } else {
+        for (std::size_t k = 0; k < idx.size(); ++k) moved[k] = !(pos[k] == pb.at(idx[k]));
+    }
+    // Per segment: the key it was proved with (4 indices, 4 levels, 4
+    // moved flags: a moved point never moves again, only back) and its bounds.
+    struct record {
+        std::array<std::size_t, 4> ids{};
+        std::array<std::uint8_t, 8> lv{};
+        bool proved = false;
+        T c2i = 0, i2c = 0;
+    };
+    std::vector<record> rec;
+    for (std::size_t round = 0;; ++round) {
+        const std::size_t nseg = idx.size() - 1, nv = closed ? nseg : idx.size();
+        if (closed) {
+            level.back() = level.front();
+            pos.back() = pos.front();
+            moved.back() = moved.front();
+        }
+        const catmull_rom<D, T> curve = selection_curve(pb, pos, level);
+        // Keys and proofs, reusing those whose key did not change.
+        std::vector<record> next(nseg);
+        std::vector<std::size_t> failed;
+        std::size_t reuse = 0;
+        for (std::size_t s = 0; s < nseg; ++s) {
+            record r;
+            for (int q = 0; q < 4; ++q) {
+                const std::ptrdiff_t k = std::ptrdiff_t(s) - 1 + q;
+                if (closed) {
+                    const std::size_t v = std::size_t((k % std::ptrdiff_t(nv) + std::ptrdiff_t(nv)) % std::ptrdiff_t(nv));
+                    r.ids[q] = idx[v], r.lv[q] = level[v], r.lv[4 + q] = moved[v];
+                } else if (k >= 0 && k < std::ptrdiff_t(idx.size())) {
+                    const std::size_t v = std::size_t(k);
+                    r.ids[q] = idx[v], r.lv[q] = level[v], r.lv[4 + q] = moved[v];
+                } else {
+                    r.ids[q] = fit_none;
+                }
+            }
+            r.ids[2] = idx[s + 1];  // unrolled: the closing segment ends at the last index
+            while (reuse < rec.size() && rec[reuse].ids[1] < r.ids[1]) ++reuse;
+            if (reuse < rec.size() && rec[reuse].ids == r.ids && rec[reuse].lv == r.lv) {
+                next[s] = rec[reuse];
+            } else {
+                const std::size_t a = idx[s], b = idx[s + 1];
+                const poly_range<D, T> pr{pb.pts, a >= pb.size() ? a - pb.size() : a, b - a + 1};
+                const auto res = prove_segment(curve.segment(s), pr, pb.tolerance, pb.slack);
+                r.proved = res.proved;
+                r.c2i = res.curve_to_input;
+                r.i2c = res.input_to_curve;
+                next[s] = r;
+            }
+            if (!next[s].proved) failed.push_back(s);
+        }
+        rec = std::move(next);
+        if (failed.empty()) break;
+        // Repairs: moved ends back; raise tension (to 0.8 on long segments,
+        // to 1 on single input segments); else split at the middle input point.
+        std::vector<std::size_t> insert;
+        auto can_raise = [&](std::size_t v) { return closed || (v != 0 && v + 1 != idx.size()); };
+        bool changed = false;
+        for (std::size_t s : failed) {
+            const std::size_t a = idx[s], b = idx[s + 1];
+            if (moved[s] || moved[s + 1]) {
+                for (std::size_t v : {s, s + 1}) {
+                    pos[v] = pb.at(idx[v]);
+                    moved[v] = 0;
+                }
+                if (closed && s + 1 == nseg) pos.front() = pos.back(), moved.front() = 0;
+                if (closed && s == 0) pos.back() = pos.front(), moved.back() = 0;
+                changed = true;
+                continue;
+            }
+            const std::uint8_t cap = b - a > 1 ? 2 : fit_top_level;
+            bool raised = false;
+            for (std::size_t v : {s, s + 1}) {
+                if (can_raise(v) && level[v] < cap) {
+                    ++level[v];
+                    raised = true;
+                }
+            }
+            if (closed) {
+                level.front() = std::max(level.front(), level.back());
+                level.back() = level.front();
+            }
+            if (!raised && b - a > 1) insert.push_back(s);
+            changed = changed || raised;
+        }
+        if (!insert.empty()) {
+            std::vector<std::size_t> ni;
+            std::vector<vec<D, T>> np;
+            std::vector<std::uint8_t> nl, nm;
+            std::size_t q = 0;
+            for (std::size_t k = 0; k < idx.size(); ++k) {
+                ni.push_back(idx[k]), np.push_back(pos[k]), nl.push_back(level[k]), nm.push_back(moved[k]);
+                if (q < insert.size() && insert[q] == k) {
+                    const std::size_t mid = idx[k] + (idx[k + 1] - idx[k]) / 2;
+                    ni.push_back(mid), np.push_back(pb.at(mid)), nl.push_back(0), nm.push_back(0);
+                    ++q;
+                }
+            }
+            idx = std::move(ni), pos = std::move(np), level = std::move(nl), moved = std::move(nm);
+            changed = true;
+        }
+        // Every repair changes something, and each can happen only finitely
+        // often; a segment that fails at its input segment with both ends
+        // at tension 1 would be a broken proof.
+        if (!changed) throw std::logic_error("crspline::fit: a segment at tension 1 failed its proof");
+    }
+    fit_selection<D, T> out;
+    out.idx = std::move(idx);
+    out.pos = std::move(pos);
+    out.level = std::move(level);
+    for (const auto& r : rec) {
+        out.curve_to_input = std::max(out.curve_to_input, r.c2i);
+        out.input_to_curve = std::max(out.input_to_curve, r.i2c);
+    }
+    return out;
+}
+
+}  // namespace crspline::detail

@@ -1,0 +1,201 @@
+// crspline: fitting a Catmull-Rom curve with few control points to dense or
+// noisy samples, within a proved tolerance.
+//
+// fit(points, options) returns a curve and a report. What it promises, for
+// every input it accepts:
+// - every point of the curve is within `tolerance` of the input polyline,
+//   and every input point within `tolerance` of the curve: proved segment
+//   by segment against the input points the segment covers (see
+//   detail/fit_proof.hpp), rounding included; `deviation` is the largest
+//   bound proved (<= tolerance);
+// - mode subset: the control points are input points (`indices`), the
+//   first and last of an open line among them;
+// - mode free: the control points may move off the input (least squares
+//   on the points each segment covers), for noisy data; proved the same way;
+// - always met: where no choice of points keeps the tolerance (a curve
+//   through every input point can overshoot a sharp kink), the tension of
+//   the vertices there is raised (0.5, 0.8, 0.95, 1, as Kochanek-Bartels
+//   tension per vertex, so the curve remembers it): at 1 on both ends a
+//   segment is its input segment, exact.
+//
+// Bad input throws invalid_input: a tolerance that is not a positive
+// number, or below the rounding floor of the coordinates (the message names
+// the floor); a non-finite coordinate (index and coordinate named); fewer
+// than 2 distinct points (3 for a closed curve); an end condition other
+// than natural or reflect (the fit chooses the ends' tangents).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "catmull_rom.hpp"
+#include "detail/fit_free.hpp"
+#include "detail/fit_model.hpp"
+#include "detail/fit_subset.hpp"
+#include "detail/format.hpp"
+#include "end_condition.hpp"
+#include "error.hpp"
+#include "vec.hpp"
+
+namespace crspline {
+
+enum class fit_mode {
+    subset,  ///< control points are input points
+    free,    ///< control points may move (noisy data)
+};
+
+/// How to fit. `tolerance` has no default: it is the fit's one question.
+template <std::size_t D, class T = double>
+struct fit_options {
+    double tolerance = 0;               ///< distance allowed both ways, in the points' units (> 0)
+    fit_mode mode = fit_mode::subset;
+    std::optional<double> alpha{};      ///< knot exponent in [0, 1]; default centripetal (0.5)
+    bool closed = false;                ///< the points are a ring (first point not repeated)
+    T tension = 0;                      ///< the curve's tension in [0, 1] (raised per vertex where needed)
+    end_condition<D, T> start = end_condition<D, T>::natural();  ///< natural or reflect
+    end_condition<D, T> end = end_condition<D, T>::natural();    ///< natural or reflect
+};
+
+/// The fitted curve and what was proved about it.
+template <std::size_t D, class T = double>
+struct fit_result {
+    catmull_rom<D, T> curve;
+    /// Proved bound on the distance both ways (<= tolerance).
+    T deviation = 0;
+    /// The two directions: curve to input polyline, input points to curve.
+    T curve_to_input = 0, input_to_curve = 0;
+    /// Subset mode: the input index of each control point (empty in free mode).
+    std::vector<std::size_t> indices;
+    /// Control points of the curve.
+    std::size_t count = 0;
+    /// Vertices whose tension was raised above the curve's own.
+    std::size_t tensioned = 0;
+    /// The rounding floor of the input: tolerances at or below it are refused.
+    T rounding_floor = 0;
+};
+
+/// Largest absolute coordinate of the points (the scale of the rounding).
+template <std::size_t D, class T>
+T fit_scale(std::span<const vec<D, T>> points) noexcept {
+    T m = 0;
+    for (const auto& p : points) m = std::max(m, max_abs(p));
+    return m;
+}
+
+/// The rounding floor: 256 ulps of the largest coordinate. The proof allows
+/// a quarter of it for the rounding of its own arithmetic, so a tolerance
+/// must be larger.
+template <std::size_t D, class T>
+T fit_rounding_floor(std::span<const vec<D, T>> points) noexcept {
+    return T(256) * std::numeric_limits<T>::epsilon() * std::max(fit_scale(points), std::numeric_limits<T>::min());
+}
+
+namespace detail {
+
+template <std::size_t D, class T>
+void check_fit_input(std::span<const vec<D, T>> points, const fit_options<D, T>& opt) {
+    const double tol = opt.tolerance;
+    if (!(tol > 0) || !std::isfinite(tol))
+        throw invalid_input("fit: tolerance must be a positive finite number, got " + num(tol));
+    for (std::size_t i = 0; i < points.size(); ++i)
+        for (std::size_t k = 0; k < D; ++k)
+            if (!std::isfinite(points[i][k]))
+                throw invalid_input("fit: point " + std::to_string(i) + " has a non-finite coordinate " +
+                                    std::to_string(k) + ": " + num(double(points[i][k])));
+    if (opt.alpha && !(*opt.alpha >= 0 && *opt.alpha <= 1))
+        throw invalid_input("fit: alpha must be in [0, 1], got " + num(*opt.alpha));
+    if (!(opt.tension >= 0 && opt.tension <= 1))
+        throw invalid_input("fit: tension must be in [0, 1], got " + num(double(opt.tension)));
+    using kind = typename end_condition<D, T>::kind;
+    if (opt.start.type == kind::tangent || opt.end.type == kind::tangent)
+        throw invalid_input("fit: the end conditions must be natural or reflect (the fit chooses the end tangents)");
+    const std::size_t need = opt.closed ? 3 : 2;
+    if (points.size() < need)
+        throw invalid_input("fit: needs at least " + std::to_string(need) + " points" + (opt.closed ? " (closed)" : "") +
+                            ", got " + std::to_string(points.size()));
+    const T floor = fit_rounding_floor(points);
+    if (!(T(tol) > floor))
+        throw invalid_input("fit: tolerance " + num(tol) + " is at or below the rounding floor " +
+                            num(double(floor)) + " of the coordinates (256 ulps of the largest, " +
+                            num(double(fit_scale(points))) + ")");
+}
+
+}  // namespace detail
+
+/// Fits a curve with few control points within `opt.tolerance` of the
+/// points, both ways (see the file comment). Throws invalid_input on bad input.
+template <std::size_t D, class T>
+fit_result<D, T> fit(std::span<const vec<D, T>> points, const fit_options<D, T>& opt) {
+    detail::check_fit_input(points, opt);
+    // 1. Consecutive duplicates (and a closing repeat of the first point)
+    //    carry no shape: drop them, remembering where each kept point was.
+    std::vector<vec<D, T>> pts;
+    std::vector<std::size_t> origin;
+    pts.reserve(points.size());
+    origin.reserve(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (!pts.empty() && points[i] == pts.back()) continue;
+        pts.push_back(points[i]);
+        origin.push_back(i);
+    }
+    if (opt.closed)
+        while (pts.size() > 1 && pts.back() == pts.front()) {
+            pts.pop_back();
+            origin.pop_back();
+        }
+    const std::size_t need = opt.closed ? 3 : 2;
+    if (pts.size() < need)
+        throw invalid_input("fit: needs at least " + std::to_string(need) + " distinct points" +
+                            (opt.closed ? " (closed)" : "") + ", got " + std::to_string(pts.size()));
+    // 2. The problem: options, tolerance, rounding slack.
+    detail::fit_problem<D, T> pb;
+    pb.pts = std::span<const vec<D, T>>(pts);
+    pb.closed = opt.closed;
+    pb.alpha = opt.alpha.value_or(0.5);
+    pb.tension = opt.tension;
+    pb.start_reflect = opt.start.type == end_condition<D, T>::kind::reflect;
+    pb.end_reflect = opt.end.type == end_condition<D, T>::kind::reflect;
+    pb.tolerance = T(opt.tolerance);
+    const T floor = fit_rounding_floor(std::span<const vec<D, T>>(pts));
+    pb.slack = floor / T(4);
+    // 3. Choose, prove, repair.
+    detail::fit_selection<D, T> sel;
+    if (opt.mode == fit_mode::subset) {
+        const detail::subset_search<D, T> search(pb);
+        sel = detail::prove_and_repair(pb, search.choose(3, 2));
+    } else {
+        sel = detail::fit_free(pb);
+    }
+    // 4. The report.
+    const std::size_t nv = opt.closed ? sel.idx.size() - 1 : sel.idx.size();
+    std::vector<std::uint8_t> levels(sel.level.begin(), sel.level.begin() + std::ptrdiff_t(nv));
+    std::vector<vec<D, T>> cp(nv);
+    for (std::size_t k = 0; k < nv; ++k) cp[k] = sel.pos[k];
+    fit_result<D, T> r{catmull_rom<D, T>(std::span<const vec<D, T>>(cp), pb.curve_options(levels))};
+    r.curve_to_input = sel.curve_to_input;
+    r.input_to_curve = sel.input_to_curve;
+    r.deviation = std::max(r.curve_to_input, r.input_to_curve);
+    r.count = nv;
+    r.rounding_floor = floor;
+    for (auto l : levels) r.tensioned += l > 0;
+    if (opt.mode == fit_mode::subset) {
+        r.indices.resize(nv);
+        for (std::size_t k = 0; k < nv; ++k) r.indices[k] = origin[sel.idx[k] % pts.size()];
+    }
+    return r;
+}
+
+/// The same for a vector of points.
+template <std::size_t D, class T>
+fit_result<D, T> fit(const std::vector<vec<D, T>>& points, const fit_options<D, T>& opt) {
+    return fit(std::span<const vec<D, T>>(points), opt);
+}
+
+}  // namespace crspline
