@@ -169,7 +169,9 @@ fit_result<D, T> fit(std::span<const vec<D, T>> points, const fit_options<D, T>&
     detail::fit_selection<D, T> sel;
     if (opt.mode == fit_mode::subset) {
         const detail::subset_search<D, T> search(pb);
-        sel = detail::prove_and_repair(pb, search.choose(3, 2));
+        std::vector<std::size_t> idx = search.choose(2, 1);
+        search.improve(idx);
+        sel = detail::prove_and_repair(pb, std::move(idx));
     } else {
         sel = detail::fit_free(pb);
     }
@@ -178,7 +180,7 @@ fit_result<D, T> fit(std::span<const vec<D, T>> points, const fit_options<D, T>&
     std::vector<std::uint8_t> levels(sel.level.begin(), sel.level.begin() + std::ptrdiff_t(nv));
     std::vector<vec<D, T>> cp(nv);
     for (std::size_t k = 0; k < nv; ++k) cp[k] = sel.pos[k];
-    fit_result<D, T> r{catmull_rom<D, T>(std::span<const vec<D, T>>(cp), pb.curve_options(levels))};
+    fit_result<D, T> r{catmull_rom<D, T>(std::span<const vec<D, T>>(cp), pb.curve_options(levels)), 0, 0, 0, {}, 0, 0, 0};
     r.curve_to_input = sel.curve_to_input;
     r.input_to_curve = sel.input_to_curve;
     r.deviation = std::max(r.curve_to_input, r.input_to_curve);

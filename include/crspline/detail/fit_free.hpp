@@ -1,6 +1,6 @@
 // crspline: fit() in free mode: the control points move off the input.
 //
-// 1. Breakpoints: the subset choice at a relaxed tolerance (1, 1.3 and 1.7
+// 1. Breakpoints: the subset choice (and its improvement) at a relaxed tolerance (1, 1.3 and 1.7
 //    times the tolerance; the fewest points proved at the tolerance win).
 //    Control point k stands for input point idx[k]; segment k covers the
 //    input points idx[k] .. idx[k + 1].
@@ -139,7 +139,8 @@ fit_selection<D, T> fit_free(const fit_problem<D, T>& pb) {
         fit_problem<D, T> loose = pb;
         loose.tolerance = T(double(pb.tolerance) * relax);
         const subset_search<D, T> search(loose);
-        const std::vector<std::size_t> idx = search.choose(3, 2);
+        std::vector<std::size_t> idx = search.choose(2, 1);
+        search.improve(idx);
         std::vector<vec<D, T>> pos;
         for (std::size_t i : idx) pos.push_back(pb.at(i));
         if (idx.size() > 2) free_mover<D, T>(pb, idx, pos).sweeps(3);

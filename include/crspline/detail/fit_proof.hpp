@@ -145,29 +145,23 @@ bool piece_within(const std::array<vec<D, T>, 4>& q, T a, T b, const poly_range<
            piece_within(right, m, b, pr, limit, depth + 1, worst, hint);
 }
 
-/// Proves the segment `seg` (u in [0, 1]) within `tolerance` of the polyline
-/// range `pr` both ways (the range's two end points are the segment's ends
-/// in subset mode, and are checked like the others), with `slack` for
-/// rounding. The bounds found include the slack.
+/// Polyline to curve: whether every point pr[first .. end) is proved within
+/// `limit` of the segment; `worst` grows to the largest bound used. Pieces
+/// of equal u, as many as make each piece flat within `flat_target` (at
+/// most 32), then each point against the pieces near the last one that
+/// proved a point, then against all of them, then the exact nearest point.
 template <std::size_t D, class T>
-segment_proof<T> prove_segment(const cubic_segment<D, T>& seg, const poly_range<D, T>& pr, T tolerance, T slack,
-                               std::size_t first_point = 0, std::size_t end_point = std::size_t(-1)) {
+bool input_within(const cubic_segment<D, T>& seg, const poly_range<D, T>& pr, T limit, T flat_target,
+                  std::size_t first, std::size_t end, T& worst) {
     using point = vec<D, T>;
-    segment_proof<T> res;
-    const T limit = tolerance - slack;
-    // 1. Polyline to curve (first: on a segment too long it fails soonest):
-    //    pieces of equal u, as many as make each piece flat within a quarter
-    //    of the tolerance (at most 32), then each point against the pieces
-    //    near the last one that proved a point, then against all of them.
-    const std::size_t pieces = std::min<std::size_t>(32, uniform_piece_count(seg, tolerance / T(4)));
+    const std::size_t pieces = std::min<std::size_t>(32, uniform_piece_count(seg, flat_target));
     std::array<point, 33> at;
     std::array<T, 32> flat;
     for (std::size_t l = 0; l <= pieces; ++l) at[l] = seg.at(T(l) / T(pieces));
     for (std::size_t l = 0; l < pieces; ++l) flat[l] = flatness_bound(seg, T(l) / T(pieces), T(l + 1) / T(pieces));
     std::size_t hint = 0;
-    T worst = 0;
-    const std::size_t stop = std::min(end_point, pr.count);
-    for (std::size_t k = first_point; k < stop; ++k) {
+    const std::size_t stop = std::min(end, pr.count);
+    for (std::size_t k = first; k < stop; ++k) {
         const point& p = pr[k];
         T best = std::numeric_limits<T>::infinity(), lower = best;
         auto try_piece = [&](std::size_t l) {
@@ -185,23 +179,39 @@ segment_proof<T> prove_segment(const cubic_segment<D, T>& seg, const poly_range<
         if (best > limit) {
             // Every piece farther than the limit: the point is (the pieces
             // are within their flatness of the curve both ways).
-            if (lower > limit) return res;
+            if (lower > limit) return false;
             // The exact nearest point.
             best = std::sqrt(nearest(seg, p).distance_sq);
-            if (!(best <= limit)) return res;
+            if (!(best <= limit)) return false;
         }
         worst = std::max(worst, best);
     }
+    return true;
+}
+
+/// Proves the segment `seg` (u in [0, 1]) within `tolerance` of the polyline
+/// range `pr` both ways (the range's two end points are the segment's ends
+/// in subset mode, and are checked like the others unless first_point and
+/// end_point leave them out), with `slack` for rounding. The bounds found
+/// include the slack.
+template <std::size_t D, class T>
+segment_proof<T> prove_segment(const cubic_segment<D, T>& seg, const poly_range<D, T>& pr, T tolerance, T slack,
+                               std::size_t first_point = 0, std::size_t end_point = std::size_t(-1)) {
+    segment_proof<T> res;
+    const T limit = tolerance - slack;
+    // 1. Polyline to curve (first: on a segment too long it fails soonest).
+    T worst = 0;
+    if (!input_within(seg, pr, limit, tolerance / T(4), first_point, end_point, worst)) return res;
     res.input_to_curve = worst + slack;
     // 2. Curve to polyline.
     {
         const auto b = to_bezier(seg);
-        T worst = 0;
+        T far = 0;
         std::size_t hint = 0, h1 = pr.count - 2;
         const T a0 = range_distance(b[0], pr, hint, false), a1 = range_distance(b[3], pr, h1, false);
         if (!(a0 <= limit) || !(a1 <= limit)) return res;
-        if (!piece_within(b, a0, a1, pr, limit, 0, worst, hint)) return res;
-        res.curve_to_input = worst + slack;
+        if (!piece_within(b, a0, a1, pr, limit, 0, far, hint)) return res;
+        res.curve_to_input = far + slack;
     }
     res.proved = true;
     return res;

@@ -175,6 +175,59 @@ public:
         return idx;
     }
 
+    /// Local improvement of a choice: each point removed where the curve
+    /// keeps the tolerance without it, and each pair of neighbouring points
+    /// replaced by one between them where some such point keeps it (every
+    /// segment whose four points change proved with its real neighbours).
+    /// The ends of an open line stay; a closed curve's point 0 too.
+    void improve(std::vector<std::size_t>& idx) const {
+        auto id_at = [&](const std::vector<std::size_t>& v, std::ptrdiff_t k) -> std::size_t {
+            const std::ptrdiff_t m = std::ptrdiff_t(v.size());
+            if (pb_.closed) {
+                // Unrolled: v.back() is point 0 again, one turn later.
+                if (k < 0) return v[std::size_t(k + m - 1)] - pb_.size();
+                if (k >= m) return v[std::size_t(k - m + 1)] + pb_.size();
+                return v[std::size_t(k)];
+            }
+            return k < 0 || k >= m ? fit_none : v[std::size_t(k)];
+        };
+        auto wrap = [&](std::size_t i) -> std::size_t {
+            if (i == fit_none) return i;
+            return i % pb_.size();
+        };
+        // Segment s of v (from v[s] to v[s + 1]) with its real neighbours.
+        auto seg_ok = [&](const std::vector<std::size_t>& v, std::ptrdiff_t s) {
+            if (s < 0 || s + 1 >= std::ptrdiff_t(v.size())) return true;
+            const std::size_t z = id_at(v, s - 1), c = id_at(v, s + 2);
+            return passes(pb_.closed ? wrap(z) : z, v[std::size_t(s)], v[std::size_t(s + 1)], pb_.closed ? wrap(c) : c);
+        };
+        std::vector<std::size_t> trial;
+        for (std::size_t v = 1; v + 1 < idx.size();) {
+            // Remove v: segments v-2 .. v (after removal: v-2, v-1, v).
+            trial = idx;
+            trial.erase(trial.begin() + std::ptrdiff_t(v));
+            const std::ptrdiff_t sv = std::ptrdiff_t(v);
+            if (seg_ok(trial, sv - 1) && seg_ok(trial, sv - 2) && seg_ok(trial, sv)) {
+                idx.swap(trial);
+                continue;
+            }
+            // Replace v and v + 1 by one point k between their neighbours.
+            bool merged = false;
+            if (v + 2 < idx.size()) {
+                for (std::size_t k = idx[v + 2] - 1; k > idx[v - 1] && !merged; --k) {
+                    trial = idx;
+                    trial.erase(trial.begin() + std::ptrdiff_t(v) + 1);
+                    trial[v] = k;
+                    if (seg_ok(trial, sv - 1) && seg_ok(trial, sv) && seg_ok(trial, sv - 2) && seg_ok(trial, sv + 1)) {
+                        idx.swap(trial);
+                        merged = true;
+                    }
+                }
+            }
+            if (!merged) ++v;
+        }
+    }
+
 private:
     const fit_problem<D, T>& pb_;
     std::size_t last_ = 0;
