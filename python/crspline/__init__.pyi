@@ -358,3 +358,23 @@ def clearance(
     budget: Union[int, None] = None,
 ) -> Clearance:
     """The least distance between non-adjacent segments of a curve, or between two curves (any dimension)."""
+
+# crspline.fit (issue 40)
+class FitResult:
+    """What fit() returns: the curve and what was proved about it."""
+
+    curve: CatmullRom
+    deviation: float
+    curve_to_input: float
+    input_to_curve: float
+    indices: Union[npt.NDArray[np.int64], None]
+    count: int
+    tensioned: int
+    rounding_floor: float
+
+def fit(
+    points: _ArrayLike, *, tolerance: float, alpha: float = 0.5, closed: bool = False,
+    mode: Literal["subset", "free"] = "subset", tension: float = 0.0,
+    endconditions: Union[Literal["natural", "reflect"], tuple[str, str]] = "natural",
+) -> FitResult:
+    """A curve with few control points within a proved tolerance of the points, both ways (GIL released)."""

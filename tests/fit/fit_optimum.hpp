@@ -48,7 +48,7 @@ std::size_t optimum_count(const crspline::detail::fit_problem<D, T>& pb, std::si
         for (std::size_t a = b > max_span ? b - max_span : 0; a < b; ++a) {
             for (std::size_t z : [&] {
                      std::vector<std::size_t> zs{fit_none};
-                     for (std::size_t z = a > max_span ? a - max_span : 0; z < a; ++z) zs.push_back(z);
+                     for (std::size_t y = a > max_span ? a - max_span : 0; y < a; ++y) zs.push_back(y);
                      return zs;
                  }()) {
                 auto it = best.find({z, a, b});
