@@ -80,6 +80,7 @@ struct sweep_options {
     std::size_t tubular_segments = 0;      ///< > 0: this many pieces along, equal in arc length
     std::size_t radial_segments = 0;       ///< > 0: a circle or curve profile in this many pieces
     bool clearance = true;                 ///< measure the centre line's clearance for the report
+    bool spread_holonomy = true;           ///< false: a closed curve's frame is not closed up (a seam; for comparison)
 };
 
 /// What the sweep found.
@@ -96,6 +97,8 @@ struct sweep_report {
     bool far_contact = false;        ///< clearance < 2 largest_radius: distant parts of the tube may meet
     bool local_fold = false;         ///< at some ring the radius reaches the radius of curvature
     bool self_intersects = false;    ///< far_contact or local_fold
+    double seam_gap = 0;             ///< closed: largest coordinate difference of the computed closing ring from the first
+    double seam_normal_gap = 0;      ///< the same for the normals (the closing ring is then set to the first exactly)
 };
 
 struct sweep_mesh {
@@ -163,7 +166,8 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
         }
         if (roll.periodic) roll_turn = roll.pieces.back().b[3] - roll.pieces.front().b[0];
     }
-    if (!opt.scale.empty()) scale = scale_function(opt.scale_s, opt.scale);
+    if (!opt.scale.empty())
+        scale = scale_function(opt.scale_s, opt.scale, closed ? std::optional<double>(length) : std::nullopt);
     double scale_max = 1;
     if (!scale.empty()) {
         scale_max = 0;
@@ -209,7 +213,7 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
     };
     if (roll_in_s)
         for (double s : opt.roll_s) add_key(closed ? std::fmod(std::fmod(s, length) + length, length) : s);
-    for (double s : opt.scale_s) add_key(s);
+    for (double s : opt.scale_s) add_key(closed ? std::fmod(std::fmod(s, length) + length, length) : s);
     std::sort(key_t.begin(), key_t.end());
     // 4. The rates over an interval of a segment (for the bound).
     const auto grid = curve.grid();
@@ -252,6 +256,7 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
     in.roll_turn = roll_turn;
     in.scale = &scale;
     if (opt.up) in.up = *opt.up;
+    in.spread_holonomy = opt.spread_holonomy;
     std::vector<ring_site> sites;
     ring_frames frames;
     bool met = true;
@@ -280,7 +285,7 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
         };
         place(0, 0);
         frames = compute_rings(sites, in);
-        const double twist = closed && !opt.up ? std::abs(frames.holonomy) / period * 1.01 : 0.0;
+        const double twist = closed && !opt.up && opt.spread_holonomy ? std::abs(frames.holonomy) / period * 1.01 : 0.0;
         const double up_u1 = opt.up ? frames.up_turn_u * 1.5 : 0.0;
         if (twist > 0 || up_u1 > 0) {
             place(twist, up_u1);
@@ -319,7 +324,8 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
         out.report.proved = !opt.up;
     }
     // 5. The mesh.
-    write_mesh(frames, sites, prof, length, closed, out.positions, out.normals, out.uvs, out.indices);
+    write_mesh(frames, sites, prof, length, closed, closed && opt.spread_holonomy, out.positions, out.normals, out.uvs,
+               out.indices, out.report.seam_gap, out.report.seam_normal_gap);
     out.rings = sites.size();
     out.ring_size = prof.points.size();
     for (const auto& r : sites) out.t.push_back(r.t), out.s.push_back(r.s);

@@ -247,10 +247,13 @@ inline piecewise_cubic roll_function(const std::vector<double>& w, const std::ve
 }
 
 /// The scale through the keys (s_k, scale_k): a 1-D Catmull-Rom curve
-/// (centripetal ends natural) with the arc lengths as its grid. Keys must
-/// be positive; the interpolant must stay positive (it can dip between
-/// keys: the error names where).
-inline piecewise_cubic scale_function(const std::vector<double>& s, const std::vector<double>& scale) {
+/// (natural ends) with the arc lengths as its grid, held constant before
+/// the first key and after the last; on a closed sweep (`period`, the
+/// length) a closed curve, so that the scale closes up too. Keys must be
+/// positive; the interpolant must stay positive (it can dip between keys:
+/// the error names where).
+inline piecewise_cubic scale_function(const std::vector<double>& s, const std::vector<double>& scale,
+                                      std::optional<double> period = std::nullopt) {
     check_keys("scale", s, scale, "values");
     for (std::size_t k = 0; k < scale.size(); ++k)
         if (!(scale[k] > 0))
@@ -262,22 +265,31 @@ inline piecewise_cubic scale_function(const std::vector<double>& s, const std::v
         f.pieces.push_back({s[0], s[0], {scale[0], scale[0], scale[0], scale[0]}});
         return f;
     }
+    const bool closed = period.has_value();
+    if (closed && !(s.back() < s.front() + *period))
+        throw spec_error("scale", s.size() - 1, std::nullopt, num(s.back()),
+                         "scale[" + std::to_string(s.size() - 1) + "]: position " + num(s.back()) +
+                             " is not within one length (" + num(*period) + ") of the first key");
     std::vector<vec<1>> pts(scale.size());
     for (std::size_t k = 0; k < scale.size(); ++k) pts[k][0] = scale[k];
     options<1> opt;
-    opt.grid = s;
+    std::vector<double> grid = s;
+    if (closed) grid.push_back(s.front() + *period);
+    opt.grid = grid;
+    opt.closed = closed;
     const catmull_rom<1> c(pts, opt);
-    for (std::size_t i = 0; i + 1 < s.size(); ++i) {
+    for (std::size_t i = 0; i + 1 < grid.size(); ++i) {
         const auto b = c.bezier(i);
-        cubic_piece p{s[i], s[i + 1], {b[0][0], b[1][0], b[2][0], b[3][0]}};
+        cubic_piece p{grid[i], grid[i + 1], {b[0][0], b[1][0], b[2][0], b[3][0]}};
         const double m = p.min_value();
         if (!(m > 0))
-            throw spec_error("scale", i + 1, std::nullopt, num(scale[i + 1]),
+            throw spec_error("scale", (i + 1) % scale.size(), std::nullopt, num(scale[(i + 1) % scale.size()]),
                              "scale: the interpolated scale falls to " + num(m) + " between keys " +
-                                 std::to_string(i) + " and " + std::to_string(i + 1) +
+                                 std::to_string(i) + " and " + std::to_string((i + 1) % scale.size()) +
                                  " (it must stay positive); add keys there");
         f.pieces.push_back(p);
     }
+    f.periodic = closed;
     return f;
 }
 

@@ -128,11 +128,11 @@ inline ring_frames compute_rings(const std::vector<ring_site>& sites, const ring
             const double dt = sites[b].t - sites[a].t;
             psi_t[k] = dt > 0 ? (psi[b] - psi[a]) / dt : 0.0;
         }
-    } else if (c.closed() && n >= 2 && in.spread_holonomy && period > 0) {
+    } else if (c.closed() && n >= 2 && period > 0) {
         // The last ring is the first point again: the carried normal's turn
         // from the first normal, spread evenly in t.
         f.holonomy = angle_about(f.normal[n - 1], f.normal[0], f.tangent[0]);
-        for (std::size_t k = 0; k < n; ++k) {
+        for (std::size_t k = 0; k < n && in.spread_holonomy; ++k) {
             psi[k] = f.holonomy * ((sites[k].t - sites[0].t) / period);
             psi_t[k] = f.holonomy / period;
         }
@@ -146,14 +146,14 @@ inline ring_frames compute_rings(const std::vector<ring_site>& sites, const ring
     }
     // 4. Turned normals, binormals, angular velocities and scales.
     for (std::size_t k = 0; k < n; ++k) {
-        const v3& e = f.tangent[k];
+        const v3& ek = f.tangent[k];
         if (psi[k] != 0) {
-            const v3 r = rotate_about(f.normal[k], e, psi[k]);
-            f.normal[k] = perpendicular(r, e).value_or(r);
+            const v3 r = rotate_about(f.normal[k], ek, psi[k]);
+            f.normal[k] = perpendicular(r, ek).value_or(r);
         }
-        f.binormal[k] = cross(e, f.normal[k]);
+        f.binormal[k] = cross(ek, f.normal[k]);
         const double sp2 = dot(f.dx[k], f.dx[k]);
-        f.omega[k] = (sp2 > 0 ? cross(f.dx[k], d2[k]) / sp2 : v3{}) + psi_t[k] * e;
+        f.omega[k] = (sp2 > 0 ? cross(f.dx[k], d2[k]) / sp2 : v3{}) + psi_t[k] * ek;
         if (in.scale && !in.scale->empty()) {
             f.scale[k] = in.scale->value(sites[k].s);
             f.scale_t[k] = in.scale->slope(sites[k].s) * norm(f.dx[k]);
@@ -166,8 +166,9 @@ inline ring_frames compute_rings(const std::vector<ring_site>& sites, const ring
 /// Triangles wind counterclockwise seen from where the normals point (for a
 /// profile counterclockwise in the (normal, binormal) plane, outwards).
 inline void write_mesh(const ring_frames& f, const std::vector<ring_site>& sites, const profile_polyline& prof,
-                       double length, bool seamless, std::vector<double>& positions, std::vector<double>& normals,
-                       std::vector<double>& uvs, std::vector<std::uint32_t>& indices) {
+                       double length, bool closed, bool seamless, std::vector<double>& positions, std::vector<double>& normals,
+                       std::vector<double>& uvs, std::vector<std::uint32_t>& indices, double& seam_gap,
+                       double& seam_normal_gap) {
     const std::size_t n = f.x.size(), m = prof.points.size();
     positions.resize(3 * n * m);
     normals.resize(3 * n * m);
@@ -189,7 +190,11 @@ inline void write_mesh(const ring_frames& f, const std::vector<ring_site>& sites
             const v3 st = f.dx[k] + r1 * fp + r * cross(w, fp);
             v3 nv = cross(fd, st);
             double l = norm(nv);
-            if (!(l > 0)) nv = cross(fd, f.tangent[k]), l = norm(nv);
+            const v3 outward = cross(fd, f.tangent[k]);
+            // Where the tube folds (radius past the radius of curvature) S_t
+            // turns back; the normal keeps the side the profile faces.
+            if (dot(nv, outward) < 0) nv = -1.0 * nv;
+            if (!(l > 0)) nv = outward, l = norm(nv);
             nv = l > 0 ? nv / l : nv;
             for (int i = 0; i < 3; ++i) pos[3 * j + i] = q[i], nor[3 * j + i] = nv[i];
             uv[2 * j] = prof.u[j];
@@ -197,6 +202,15 @@ inline void write_mesh(const ring_frames& f, const std::vector<ring_site>& sites
         }
     }
     // A closed sweep's last ring is its first: the same positions and normals.
+    seam_gap = seam_normal_gap = 0;
+    if (closed && n >= 2) {
+        // (How far the computed closing ring was from the first: rounding
+        // when the holonomy is spread; the report says.)
+        for (std::size_t i = 0; i < 3 * m; ++i) {
+            seam_gap = std::max(seam_gap, std::abs(positions[3 * (n - 1) * m + i] - positions[i]));
+            seam_normal_gap = std::max(seam_normal_gap, std::abs(normals[3 * (n - 1) * m + i] - normals[i]));
+        }
+    }
     if (seamless && n >= 2) {
         std::copy_n(positions.begin(), 3 * m, positions.begin() + 3 * (n - 1) * m);
         std::copy_n(normals.begin(), 3 * m, normals.begin() + 3 * (n - 1) * m);

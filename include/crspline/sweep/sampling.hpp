@@ -66,12 +66,12 @@ inline double along_bound(const cubic_segment<3, double>& s, double ua, double u
     if (!(v_lo > 0)) return std::numeric_limits<double>::infinity();
     // Roll, spread holonomy and scale per unit u.
     const double p1 = (q.roll_in_s ? q.roll_w1 * v_hi : q.roll_w1 * q.dt_du) + q.twist_t * q.dt_du + q.up_u1;
-    const double p2 = q.roll_in_s ? q.roll_w2 * v_hi * v_hi + q.roll_w1 * k2 : q.roll_w2 * q.dt_du * q.dt_du;
+    const double roll2 = q.roll_in_s ? q.roll_w2 * v_hi * v_hi + q.roll_w1 * k2 : q.roll_w2 * q.dt_du * q.dt_du;
     const double r = q.scale, r1 = q.scale_s1 * v_hi, r2 = q.scale_s2 * v_hi * v_hi + q.scale_s1 * k2;
     // The frame's angular velocity and its derivative.
     const double turn = k2 / v_lo;
     const double omega = turn + p1;
-    const double omega1 = k3 / v_lo + 2 * turn * turn + p2 + p1 * turn;
+    const double omega1 = k3 / v_lo + 2 * turn * turn + roll2 + p1 * turn;
     const double rf1 = r1 + r * omega;
     const double rf2 = r2 + 2 * r1 * omega + r * (omega * omega + omega1);
     return w * w / 8 * (k2 + q.rho * rf2) + w * q.edge / 4 * rf1;
