@@ -31,7 +31,7 @@ def _seg_dist(p, a, b):
 
 def _measure(curve, pts, closed):
     """Largest sampled curve-to-polyline distance and input-to-samples distance less half the largest gap."""
-    t = np.linspace(curve.grid[0], curve.grid[-1], 40 * len(curve.grid) * 20)
+    t = np.linspace(curve.grid[0], curve.grid[-1], 60 * len(curve.grid))
     s = curve.evaluate(t)
     poly = np.vstack([pts, pts[:1]]) if closed else pts
     c2i = _seg_dist(s, poly[:-1], poly[1:]).min(axis=1).max()
@@ -109,7 +109,7 @@ def test_errors_are_value_errors_with_the_cores_words():
 def test_gil_released_while_fitting():
     """A Python thread keeps running while another thread fits: it counts
     while the fit runs (with the GIL held it could not)."""
-    pts = _noisy(3, n=20000)
+    pts = _noisy(3, n=3000)
     done = threading.Event()
     ticks = []
 

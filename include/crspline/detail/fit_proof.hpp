@@ -217,4 +217,27 @@ segment_proof<T> prove_segment(const cubic_segment<D, T>& seg, const poly_range<
     return res;
 }
 
+/// The search's quick test of a segment (not a proof: fit() proves the
+/// segments it keeps with prove_segment and repairs those that fail): the
+/// input points by input_within, then the curve sampled at twice as many
+/// points as the range has, each within the tolerance less a margin (3%)
+/// of the polyline segments near it.
+template <std::size_t D, class T>
+bool quick_segment_test(const cubic_segment<D, T>& seg, const poly_range<D, T>& pr, T tolerance, T slack,
+                        std::size_t first_point, std::size_t end_point) {
+    const T limit = tolerance - slack;
+    T worst = 0;
+    if (!input_within(seg, pr, limit, tolerance / T(4), first_point, end_point, worst)) return false;
+    const T sampled_limit = limit * T(0.97);
+    const std::size_t m = 2 * pr.count;
+    std::size_t hint = 0;
+    for (std::size_t k = 1; k < m; ++k) {
+        const vec<D, T> x = seg.at(T(k) / T(m));
+        T d = range_distance(x, pr, hint, false);
+        if (d > sampled_limit) d = range_distance(x, pr, hint, true);
+        if (d > sampled_limit) return false;
+    }
+    return true;
+}
+
 }  // namespace crspline::detail

@@ -68,7 +68,7 @@ public:
         const point* np = nx == fit_none ? nullptr : &pb_.at(nx);
         const auto seg = pb_.segment(pp, pb_.at(i), pb_.at(j), np, 0, 0);
         const poly_range<D, T> pr{pb_.pts, i >= pb_.size() ? i - pb_.size() : i, j - i + 1};
-        return prove_segment(seg, pr, pb_.tolerance, pb_.slack, 1, j - i).proved;
+        return quick_segment_test(seg, pr, pb_.tolerance, pb_.slack, 1, j - i);
     }
 
     /// The guessed successor of the segment i -> j: one step of the same
