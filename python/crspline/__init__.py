@@ -45,6 +45,7 @@ from ._curve_file import _FILE_FIELDS, _file_end, _file_kb, from_spec, load, sav
 from ._many import _curve_list, _shared, _workers, arc_lengths, tessellate_many  # noqa: F401
 from ._decision import clearance, decide, decide_pair, decide_set  # noqa: F401  (issue 27)
 from ._fit import FitResult, fit  # noqa: F401  (issue 40)
+from ._sweep import stroke, sweep  # noqa: F401  (issue 41)
 
 __all__ = [
     "CatmullRom",

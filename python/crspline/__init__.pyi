@@ -378,3 +378,47 @@ def fit(
     endconditions: Union[Literal["natural", "reflect"], tuple[str, str]] = "natural",
 ) -> FitResult:
     """A curve with few control points within a proved tolerance of the points, both ways (GIL released)."""
+
+# crspline.sweep, crspline.stroke (issue 41)
+class SweepReport(TypedDict):
+    tolerance: float
+    bound: float
+    tolerance_met: bool
+    proved: bool
+    holonomy: float
+    length: float
+    largest_radius: float
+    clearance: float
+    min_radius_of_curvature: float
+    far_contact: bool
+    local_fold: bool
+    self_intersects: bool
+    seam_gap: float
+    seam_normal_gap: float
+
+class SweepMesh(TypedDict):
+    positions: _Array
+    normals: _Array
+    uvs: _Array
+    indices: npt.NDArray[np.uint32]
+    t: _Array
+    s: _Array
+    rings: int
+    ring_size: int
+    report: SweepReport
+
+def sweep(
+    curve: CatmullRom, *, radius: float = 1.0, profile: Union[_ArrayLike, CatmullRom, None] = None,
+    profile_closed: bool = True, roll: Union[_ArrayLike, tuple[_ArrayLike, _ArrayLike], None] = None,
+    up: Union[_ArrayLike, None] = None, scale: Union[tuple[_ArrayLike, _ArrayLike], None] = None,
+    tolerance: Union[float, None] = None, tubular_segments: Union[int, None] = None,
+    radial_segments: Union[int, None] = None, seamless: bool = True, clearance: bool = True,
+) -> SweepMesh:
+    """A cross-section swept along a 3-D curve: a mesh within the tolerance of the surface (GIL released)."""
+
+def stroke(
+    curve: CatmullRom, width: float, *, join: Literal["round", "miter", "bevel"] = "round",
+    cap: Literal["butt", "round", "square"] = "butt", miter_limit: float = 4.0,
+    tolerance: Union[float, None] = None, shapely: bool = False,
+) -> Any:
+    """The region within width / 2 of a 2-D curve: polygons as lists of rings, or a Shapely geometry."""

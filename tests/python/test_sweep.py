@@ -1,0 +1,129 @@
+"""crspline.sweep and crspline.stroke (issue 41) from Python: the mesh's
+arrays and seam, the report, strokes against Shapely (is_valid, the area of
+Shapely's buffer of the curve's tessellation within the tolerance times the
+perimeter, fewer vertices), and the errors, each naming its field."""
+import math
+
+import numpy as np
+import pytest
+from shapely.geometry import LinearRing, LineString
+
+import crspline
+
+
+def knot(n=12):
+    a = np.linspace(0, 2 * np.pi, n, endpoint=False)
+    return np.c_[(2 + np.cos(3 * a)) * np.cos(2 * a), (2 + np.cos(3 * a)) * np.sin(2 * a), np.sin(3 * a)]
+
+
+def test_sweep_arrays_and_the_seam():
+    c = crspline.CatmullRom(knot(), endconditions="closed")
+    m = crspline.sweep(c, radius=0.3, tolerance=1e-3)
+    n = m["rings"] * m["ring_size"]
+    assert m["positions"].shape == (n, 3) and m["normals"].shape == (n, 3) and m["uvs"].shape == (n, 2)
+    assert m["indices"].dtype == np.uint32 and m["indices"].shape == (6 * (m["rings"] - 1) * (m["ring_size"] - 1) // 3, 3)
+    assert m["indices"].max() == n - 1
+    np.testing.assert_allclose(np.linalg.norm(m["normals"], axis=1), 1, atol=1e-12)
+    r = m["report"]
+    assert r["tolerance_met"] and r["bound"] <= 1e-3 * (1 + 1e-12) and r["proved"]
+    assert not r["self_intersects"] and r["clearance"] > 0.6
+    # No seam: the computed closing ring met the first to rounding; the
+    # stored one is the first (v runs 0 to 1).
+    assert r["seam_gap"] < 1e-9 and r["seam_normal_gap"] < 1e-9
+    k = m["ring_size"]
+    assert np.array_equal(m["positions"][-k:], m["positions"][:k])
+    assert np.array_equal(m["normals"][-k:], m["normals"][:k])
+    assert np.array_equal(m["uvs"][-k:, 0], m["uvs"][:k, 0]) and np.all(m["uvs"][-k:, 1] == 1)
+    # Without the spread holonomy: a seam as wide as the twist says.
+    bad = crspline.sweep(c, radius=0.3, tolerance=1e-3, seamless=False)
+    assert bad["report"]["seam_gap"] > 0.3 * 0.5 * abs(r["holonomy"]) > 0
+
+
+def test_sweep_counts_roll_scale_up_and_profiles():
+    c = crspline.CatmullRom([[0, 0, 0], [1, 0.2, 0], [2, 0, 0.5], [3, 0.3, 0.2]])
+    m = crspline.sweep(c, radius=0.1, tubular_segments=64, radial_segments=8)
+    assert (m["rings"], m["ring_size"]) == (65, 9) and len(m["positions"]) == 65 * 9
+    L = m["report"]["length"]
+    m = crspline.sweep(c, radius=0.1, roll=[0, 0.5, 1.0, 1.5], scale=([0, L], [1, 2]), up=[0, 0, 1])
+    assert m["report"]["tolerance_met"] and not m["report"]["proved"]
+    m = crspline.sweep(c, roll=([0, L / 2, L], [0, 1, 0]), profile=[[-0.1, 0], [0.1, 0]], profile_closed=False)
+    assert m["ring_size"] == 2
+    oval = crspline.CatmullRom([[0.1, 0], [0, 0.05], [-0.1, 0], [0, -0.05]], endconditions="closed")
+    m = crspline.sweep(c, profile=oval, tolerance=1e-4)
+    assert m["ring_size"] > 8 and m["report"]["bound"] <= 1e-4 * (1 + 1e-12)
+
+
+def test_sweep_report_sees_a_thick_tube_meet_itself():
+    c = crspline.CatmullRom(knot(), endconditions="closed")
+    assert crspline.sweep(c, radius=0.8)["report"]["far_contact"]
+
+
+def random_curve(rng, closed):
+    n = int(rng.integers(3, 10))
+    return crspline.CatmullRom(rng.uniform(0, 10, (n, 2)), endconditions="closed" if closed else "natural")
+
+
+@pytest.mark.parametrize("cap", ["butt", "round", "square"])
+def test_strokes_are_valid_and_match_shapelys_buffer(cap, seed):
+    """Shapely's buffer of the curve's tessellation (at tol / 1000, with 64
+    segments a quarter circle: within d (1 - cos(pi / 256)) of the true
+    stroke) is the reference: the areas agree within the tolerance times the
+    perimeter (a region within distance tol of another has an area within
+    tol x perimeter of it, to first order), and the stroke has fewer vertices
+    than Shapely's default buffer of the same tessellation the stroke used."""
+    rng = np.random.default_rng(seed)
+    shapely_cap = {"butt": 2, "round": 1, "square": 3}[cap]
+    checked = fewer = 0
+    for trial in range(25):
+        closed = trial % 3 == 0
+        c = random_curve(rng, closed)
+        w = float(rng.uniform(0.05, 3))
+        tol = 1e-3 * (np.linalg.norm(np.ptp(c.points, axis=0)) + w)
+        g = crspline.stroke(c, w, cap=cap, join="round", shapely=True)
+        assert g.is_valid, f"trial {trial}"
+        dense = c.tessellate(tol / 1000)["points"]
+        line = LinearRing(dense[:-1]) if closed else LineString(dense)
+        ref = line.buffer(w / 2, resolution=64, cap_style=shapely_cap, join_style=1)
+        ref_error = w / 2 * (1 - math.cos(math.pi / 256))
+        assert abs(g.area - ref.area) <= (tol + ref_error) * ref.length, f"trial {trial}"
+        coarse = c.tessellate(tol / 2)["points"]
+        cline = LinearRing(coarse[:-1]) if closed else LineString(coarse)
+        default = cline.buffer(w / 2, cap_style=shapely_cap, join_style=1)
+        ours = sum(len(p.exterior.coords) + sum(len(h.coords) for h in p.interiors) for p in getattr(g, "geoms", [g]))
+        theirs = sum(len(p.exterior.coords) + sum(len(h.coords) for h in p.interiors)
+                     for p in getattr(default, "geoms", [default]))
+        fewer += ours < theirs
+        checked += 1
+    assert checked == 25
+    assert fewer == 25
+
+
+def test_stroke_arrays_and_joins():
+    c = crspline.CatmullRom([[0, 0], [4, 0], [4, 3], [2, 4], [0, 3], [2, -1]])
+    polys = crspline.stroke(c, 0.4)
+    assert all(r.shape[1] == 2 for p in polys for r in p)
+    assert sum(len(p) - 1 for p in polys) >= 1  # the loop encloses a hole
+    for join in ("round", "miter", "bevel"):
+        assert crspline.stroke(c, 0.4, join=join, shapely=True).is_valid
+
+
+@pytest.mark.parametrize("call, words", [
+    (lambda c3, c2: crspline.sweep(c3, radius=0), "radius: must be positive and finite, got 0"),
+    (lambda c3, c2: crspline.sweep(c3, radius=-1.5), "radius: must be positive and finite, got -1.5"),
+    (lambda c3, c2: crspline.sweep(c3, radius=float("nan")), "radius: must be positive and finite, got nan"),
+    (lambda c3, c2: crspline.sweep(c3, profile=[[0, 1]]), "profile: needs at least 2 points, got 1"),
+    (lambda c3, c2: crspline.sweep(c2), "curve: sweep needs a 3-D curve, got a 2-D one"),
+    (lambda c3, c2: crspline.stroke(c3, 1.0), "curve: stroke needs a 2-D curve, got a 3-D one"),
+    (lambda c3, c2: crspline.stroke(c2, 0.0), "width: must be positive and finite, got 0"),
+    (lambda c3, c2: crspline.stroke(c2, 1.0, join="mitre"), "join: must be 'round', 'miter' or 'bevel'"),
+    (lambda c3, c2: crspline.sweep(c3, roll=[0, 1]), "roll: 2 angles for 4 knots"),
+    (lambda c3, c2: crspline.sweep(c3, up=[0, 0, 0]), "up: must not be the zero vector"),
+    (lambda c3, c2: crspline.sweep(c3, scale=([0, 1], [1, 0])), "scale[1]: value 0 must be positive"),
+])
+def test_errors_name_the_field(call, words):
+    c3 = crspline.CatmullRom([[0, 0, 0], [1, 0, 0], [2, 1, 0], [3, 1, 1]])
+    c2 = crspline.CatmullRom([[0, 0], [1, 0], [2, 1]])
+    with pytest.raises(ValueError) as e:
+        call(c3, c2)
+    assert words in str(e.value)
+    assert isinstance(e.value, crspline.SpecError)
