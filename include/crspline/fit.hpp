@@ -167,13 +167,21 @@ fit_result<D, T> fit(std::span<const vec<D, T>> points, const fit_options<D, T>&
     pb.slack = floor / T(4);
     // 3. Choose, prove, repair.
     detail::fit_selection<D, T> sel;
-    if (opt.mode == fit_mode::subset) {
-        const detail::subset_search<D, T> search(pb);
-        std::vector<std::size_t> idx = search.choose(2, 1);
-        search.improve(idx);
-        sel = detail::prove_and_repair(pb, std::move(idx));
-    } else {
-        sel = detail::fit_free(pb);
+    //    Every vertex starts at tension level 0, 0.5 or 0.8 (where a curve
+    //    through stair steps bulges, tension keeps it nearer its chords and
+    //    saves points); the fewest control points win, the lower level first.
+    for (std::uint8_t base : {std::uint8_t(0), std::uint8_t(1), std::uint8_t(2)}) {
+        pb.base_level = base;
+        detail::fit_selection<D, T> s;
+        if (opt.mode == fit_mode::subset) {
+            const detail::subset_search<D, T> search(pb);
+            std::vector<std::size_t> idx = search.choose(2, 1);
+            search.improve(idx);
+            s = detail::prove_and_repair(pb, std::move(idx));
+        } else {
+            s = detail::fit_free(pb);
+        }
+        if (sel.idx.empty() || s.idx.size() < sel.idx.size()) sel = std::move(s);
     }
     // 4. The report.
     const std::size_t nv = opt.closed ? sel.idx.size() - 1 : sel.idx.size();

@@ -24,8 +24,9 @@ using crspline::fit_options;
 using crspline::vec;
 
 // Lines of 50 points (a noisy turning walk, seeded) at tolerances of 0.3
-// and 0.5 of the point spacing's order: where the optimum uses no tension
-// (lines whose optimum needs tension are counted and skipped).
+// and 0.5 of the point spacing's order. The optimum is the fewest points of
+// a curve without tension (lines where none exists are counted and
+// skipped); the fit may also use tension, so it can come in under it.
 TEST(FitCounts, WithinFifteenPercentOfTheOptimum) {
     std::size_t total_fit = 0, total_opt = 0, lines = 0, skipped = 0;
     for (std::uint64_t seed = 1; seed <= 16; ++seed) {
@@ -78,8 +79,8 @@ corpus_counts run_corpus(const std::string& file, fit_mode mode, std::size_t max
 }
 
 // The issue asks for 0.8 (subset) and 0.6 (free) of RDP's count; what this
-// fit reaches is asserted here, a little above its measured ratios (0.864 /
-// 0.834 on the topobathy contours, 0.839 and 0.877 on the others; see
+// fit reaches is asserted here, a little above its measured ratios (0.836 /
+// 0.809 on the topobathy contours, 0.821 and 0.852 on the others; see
 // BENCHMARKS.md), so that a
 // regression fails and an improvement shows.
 TEST(FitCounts, FewerPointsThanRamerDouglasPeuckerOnRealLines) {
@@ -87,20 +88,20 @@ TEST(FitCounts, FewerPointsThanRamerDouglasPeuckerOnRealLines) {
     EXPECT_EQ(dem.lines, 78u);
     EXPECT_EQ(dem.points, 6722u);
     std::printf("topobathy subset: fit %zu rdp %zu (%.3f)\n", dem.fit, dem.rdp, double(dem.fit) / double(dem.rdp));
-    EXPECT_LE(double(dem.fit), 0.89 * double(dem.rdp));
+    EXPECT_LE(double(dem.fit), 0.86 * double(dem.rdp));
     const auto free = run_corpus("dem_topobathy.txt", fit_mode::free, 1000);
     std::printf("topobathy free: fit %zu rdp %zu (%.3f)\n", free.fit, free.rdp, double(free.fit) / double(free.rdp));
-    EXPECT_LE(double(free.fit), 0.86 * double(free.rdp));
+    EXPECT_LE(double(free.fit), 0.83 * double(free.rdp));
     const auto jb = run_corpus("dem_jacksboro.txt", fit_mode::subset, 40);
     EXPECT_EQ(jb.lines, 40u);
     std::printf("jacksboro (40 lines, %zu points) subset: fit %zu rdp %zu (%.3f)\n", jb.points, jb.fit, jb.rdp,
                 double(jb.fit) / double(jb.rdp));
-    EXPECT_LE(double(jb.fit), 0.87 * double(jb.rdp));
+    EXPECT_LE(double(jb.fit), 0.845 * double(jb.rdp));
     const auto ny = run_corpus("outlines_nybb.txt", fit_mode::subset, 6);
     EXPECT_EQ(ny.lines, 6u);
     std::printf("nybb (6 rings, %zu points) subset: fit %zu rdp %zu (%.3f)\n", ny.points, ny.fit, ny.rdp,
                 double(ny.fit) / double(ny.rdp));
-    EXPECT_LE(double(ny.fit), 0.90 * double(ny.rdp));
+    EXPECT_LE(double(ny.fit), 0.875 * double(ny.rdp));
 }
 
 }  // namespace

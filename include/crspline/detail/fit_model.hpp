@@ -36,6 +36,9 @@ struct fit_problem {
     T tension = 0;
     bool start_reflect = false, end_reflect = false;  // otherwise natural
     T tolerance = 0, slack = 0;
+    /// The tension level every vertex starts at (the search tries its
+    /// candidates at it; the repairs raise it where needed).
+    std::uint8_t base_level = 0;
 
     std::size_t size() const noexcept { return pts.size(); }
     /// The point at an unrolled index (a closed curve's index size() is 0 again).

@@ -62,11 +62,12 @@ public:
     }
 
     /// Whether the segment i -> j (unrolled indices) with predecessor p and
-    /// successor nx (fit_none: an open end) keeps the tolerance, at level 0.
+    /// successor nx (fit_none: an open end) keeps the tolerance, at the
+    /// base tension level (the quick test).
     bool passes(std::size_t p, std::size_t i, std::size_t j, std::size_t nx) const {
         const point* pp = p == fit_none ? nullptr : &pb_.at(p);
         const point* np = nx == fit_none ? nullptr : &pb_.at(nx);
-        const auto seg = pb_.segment(pp, pb_.at(i), pb_.at(j), np, 0, 0);
+        const auto seg = pb_.segment(pp, pb_.at(i), pb_.at(j), np, pb_.base_level, pb_.base_level);
         const poly_range<D, T> pr{pb_.pts, i >= pb_.size() ? i - pb_.size() : i, j - i + 1};
         return quick_segment_test(seg, pr, pb_.tolerance, pb_.slack, 1, j - i);
     }
@@ -253,7 +254,8 @@ template <std::size_t D, class T>
 fit_selection<D, T> prove_and_repair(const fit_problem<D, T>& pb, std::vector<std::size_t> idx,
                                      std::vector<vec<D, T>> pos = {}) {
     const bool closed = pb.closed;
-    std::vector<std::uint8_t> level(idx.size(), 0);
+    std::vector<std::uint8_t> level(idx.size(), pb.base_level);
+    if (!closed) level.front() = level.back() = 0;  // an open curve's ends take no tension
     std::vector<std::uint8_t> moved(idx.size(), 0);
     if (pos.empty()) {
         for (std::size_t i : idx) pos.push_back(pb.at(i));
@@ -353,7 +355,7 @@ fit_selection<D, T> prove_and_repair(const fit_problem<D, T>& pb, std::vector<st
                 ni.push_back(idx[k]), np.push_back(pos[k]), nl.push_back(level[k]), nm.push_back(moved[k]);
                 if (q < insert.size() && insert[q] == k) {
                     const std::size_t mid = idx[k] + (idx[k + 1] - idx[k]) / 2;
-                    ni.push_back(mid), np.push_back(pb.at(mid)), nl.push_back(0), nm.push_back(0);
+                    ni.push_back(mid), np.push_back(pb.at(mid)), nl.push_back(pb.base_level), nm.push_back(0);
                     ++q;
                 }
             }
