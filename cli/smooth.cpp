@@ -11,7 +11,8 @@
 // distances are never below true ones), input vertices come back bit for
 // bit, and lengths are geodesic on the WGS 84 ellipsoid (GeographicLib's
 // inverse problem per segment, accurate to rounding). Each feature gets the properties
-// crspline_length_m, crspline_max_deviation_m, crspline_verdict and
+// crspline_length_m (of the output polylines), crspline_curve_length_m (the
+// curves' arc length in the frame's metres), crspline_max_deviation_m, crspline_verdict and
 // crspline_status; the collection gets "crspline": {units, stats}. Bad input
 // exits with status 2 and one line naming the feature and field.
 #include <algorithm>
@@ -68,7 +69,7 @@ struct recipe {
 
 // Positions of a GeoJSON line or ring into the layer.
 void add_positions(geo::layer& l, std::size_t feature, geo::part_kind kind, const json& coords,
-                   const std::string& where, bool& has_z) {
+                   const std::string& where, bool& has_z, geo::ring_role role = geo::ring_role::none) {
     if (!coords.is_array()) throw smooth_error(where + ": expected an array of positions");
     std::vector<double> xy, z;
     for (std::size_t i = 0; i < coords.size(); ++i) {
@@ -81,7 +82,7 @@ void add_positions(geo::layer& l, std::size_t feature, geo::part_kind kind, cons
         has_z = has_z || zi;
         z.push_back(zi ? p[2].get<double>() : 0.0);
     }
-    l.add_part(feature, kind, xy, z);
+    l.add_part(feature, kind, xy, z, role);
 }
 
 recipe add_geometry(geo::layer& l, std::size_t feature, const json& g, const std::string& where) {
@@ -111,7 +112,8 @@ recipe add_geometry(geo::layer& l, std::size_t feature, const json& g, const std
             const std::string wp = multi ? wc + "[" + std::to_string(k) + "]" : wc;
             if (!poly.is_array()) throw smooth_error(wp + ": expected an array of rings");
             for (std::size_t i = 0; i < poly.size(); ++i)
-                add_positions(l, feature, geo::part_kind::ring, poly[i], wp + "[" + std::to_string(i) + "]", r.has_z);
+                add_positions(l, feature, geo::part_kind::ring, poly[i], wp + "[" + std::to_string(i) + "]", r.has_z,
+                              i == 0 ? geo::ring_role::outer : geo::ring_role::inner);
             r.rings.push_back(poly.size());
         }
     }
@@ -333,6 +335,10 @@ int run(int argc, char** argv) {
         else if (!rep.message.empty() && rep.status != geo::feature_status::empty)
             status += ": " + rep.message;
         f["properties"]["crspline_length_m"] = length[i];
+        // The curves' own arc length, in the frame's metres (an upper bound
+        // of the true one), as crspline.geo's curve_length.
+        f["properties"]["crspline_curve_length_m"] =
+            rep.status == geo::feature_status::invalid ? 0.0 : rep.length;
         f["properties"]["crspline_max_deviation_m"] = rep.max_deviation;
         f["properties"]["crspline_verdict"] = geo::to_string(rep.verdict);
         f["properties"]["crspline_status"] = status;
@@ -343,7 +349,8 @@ int run(int argc, char** argv) {
                             {"shared_arcs", res.stats.shared_arcs},
                             {"rounds", res.stats.rounds},
                             {"tensioned_vertices", res.stats.tensioned_vertices},
-                            {"input_crossings", res.stats.input_crossings}};
+                            {"input_crossings", res.stats.input_crossings},
+                            {"swept_vertices", res.stats.swept_vertices}};
     }
     const std::string text = root.dump();
     if (out_path.empty() || out_path == "-") {

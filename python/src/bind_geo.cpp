@@ -48,7 +48,8 @@ py::array_t<T> adopt_numpy(std::vector<T>&& v, std::vector<py::ssize_t> shape) {
 py::dict geo_smooth(carray<double> xy, carray<double> extra, carray<std::int64_t> part_offsets,
                     carray<std::uint8_t> part_kinds, carray<std::int64_t> part_features, std::size_t feature_count,
                     double alpha, double tolerance, std::optional<double> max_deviation, bool preserve_topology,
-                    std::optional<std::array<double, 4>> domain, bool polylines) {
+                    std::optional<std::array<double, 4>> domain, bool polylines,
+                    std::optional<carray<std::uint8_t>> part_roles) {
     if (xy.ndim() != 2 || xy.shape(1) != 2)
         throw crspline::invalid_input("xy must have shape (n, 2), got ndim " + std::to_string(xy.ndim()));
     const std::size_t n = std::size_t(xy.shape(0));
@@ -74,6 +75,8 @@ py::dict geo_smooth(carray<double> xy, carray<double> extra, carray<std::int64_t
         l.part_features.push_back(std::size_t(v));
     }
     l.feature_count = feature_count;
+    if (part_roles)
+        for (py::ssize_t i = 0; i < part_roles->size(); ++i) l.part_roles.push_back(geo::ring_role(part_roles->data()[i]));
     geo::smooth_options opt;
     opt.alpha = alpha;
     opt.tolerance = tolerance;
@@ -117,6 +120,7 @@ py::dict geo_smooth(carray<double> xy, carray<double> extra, carray<std::int64_t
     stats["pairs_checked"] = r.stats.pairs_checked;
     stats["input_crossings"] = r.stats.input_crossings;
     stats["input_touches"] = r.stats.input_touches;
+    stats["swept_vertices"] = r.stats.swept_vertices;
     py::dict d;
     d["xy"] = oxy;
     d["extra"] = oextra;
@@ -144,7 +148,8 @@ py::dict geo_smooth(carray<double> xy, carray<double> extra, carray<std::int64_t
 // repeat). Returns the statuses and messages and the clean parts as layer
 // vertex indices.
 py::dict geo_clean(carray<double> xy, carray<std::int64_t> part_offsets, carray<std::uint8_t> part_kinds,
-                   carray<std::int64_t> part_features, std::size_t feature_count) {
+                   carray<std::int64_t> part_features, std::size_t feature_count,
+                   std::optional<carray<std::uint8_t>> part_roles) {
     if (xy.ndim() != 2 || xy.shape(1) != 2)
         throw crspline::invalid_input("xy must have shape (n, 2), got ndim " + std::to_string(xy.ndim()));
     const std::size_t nparts = std::size_t(part_kinds.size());
@@ -220,9 +225,35 @@ py::dict geo_clean(carray<double> xy, carray<std::int64_t> part_offsets, carray<
         features.push_back(std::int64_t(f));
         rings.push_back(ring ? 1 : 0);
     }
+    // Invalid nesting of each feature's rings (geo/nesting.hpp), as
+    // geo::smooth finds it for the verdicts: on the features whose status
+    // is ok.
+    py::list nesting;
+    {
+        std::vector<std::string> found(feature_count);
+        if (part_roles && part_roles->size() > 0) {
+            if (std::size_t(part_roles->size()) != nparts)
+                throw crspline::invalid_input("part_roles must have one value per part");
+            geo::layer l;
+            l.xy.assign(p, p + 2 * std::size_t(xy.shape(0)));
+            l.part_offsets.assign(off, off + nparts + 1);
+            for (std::size_t q = 0; q < nparts; ++q) {
+                l.part_kinds.push_back(geo::part_kind(part_kinds.data()[q]));
+                l.part_features.push_back(std::size_t(feat[q]));
+                l.part_roles.push_back(geo::ring_role(part_roles->data()[q]));
+            }
+            l.feature_count = feature_count;
+            geo::check_layer(l);
+            std::vector<bool> skip(feature_count);
+            for (std::size_t f = 0; f < feature_count; ++f) skip[f] = status[f] != std::uint8_t(geo::feature_status::ok);
+            found = geo::find_nesting(l, skip);
+        }
+        for (const auto& m : found) nesting.append(m);
+    }
     py::list messages;
     for (const auto& m : message) messages.append(m);
     py::dict d;
+    d["nesting"] = nesting;
     d["status"] = to_numpy(status);
     d["message"] = messages;
     d["vertices"] = to_numpy(verts);
@@ -353,16 +384,18 @@ void bind_geo(py::module_& m) {
     m.def("_geo_smooth", &geo_smooth, py::arg("xy"), py::arg("extra"), py::arg("part_offsets"),
           py::arg("part_kinds"), py::arg("part_features"), py::arg("feature_count"), py::arg("alpha"),
           py::arg("tolerance"), py::arg("max_deviation"), py::arg("preserve_topology"), py::arg("domain") = py::none(),
-          py::arg("polylines") = true,
+          py::arg("polylines") = true, py::arg("part_roles") = py::none(),
           "Smooths a layer given as flat arrays (crspline/geo/smooth.hpp); private: use crspline.geo.smooth. "
           "polylines=False: the measures only, the input as output (smooth_options::polylines).");
     py::list statuses, verdicts;
     for (auto s : {geo::feature_status::ok, geo::feature_status::empty, geo::feature_status::degenerate,
                    geo::feature_status::invalid})
         statuses.append(geo::to_string(s));
-    for (auto v : {geo::verdict::simple, geo::verdict::touches, geo::verdict::crosses}) verdicts.append(geo::to_string(v));
+    // Index = the verdict's value.
+    for (auto v : {geo::verdict::simple, geo::verdict::touches, geo::verdict::nested, geo::verdict::crosses})
+        verdicts.append(geo::to_string(v));
     m.def("_geo_clean", &geo_clean, py::arg("xy"), py::arg("part_offsets"), py::arg("part_kinds"),
-          py::arg("part_features"), py::arg("feature_count"),
+          py::arg("part_features"), py::arg("feature_count"), py::arg("part_roles") = py::none(),
           "Step 1 of geo::smooth (statuses, cleaned parts); private: used by crspline.geo.dask.");
     m.def("_geo_arc_boxes", &geo_arc_boxes, py::arg("xy"), py::arg("offsets"), py::arg("closed"), py::arg("alpha"),
           "Boxes holding every tension level's curve of each arc; private: used by crspline.geo.dask.");

@@ -54,6 +54,7 @@ def test_cli_smooth_matches_python(tmp_path):
         # algorithm, accurate to rounding; sums over up to ~10^4 segments
         # in different orders stay far below 1e-9 relative.
         assert row["crspline_length_m"] == pytest.approx(erow["length"], rel=1e-9)
+        assert row["crspline_curve_length_m"] == erow["curve_length"]  # the same core number
     assert compared > 50000
 
 
@@ -70,3 +71,38 @@ def test_cli_smooth_errors(tmp_path):
     r = subprocess.run([BIN, "smooth", "--tolerance", "-1", str(bad)], capture_output=True, text=True,
                        input="")
     assert r.returncode == 2
+
+
+def test_cli_keeps_islands_out_and_reports_nesting(tmp_path):
+    """Issue 39 through the command: the reproduction's island (moved to
+    WGS 84) stays outside the municipality, as in Python, and a
+    multi-polygon with a shell inside another is reported `nested`."""
+    from pyproj import Transformer
+    from shapely.geometry import MultiPolygon, Polygon
+    from shapely.ops import transform
+
+    import test_geo_containment as tc
+
+    to_wgs84 = Transformer.from_crs("EPSG:30166", "EPSG:4326", always_xy=True).transform
+    big, island = transform(to_wgs84, tc.BIG), transform(to_wgs84, tc.ISLAND)
+    outer = Polygon([(10, 10), (10.01, 10), (10.01, 10.01), (10, 10.01)])
+    inner = Polygon([(10.004, 10.004), (10.006, 10.004), (10.005, 10.006)])
+    layer = gpd.GeoDataFrame(geometry=[MultiPolygon([big, island]), big, island, MultiPolygon([outer, inner])],
+                             crs="EPSG:4326")
+    src = tmp_path / "in.geojson"
+    src.write_text(layer.to_json())
+    out = tmp_path / "out.geojson"
+    r = subprocess.run([BIN, "smooth", "--tolerance", str(tc.REPRO_TOLERANCE), str(src), "-o", str(out)],
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    doc = json.loads(out.read_text())
+    got = gpd.GeoDataFrame.from_features(doc["features"], crs="EPSG:4326")
+    assert got.is_valid[0] and got.is_valid[1] and got.is_valid[2]
+    assert tc.relation(*got.geometry[0].geoms) == "disjoint"
+    assert not got.geometry[1].intersects(got.geometry[2])
+    props = [f["properties"] for f in doc["features"]]
+    assert props[3]["crspline_verdict"] == "nested"
+    assert props[3]["crspline_status"] == (
+        "ok: part 1 (an outer ring) lies inside the polygon of part 0 (an outer ring) (nested shells)")
+    expected = cg.smooth(gpd.read_file(src), tolerance=tc.REPRO_TOLERANCE)
+    assert [p["crspline_verdict"] for p in props] == list(expected.verdict)

@@ -22,6 +22,13 @@ namespace crspline::geo {
 /// repeated at the end, as GIS formats do; it need not be).
 enum class part_kind : std::uint8_t { line = 0, ring = 1 };
 
+/// What a ring is in its polygon, where the caller knows (GeoJSON, Shapely):
+/// an outer ring (a shell) starts a polygon, an inner ring (a hole) belongs
+/// to the nearest outer ring before it in the same feature. Lines, and
+/// rings of unknown role, are `none`. Used to report invalid nesting in the
+/// input (geo/nesting.hpp); the smoothing itself keeps every relation.
+enum class ring_role : std::uint8_t { none = 0, outer = 1, inner = 2 };
+
 /// Lines and rings in flat arrays.
 struct layer {
     std::size_t extra_dims = 0;                 ///< values per vertex beyond x and y (Z, M, ...)
@@ -31,6 +38,7 @@ struct layer {
     std::vector<part_kind> part_kinds;          ///< one per part
     std::vector<std::size_t> part_features;     ///< the feature of each part, < feature_count
     std::size_t feature_count = 0;              ///< features may have no part (empty geometries)
+    std::vector<ring_role> part_roles;          ///< one per part, or empty (roles unknown)
 
     std::size_t vertex_count() const noexcept { return xy.size() / 2; }
     std::size_t part_count() const noexcept { return part_kinds.size(); }
@@ -39,7 +47,7 @@ struct layer {
     /// Appends a part of feature `feature` (feature_count grows to hold it):
     /// `xy` holds 2 values per vertex, `extra` extra_dims per vertex.
     void add_part(std::size_t feature, part_kind kind, std::span<const double> xy_values,
-                  std::span<const double> extra_values = {}) {
+                  std::span<const double> extra_values = {}, ring_role role = ring_role::none) {
         if (xy_values.size() % 2 != 0)
             throw invalid_input("part " + std::to_string(part_count()) + ": xy has " +
                                 std::to_string(xy_values.size()) + " values, not 2 per vertex");
@@ -52,6 +60,10 @@ struct layer {
         xy.insert(xy.end(), xy_values.begin(), xy_values.end());
         extra.insert(extra.end(), extra_values.begin(), extra_values.end());
         part_offsets.push_back(part_offsets.back() + n);
+        if (role != ring_role::none || !part_roles.empty()) {  // roles kept from the first one given
+            part_roles.resize(part_kinds.size(), ring_role::none);
+            part_roles.push_back(role);
+        }
         part_kinds.push_back(kind);
         part_features.push_back(feature);
         if (feature >= feature_count) feature_count = feature + 1;
@@ -89,6 +101,26 @@ inline void check_layer(const layer& l) {
         if (l.part_kinds[p] != part_kind::line && l.part_kinds[p] != part_kind::ring)
             throw invalid_input("part_kinds[" + std::to_string(p) + "] = " +
                                 std::to_string(int(l.part_kinds[p])) + " is neither line (0) nor ring (1)");
+    }
+    if (!l.part_roles.empty()) {
+        if (l.part_roles.size() != parts)
+            throw invalid_input("part_roles has " + std::to_string(l.part_roles.size()) + " values, expected " +
+                                std::to_string(parts) + " (one per part) or none");
+        for (std::size_t p = 0; p < parts; ++p) {
+            const auto r = l.part_roles[p];
+            if (r != ring_role::none && r != ring_role::outer && r != ring_role::inner)
+                throw invalid_input("part_roles[" + std::to_string(p) + "] = " + std::to_string(int(r)) +
+                                    " is neither none (0), outer (1) nor inner (2)");
+            if (r != ring_role::none && l.part_kinds[p] != part_kind::ring)
+                throw invalid_input("part_roles[" + std::to_string(p) + "]: a line has no ring role");
+            if (r == ring_role::inner) {
+                std::size_t q = p;
+                while (q > 0 && l.part_features[q - 1] == l.part_features[p] && l.part_roles[q - 1] == ring_role::inner) --q;
+                if (q == 0 || l.part_features[q - 1] != l.part_features[p] || l.part_roles[q - 1] != ring_role::outer)
+                    throw invalid_input("part_roles[" + std::to_string(p) +
+                                        "]: an inner ring must follow an outer ring of the same feature");
+            }
+        }
     }
     if (l.part_offsets[parts] != n)
         throw invalid_input("part_offsets ends at " + std::to_string(l.part_offsets[parts]) + ", not at the " +

@@ -80,6 +80,7 @@
 #include "../tessellate.hpp"
 #include "../vec.hpp"
 #include "layer.hpp"
+#include "nesting.hpp"
 #include "topology.hpp"
 
 namespace crspline::geo {
@@ -93,10 +94,12 @@ enum class feature_status : std::uint8_t {
 };
 
 /// How a feature's output meets the others and itself.
+/// Ordered by what a user must look at first: the larger wins.
 enum class verdict : std::uint8_t {
     simple = 0,   ///< meets no other output, and itself only at its joints
     touches = 1,  ///< shares a boundary or a junction with another feature (a coverage), or its input touches one
-    crosses = 2,  ///< an input crossing remains: the input segments there are output as they are
+    nested = 2,   ///< the input's rings nest invalidly (geo/nesting.hpp; the message says which): kept as they are
+    crosses = 3,  ///< an input crossing remains: the input segments there are output as they are
 };
 
 inline const char* to_string(feature_status s) noexcept {
@@ -112,6 +115,7 @@ inline const char* to_string(verdict v) noexcept {
     switch (v) {
         case verdict::simple: return "simple";
         case verdict::touches: return "touches";
+        case verdict::nested: return "nested";
         case verdict::crosses: return "crosses";
     }
     return "?";
@@ -146,7 +150,7 @@ struct feature_report {
     geo::verdict verdict = geo::verdict::simple;
     double length = 0;         ///< arc length of the smoothed curves (all parts, all rings)
     double max_deviation = 0;  ///< proved bound on the distance of the curves from the input polyline
-    std::string message;       ///< why, when the status is not ok
+    std::string message;       ///< why, when the status is not ok; with verdict nested, which ring lies where
 };
 
 /// Counts of what smooth() did, for reports and tests.
@@ -161,6 +165,10 @@ struct smooth_stats {
     std::size_t pairs_checked = 0;       ///< candidate pairs examined in the final proof
     std::size_t input_crossings = 0;     ///< pairs of input segments that cross (left as they are)
     std::size_t input_touches = 0;       ///< pairs of input segments that touch or overlap without crossing
+    /// Times a vertex of another arc was found in the region a segment
+    /// sweeps between its input chord and its curve (its tension raised
+    /// there so that the vertex keeps its side), over every round.
+    std::size_t swept_vertices = 0;
 };
 
 /// One arc's final curve (smooth_options::keep_curves): its tensioned
@@ -611,6 +619,52 @@ inline bool apart_by_line(const std::array<p2, 4>& p, const std::array<p2, 4>& q
     return true;
 }
 
+// Whether w is outside the convex hull of q by more than `slack`: some
+// direction n has every point of q more than slack |n| before w, or every
+// one more than that beyond it. Tried: from q's centroid towards w, and
+// across each pair of q's points (the hull's edge directions are among
+// them). Relative to w, so rounding stays within a few ulps of the
+// coordinates, far below the slack; |n|_1 >= |n|_2 keeps the margin true.
+inline bool outside_hull(const std::array<p2, 4>& q, const p2& w, double slack) noexcept {
+    auto apart = [&](const p2& n) {
+        const double len = std::abs(n[0]) + std::abs(n[1]);
+        if (!(len > 0)) return false;
+        double lo = INFINITY, hi = -INFINITY;
+        for (const p2& x : q) {
+            const double v = dot(x - w, n);
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+        return hi < -slack * len || lo > slack * len;
+    };
+    if (apart((q[0] + q[1] + q[2] + q[3]) / 4.0 - w)) return true;
+    for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b) {
+            const p2 d = q[b] - q[a];
+            if (apart(p2{{-d[1], d[0]}})) return true;
+        }
+    return false;
+}
+
+// The winding number around w of the closed polygon v[0], ..., v[n - 1]
+// (and back to v[0]), every edge of which is farther than a few ulps of
+// the coordinates from w: then each orientation sign below is exact (an
+// edge crossing the ray y = y_w does so at least that far from w, and the
+// cross product's rounding is below that distance times the edge's rise).
+inline int winding_around(std::span<const p2> v, const p2& w) noexcept {
+    int wn = 0;
+    const std::size_t n = v.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        const p2 a = v[k] - w, b = v[k + 1 == n ? 0 : k + 1] - w;
+        if (a[1] <= 0) {
+            if (b[1] > 0 && cross2(a, b) > 0) ++wn;
+        } else if (b[1] <= 0 && cross2(a, b) < 0) {
+            --wn;
+        }
+    }
+    return wn;
+}
+
 // The end point two point sets share (their first or last), if any.
 inline const p2* shared_end(const std::array<p2, 4>& p, const std::array<p2, 4>& q) noexcept {
     for (int i = 0; i < 2; ++i)
@@ -738,6 +792,60 @@ struct proof {
         if (!pc.linear) arcs[pc.arc].raise[pc.seg] = 1;
     }
 
+    // Containment (issue 39). Every input vertex stays on its arc and no
+    // new crossing is allowed, so a vertex w of another arc can change side
+    // of this arc's ring (or line) only through the region a segment sweeps
+    // between its input chord and its curve: the winding number around w
+    // of the output ring minus that of the input ring is the sum, over the
+    // segments, of the winding numbers around w of the loops "curve, then
+    // the input chord back". So where every such loop's winding around
+    // every vertex of every other arc is 0, every part keeps its side of
+    // every ring: holes stay in their shells, islands stay out, lines stay
+    // on their side. Proved here for segment s of arc i and a vertex w not
+    // one of its ends: w outside the hull of the segment's Bézier points
+    // (which holds the loop), else piece by piece: w farther from each
+    // piece's chord than the piece's flatness margin, or outside the
+    // piece's own hull (so the loop of pieces has the winding of the polygon
+    // of their chords), farther than the slack from the input chord, and
+    // the winding of that polygon 0. False: not proved (the caller raises
+    // the segment's tension; at tension 1 nothing is swept).
+    bool outside_swept(std::uint32_t i, std::size_t s, const p2& w) {
+        arc_work& a = arcs[i];
+        if (a.linear(s)) return true;
+        const p2 p0 = a.pts[s], p3 = a.pts[a.next(s)];
+        if (w == p0 || w == p3) return true;
+        const box<2>& bx = a.hull_box[s];
+        if (w[0] < bx.lo[0] - slack || w[0] > bx.hi[0] + slack || w[1] < bx.lo[1] - slack ||
+            w[1] > bx.hi[1] + slack)
+            return true;
+        if (outside_hull(a.hull[s], w, slack)) return true;
+        if (!(point_segment_distance(w, p0, p3) > slack)) return false;
+        ensure_line(i);
+        const std::size_t k0 = a.first_piece[s], k1 = a.first_piece[s + 1];
+        for (std::size_t k = k0; k < k1; ++k) {
+            const piece pc = piece_of(a, i, k, slack);
+            if (point_segment_distance(w, pc.q[0], pc.q[3]) > pc.e + slack) continue;
+            if (!outside_hull(pc.q, w, slack)) return false;
+        }
+        return winding_around(std::span<const p2>(a.line.points.data() + k0, k1 - k0 + 1), w) == 0;
+    }
+
+    // The ends of segment t of arc j against the region segment s of arc i
+    // sweeps (and the other way round); a vertex inside raises the
+    // segment's tension, as an unproved pair does.
+    void prove_sides(std::uint32_t i, std::size_t s, std::uint32_t j, std::size_t t) {
+        const auto& ha = arcs[i].hull[s];
+        const auto& hb = arcs[j].hull[t];
+        if (!arcs[i].linear(s) && !(outside_swept(i, s, hb[0]) && outside_swept(i, s, hb[3]))) {
+            arcs[i].raise[s] = 1;
+            ++swept;
+        }
+        if (!arcs[j].linear(t) && !(outside_swept(j, t, ha[0]) && outside_swept(j, t, ha[3]))) {
+            arcs[j].raise[t] = 1;
+            ++swept;
+        }
+    }
+
     // Segment s of arc i against segment t of arc j (not the same segment).
     void prove_segments(std::uint32_t i, std::size_t s, std::uint32_t j, std::size_t t, proof_record& rec) {
         arc_work& a = arcs[i];
@@ -745,10 +853,13 @@ struct proof {
         ++rec.pairs;
         const auto& ha = a.hull[s];
         const auto& hb = b.hull[t];
+        const bool la = a.linear(s), lb = b.linear(t);
+        // Containment: each segment's ends against the other's swept region
+        // (across arcs only: an arc's own vertices cannot change its side).
+        if (i != j && !(la && lb)) prove_sides(i, s, j, t);
         const p2* v = shared_end(ha, hb);
         // Segment level: hulls meeting only at a shared end.
         if (v && (apart_by_line(ha, hb, *v, slack) || hulls_apart_at(ha, hb, *v, slack))) return;
-        const bool la = a.linear(s), lb = b.linear(t);
         if (la && lb) {
             // Two input segments: apart, or the input itself meets here
             // (left as it is): a proper crossing or a touch.
@@ -1121,6 +1232,7 @@ struct proof {
     std::vector<std::uint8_t> dirty;                             // per arc: rebuilt this round
     std::vector<std::uint8_t> crossing;                          // per arc: 2 an input crossing, 1 a touch
     std::size_t rounds = 0, pairs = 0, crossings = 0, touches = 0;
+    std::size_t swept = 0;  // (segment, vertex) pairs found in a swept region, every round
 };
 
 }  // namespace detail
@@ -1299,6 +1411,21 @@ inline smooth_result smooth_layer(const layer& in, const smooth_options& opt, la
         detail::measure_alone(in, opt, res, clean_one, consumed);  // clean_one writes res's statuses
         return res;
     }
+    // Invalid nesting in the input (where the rings' roles are known), for
+    // the verdicts at the end; features with a bad or degenerate part are
+    // passed over (read before the input's arrays may be given away).
+    std::vector<std::string> nesting;
+    if (!in.part_roles.empty()) {
+        std::vector<bool> skip(in.feature_count, false);
+        for (std::size_t f = 0; f < in.feature_count; ++f) skip[f] = res.features[f].status != feature_status::ok;
+        for (std::size_t p = 0; p < nparts; ++p) {  // a degenerate part makes its feature's status say so
+            const std::size_t f = in.part_features[p];
+            if (skip[f]) continue;
+            clean_part c;
+            if (in.part_kinds[p] == part_kind::ring && !clean_one(p, c)) skip[f] = true;
+        }
+        nesting = find_nesting(in, skip);
+    }
     // The cleaned parts in flat arrays (topology.hpp's clean_layer), each
     // cleaned in one reused clean_part; the layer vertex of each cleaned
     // vertex is kept only to interpolate extra values.
@@ -1358,6 +1485,7 @@ inline smooth_result smooth_layer(const layer& in, const smooth_options& opt, la
     res.stats.pairs_checked = pr.pairs;
     res.stats.input_crossings = pr.crossings;
     res.stats.input_touches = pr.touches;
+    res.stats.swept_vertices = pr.swept;
     for (const auto& a : arcs) res.stats.pieces += a.pieces;
     const std::vector<std::uint8_t>& arc_crossing = pr.crossing;
 
@@ -1510,6 +1638,12 @@ inline smooth_result smooth_layer(const layer& in, const smooth_options& opt, la
             if (arc_crossing[i] == 2) rep.verdict = verdict::crosses;
             else if ((touches || arc_crossing[i] == 1) && rep.verdict == verdict::simple) rep.verdict = verdict::touches;
         }
+    }
+    for (std::size_t f = 0; f < nesting.size(); ++f) {
+        if (nesting[f].empty()) continue;
+        auto& rep = res.features[f];
+        rep.verdict = std::max(rep.verdict, verdict::nested);
+        rep.message = nesting[f];
     }
     if (opt.progress) opt.progress(1.0);
     return res;

@@ -1,15 +1,26 @@
 """Smoothing and measuring whole GIS layers (GeoPandas / Shapely 1.8).
 
 ``smooth(gdf, tolerance=...)`` returns a GeoDataFrame with the same index,
-columns and CRS, the smoothed geometry and four columns:
+columns and CRS, the smoothed geometry and five columns:
 
-- ``length``: of the smoothed curves (a polygon's perimeter, all rings);
+- ``length``: of the output geometry the user holds (a polygon's perimeter,
+  all rings), measured as GIS measures it: planar in the CRS's units on a
+  projected CRS (what ``out.length`` gives), geodesic on the WGS 84
+  ellipsoid in metres on a geographic one (pyproj.Geod); one definition
+  for both;
+- ``curve_length``: the arc length of the smoothed curves themselves (the
+  output polylines are chords of them, so never longer): in the CRS's units
+  on a projected CRS; on a geographic CRS in metres of the conservative
+  frame below (an upper bound of the curves' true length);
 - ``max_deviation``: a proved bound on the distance of the curves from the
   input boundary;
 - ``verdict``: ``simple``, ``touches`` (shares a boundary or a junction with
-  another feature, as in a coverage) or ``crosses`` (the input crossed
-  itself or another feature there; those input segments are output as
-  they are);
+  another feature, as in a coverage), ``nested`` (the input's rings nest
+  invalidly: a hole outside its shell or inside another hole, a shell
+  inside another polygon of the feature; the status says which parts; the
+  output keeps that nesting, as it keeps every relation) or ``crosses``
+  (the input crossed itself or another feature there; those input
+  segments are output as they are);
 - ``status``: ``ok``, or ``empty``, ``degenerate: ...``, ``invalid: ...``
   naming the part and vertex (such features come back unchanged, never
   dropped).
@@ -17,7 +28,9 @@ columns and CRS, the smoothed geometry and four columns:
 The work is the C++ core's (crspline/geo/smooth.hpp): the layer is cut
 into arcs between junctions, each shared boundary smoothed once, every
 input vertex kept exactly, no output crossing another unless the input
-did (proved piece by piece, tension raised locally where a proof fails).
+did (proved piece by piece, tension raised locally where a proof fails),
+and no vertex of one part in the region another part's smoothing sweeps
+(so every part keeps its side of every ring: islands stay out, holes in).
 
 Units. On a projected CRS, tolerance, max_deviation and lengths are in its
 units (feet for EPSG:2263). On a geographic CRS (EPSG:4326) they are in
@@ -25,7 +38,7 @@ metres: the core works in an equirectangular frame in metres, x = R cos(phi0)
 lambda, y = R phi, with R = a^2 / b of the ellipsoid (no radius of curvature
 of it is larger) and phi0 the layer's latitude nearest the equator, so a
 distance in the frame is never less than the true one: the tolerance and
-the reported deviations are upper bounds in true metres. Lengths are
+the reported deviations are upper bounds in true metres. `length` is
 geodesic on the ellipsoid (pyproj.Geod) along the output polylines. The
 frame's inverse is not used for the input vertices: they come back bit for
 bit. The curves are kept within the poles and the antimeridian (tension
@@ -44,7 +57,7 @@ from .. import _crspline
 
 __all__ = ["smooth", "measure", "geographic_frame"]
 
-_COLUMNS = ("length", "max_deviation", "verdict", "status")
+_COLUMNS = ("length", "curve_length", "max_deviation", "verdict", "status")
 _TOPOLOGIES = ("preserve", "none")
 
 
@@ -64,6 +77,7 @@ class _Layer:
     def __init__(self, geoms):
         self.coords = []          # one (n, 2 or 3) array per part
         self.kinds = []           # 0 line, 1 ring
+        self.roles = []           # 0 line, 1 outer ring (a polygon's shell), 2 inner ring (a hole)
         self.features = []        # feature of each part
         self.recipes = []         # per feature: (type name, structure) or None (pass through)
         self.unsupported = {}     # feature -> message
@@ -72,7 +86,8 @@ class _Layer:
             self.recipes.append(self._add(i, g))
         self.feature_count = len(self.recipes)
 
-    def _part(self, i, coords, ring):
+    def _part(self, i, coords, ring, role=0):
+        self.roles.append(role)
         a = np.asarray(coords, dtype=float)
         if a.ndim != 2 or a.shape[0] == 0:
             a = np.zeros((0, 2))
@@ -103,10 +118,10 @@ class _Layer:
             return None
         structure = []
         for p in polys:
-            self._part(i, p.exterior.coords, True)
+            self._part(i, p.exterior.coords, True, 1)
             holes = list(p.interiors)
             for h in holes:
-                self._part(i, h.coords, True)
+                self._part(i, h.coords, True, 2)
             structure.append(1 + len(holes))
         return (t, g.has_z, structure)
 
@@ -247,6 +262,7 @@ class _Prepared:
         if has_z is not None:
             self.layer.has_z = has_z
         self.xy, self.z, self.offsets, self.kinds, self.features = self.layer.arrays()
+        self.roles = np.asarray(self.layer.roles, dtype=np.uint8)
         self.geographic = geographic
         self.unwrapped = np.zeros(len(self.offsets) - 1, dtype=bool)
         self.lonlat = self.xy
@@ -288,7 +304,7 @@ def _run(series, *, alpha, tolerance, max_deviation, preserve):
     frame_xy = frame.forward(prep.lonlat)
     r = _crspline._geo_smooth(frame_xy, prep.z, prep.offsets, prep.kinds, prep.features, prep.layer.feature_count,
                               float(alpha), float(tolerance), None if max_deviation is None else float(max_deviation),
-                              bool(preserve), frame.domain)
+                              bool(preserve), frame.domain, part_roles=prep.roles)
     return _finish(prep, frame, frame_xy, r)
 
 
@@ -366,13 +382,21 @@ def _finish(prep, frame, frame_xy, r):
             if statuses[code] == "ok":
                 status[i] = f"degenerate: {e}: passed through unchanged"
         new.append(geom)
-    length = np.asarray(r["length"], dtype=float)
+    # length: of the output polylines the user holds, measured as GIS
+    # measures them (geodesic on a geographic CRS, planar on a projected
+    # one); curve_length: the core's arc length of the curves (in the frame's
+    # metres on a geographic CRS: an upper bound, see the module doc).
+    curve_length = np.array(r["length"], dtype=float)
     if frame.geographic:
         length = _geodesic_lengths(out, offs, features, layer.feature_count)
-    for i in layer.unsupported:
-        length[i] = 0.0
+    else:
+        length = _planar_lengths(out, offs, features, layer.feature_count)
+    for i in range(layer.feature_count):
+        if i in layer.unsupported or statuses[r["status"][i]] == "invalid":
+            length[i] = curve_length[i] = 0.0  # passed through unmeasured (coordinates may be NaN)
     verdict = [verdicts[v] for v in r["verdict"]]
-    return new, length, np.asarray(r["max_deviation"], dtype=float), verdict, status, r.get("stats", {})
+    return (new, length, np.asarray(r["max_deviation"], dtype=float), verdict, status, r.get("stats", {}),
+            curve_length)
 
 
 def _geodesic_lengths(lonlat, offsets, features, feature_count):
@@ -386,6 +410,21 @@ def _geodesic_lengths(lonlat, offsets, features, feature_count):
         return lengths
     seg = np.asarray(Geod(ellps="WGS84").line_lengths(lonlat[:, 0], lonlat[:, 1]), dtype=float)
     # Segment k joins vertices k and k + 1; it belongs to a part when both do.
+    part_of_vertex = np.repeat(np.arange(len(offsets) - 1), np.diff(offsets))
+    inside = part_of_vertex[:-1] == part_of_vertex[1:]
+    seg = np.where(inside, seg, 0.0)
+    feature_of_segment = np.asarray(features, dtype=np.int64)[part_of_vertex[:-1]]
+    np.add.at(lengths, feature_of_segment, seg)
+    return lengths
+
+
+def _planar_lengths(xy, offsets, features, feature_count):
+    """Planar length of each feature's output polylines (the CRS's units),
+    summed over its parts."""
+    lengths = np.zeros(feature_count)
+    if len(xy) < 2:
+        return lengths
+    seg = np.hypot(np.diff(xy[:, 0]), np.diff(xy[:, 1]))
     part_of_vertex = np.repeat(np.arange(len(offsets) - 1), np.diff(offsets))
     inside = part_of_vertex[:-1] == part_of_vertex[1:]
     seg = np.where(inside, seg, 0.0)
@@ -441,31 +480,34 @@ def smooth(data, *, alpha=0.5, tolerance=None, max_deviation=None, topology="pre
     input boundary. topology: "preserve" (shared boundaries smoothed once,
     no new crossings, proved) or "none" (each part alone, unchecked).
     Returns a GeoDataFrame with the same index, columns and CRS and the
-    columns length, max_deviation, verdict and status (see the module doc);
+    columns length, curve_length, max_deviation, verdict and status (see the
+    module doc);
     `.attrs["crspline_units"]` names the unit.
     """
     _check(alpha, tolerance, max_deviation, topology)
     data, series = _as_geoseries(data)
-    new, length, dev, verdict, status, stats = _run(series, alpha=alpha, tolerance=tolerance,
-                                                    max_deviation=max_deviation,
-                                                    preserve=topology == "preserve")
-    out = _frame(data, series, new, {"length": length, "max_deviation": dev, "verdict": verdict,
-                                     "status": status})
+    new, length, dev, verdict, status, stats, curve_length = _run(series, alpha=alpha, tolerance=tolerance,
+                                                                  max_deviation=max_deviation,
+                                                                  preserve=topology == "preserve")
+    out = _frame(data, series, new, {"length": length, "curve_length": curve_length, "max_deviation": dev,
+                                     "verdict": verdict, "status": status})
     out.attrs["crspline_stats"] = dict(stats)
     return out
 
 
 def measure(data, *, alpha=0.5, tolerance=None):
     """Lengths and verdicts without smoothing: the geometry is unchanged;
-    `length` is that of the Catmull-Rom curves through the vertices (each
-    part alone, no tension; geodesic along their polylines on a geographic
-    CRS), `max_deviation` their proved distance from the input, `verdict`
+    `length` is that of the Catmull-Rom curves' polylines through the
+    vertices (each part alone, no tension; planar or geodesic as smooth()
+    measures), `curve_length` the curves' arc length, `max_deviation` their
+    proved distance from the input, `verdict`
     how the input features meet (shared boundaries, input crossings) and
     `status` as smooth() gives it."""
     _check(alpha, tolerance, None, "none")
     data, series = _as_geoseries(data)
-    _, length, dev, _, status, _ = _run(series, alpha=alpha, tolerance=tolerance, max_deviation=None,
-                                        preserve=False)
-    _, _, _, verdict, _, _ = _run(series, alpha=alpha, tolerance=tolerance, max_deviation=None, preserve=True)
+    _, length, dev, _, status, _, curve_length = _run(series, alpha=alpha, tolerance=tolerance,
+                                                      max_deviation=None, preserve=False)
+    _, _, _, verdict, _, _, _ = _run(series, alpha=alpha, tolerance=tolerance, max_deviation=None, preserve=True)
     return _frame(data, series, list(series.values),
-                  {"length": length, "max_deviation": dev, "verdict": verdict, "status": status})
+                  {"length": length, "curve_length": curve_length, "max_deviation": dev, "verdict": verdict,
+                   "status": status})

@@ -58,7 +58,14 @@ import numpy as np
 
 __all__ = ["smooth", "write_partitions", "arc_counts"]
 
-_OUT_COLUMNS = ("length", "max_deviation", "verdict", "status")
+_OUT_COLUMNS = ("length", "curve_length", "max_deviation", "verdict", "status")
+
+
+def _verdict(name):
+    """The core's code of a verdict (crspline/geo/smooth.hpp's enum)."""
+    from .. import _crspline
+
+    return _crspline._geo_verdicts.index(name)
 _POS_BITS = 40  # a vertex's place in layer order: partition << 40 | index in the partition
 
 
@@ -115,7 +122,8 @@ def _clean(a, info, index, buckets, preserve):
         prep.z = np.zeros((len(prep.xy), 1))
     frame = info["frame"]
     frame_xy = frame.forward(prep.lonlat)
-    c = _crspline._geo_clean(frame_xy, prep.offsets, prep.kinds, prep.features, prep.layer.feature_count)
+    c = _crspline._geo_clean(frame_xy, prep.offsets, prep.kinds, prep.features, prep.layer.feature_count,
+                             part_roles=prep.roles)
     verts = c["vertices"]
     pts = frame_xy[verts]
     scale = float(np.max(np.abs(pts))) if len(pts) else 0.0
@@ -424,7 +432,8 @@ def _smooth_groups(options, frame_domain, slack, groups, partitions, *pieces):
                 for v in (arc["xy"][0], arc["xy"][-1]):
                     touches = touches or len(at_end[_vertex_keys(v.reshape(1, 2)).tobytes()]) > 1
             crossing = int(r["crossing"][i])
-            verdict = 2 if crossing == 2 else (1 if touches or crossing == 1 else 0)
+            verdict = _verdict("crosses") if crossing == 2 else (
+                _verdict("touches") if touches or crossing == 1 else _verdict("simple"))
             a, b = lo[i], lo[i + 1]
             result = {"xy": r["xy"][a:b], "vseg": r["vseg"][a:b], "vu": r["vu"][a:b],
                       "length": float(r["length"][i]), "max_deviation": float(r["max_deviation"][i]),
@@ -484,19 +493,27 @@ def _assemble_parts(b, arc_of, part_arcs):
         out_xy.append(part)
         out_z.append(zpart)
         offsets.append(offsets[-1] + len(part))
+    # Invalid nesting of the input's rings (found by _geo_clean, as
+    # geo::smooth finds it): the verdict says it, the message which parts.
+    message = list(c["message"])
+    for f, words in enumerate(c["nesting"]):
+        if words:
+            verdict[f] = max(verdict[f], _verdict("nested"))
+            message[f] = words
     return {"xy": np.concatenate(out_xy) if out_xy else np.zeros((0, 2)),
             "extra": np.concatenate(out_z) if out_z else np.zeros((0, E)),
             "part_offsets": np.asarray(offsets, dtype=np.int64), "status": c["status"],
-            "message": c["message"], "verdict": verdict, "length": length, "max_deviation": dev}
+            "message": message, "verdict": verdict, "length": length, "max_deviation": dev}
 
 
 def _finish_partition(df, b, info, geometry, r):
     from . import _finish
 
-    new, length, dev, verdict, status, _ = _finish(b["prep"], info["frame"], b["frame_xy"], r)
+    new, length, dev, verdict, status, _, curve_length = _finish(b["prep"], info["frame"], b["frame_xy"], r)
     out = df.copy()
     out[geometry] = [None if g is None else g.wkb for g in new]
     out["length"] = length
+    out["curve_length"] = curve_length
     out["max_deviation"] = dev
     out["verdict"] = verdict
     out["status"] = status
@@ -603,7 +620,7 @@ def smooth(ddf, *, crs, geometry="geometry", alpha=0.5, tolerance=None, max_devi
     st = _stages(ddf, crs=crs, geometry=geometry, alpha=alpha, tolerance=tolerance, max_deviation=max_deviation,
                  topology=topology, buckets=buckets)
     meta = ddf._meta.copy()
-    for c, dtype in zip(_OUT_COLUMNS, ("f8", "f8", "object", "object")):
+    for c, dtype in zip(_OUT_COLUMNS, ("f8", "f8", "f8", "object", "object")):
         meta[c] = pd.Series([], dtype=dtype)
     return dd.from_delayed(st["outs"], meta=meta, divisions=ddf.divisions)
 
