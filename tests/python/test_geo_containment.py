@@ -265,3 +265,27 @@ def test_nybb_relations_and_validity():
     for g0, g1 in zip(before, after):
         c, _ = changed_relations(parts(g0), parts(g1))
         assert not c, c[:5]
+
+
+@pytest.mark.parametrize("kw", [{}, {"max_deviation": 0.05}], ids=["plain", "max_deviation"])
+def test_contour_rings_keep_their_nesting(seed, kw):
+    """The contour corpus of test_geo.py, its closed contours as polygons:
+    rings nested close to each other where the field is steep. Every pair
+    keeps its relation (contains / within / disjoint), every output valid."""
+    from test_geo import random_field_contours
+
+    compared = 0
+    for k in range(12):  # fields until 20 pairs of nearby rings are compared
+        if compared >= 20:
+            break
+        lines = random_field_contours(seed + k, levels=16)
+        rings = [Polygon(g.coords) for g in lines if g.is_ring and len(g.coords) >= 4]
+        rings = [r for r in rings if r.is_valid]
+        if len(rings) < 2:
+            continue
+        out = cg.smooth(gpd.GeoDataFrame(geometry=rings, crs="EPSG:3857"), tolerance=1e-3, **kw)
+        assert out.is_valid.all(), (seed + k, list(out.status))
+        changed, n = changed_relations(rings, list(out.geometry))
+        assert not changed, (seed + k, changed[:5])
+        compared += n
+    assert compared >= 20, compared
