@@ -15,7 +15,7 @@ opt=(-O2)
 if [[ "${1:-}" == "--debug" ]]; then opt=(-O0 -g -sASSERTIONS=2); fi
 em++ -std=c++20 "${opt[@]}" -fexceptions -Wall -Wextra \
     -I"$root/include" \
-    "$here/src/bindings.cpp" "$here/src/bind_rotation.cpp" \
+    "$here"/src/*.cpp \
     -lembind \
     -fexceptions \
     -sMODULARIZE -sEXPORT_ES6 -sEXPORT_NAME=CrSpline -sENVIRONMENT=web,worker \
