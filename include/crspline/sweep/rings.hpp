@@ -174,29 +174,41 @@ inline void write_mesh(const ring_frames& f, const std::vector<ring_site>& sites
     normals.resize(3 * n * m);
     uvs.resize(2 * n * m);
     for (std::size_t k = 0; k < n; ++k) {
-        const v3 &x = f.x[k], &nn = f.normal[k], &bb = f.binormal[k], &w = f.omega[k];
+        const v3 &x = f.x[k], &nn = f.normal[k], &bb = f.binormal[k], &w = f.omega[k], &e = f.tangent[k];
         const double r = f.scale[k], r1 = f.scale_t[k];
         const double v = length > 0 ? sites[k].s / length : 0.0;
+        // The normal S_phi x S_t, S_phi = r F d, S_t = x' + r' F p + r omega x F p,
+        // is bilinear in the profile's point p and direction d: six cross
+        // products a ring, then a sum a vertex.
+        const v3 a = f.dx[k], u = r1 * nn + r * cross(w, nn), b2 = r1 * bb + r * cross(w, bb);
+        const v3 na = cross(nn, a), nu = cross(nn, u), nv2 = cross(nn, b2);
+        const v3 ba = cross(bb, a), bu = cross(bb, u), bv = cross(bb, b2);
+        const v3 ne = cross(nn, e), be = cross(bb, e);
         double* pos = positions.data() + 3 * k * m;
         double* nor = normals.data() + 3 * k * m;
         double* uv = uvs.data() + 2 * k * m;
         for (std::size_t j = 0; j < m; ++j) {
-            const vec<2>& p = prof.points[j];
-            const vec<2>& d = prof.directions[j];
-            const v3 fp = p[0] * nn + p[1] * bb;
-            const v3 fd = d[0] * nn + d[1] * bb;
-            const v3 q = x + r * fp;
-            // S_phi x S_t with S_t = x' + r' F p + r omega x F p.
-            const v3 st = f.dx[k] + r1 * fp + r * cross(w, fp);
-            v3 nv = cross(fd, st);
-            double l = norm(nv);
-            const v3 outward = cross(fd, f.tangent[k]);
+            const double p0 = prof.points[j][0], p1 = prof.points[j][1];
+            const double d0 = prof.directions[j][0], d1 = prof.directions[j][1];
+            double h[3], o[3], l2 = 0, side = 0;
+            for (int i = 0; i < 3; ++i) {
+                pos[3 * j + i] = x[i] + r * (p0 * nn[i] + p1 * bb[i]);
+                h[i] = d0 * (na[i] + p0 * nu[i] + p1 * nv2[i]) + d1 * (ba[i] + p0 * bu[i] + p1 * bv[i]);
+                o[i] = d0 * ne[i] + d1 * be[i];
+                l2 += h[i] * h[i];
+                side += h[i] * o[i];
+            }
             // Where the tube folds (radius past the radius of curvature) S_t
-            // turns back; the normal keeps the side the profile faces.
-            if (dot(nv, outward) < 0) nv = -1.0 * nv;
-            if (!(l > 0)) nv = outward, l = norm(nv);
-            nv = l > 0 ? nv / l : nv;
-            for (int i = 0; i < 3; ++i) pos[3 * j + i] = q[i], nor[3 * j + i] = nv[i];
+            // turns back; the normal keeps the side the profile faces. A
+            // vanishing normal (a cusp) takes the profile's own.
+            double scale_n = side < 0 ? -1.0 : 1.0;
+            if (!(l2 > 0) || !std::isfinite(l2)) {
+                l2 = o[0] * o[0] + o[1] * o[1] + o[2] * o[2];
+                for (int i = 0; i < 3; ++i) h[i] = o[i];
+                scale_n = 1;
+            }
+            scale_n /= l2 > 0 ? std::sqrt(l2) : 1.0;
+            for (int i = 0; i < 3; ++i) nor[3 * j + i] = scale_n * h[i];
             uv[2 * j] = prof.u[j];
             uv[2 * j + 1] = v;
         }
@@ -215,13 +227,14 @@ inline void write_mesh(const ring_frames& f, const std::vector<ring_site>& sites
         std::copy_n(positions.begin(), 3 * m, positions.begin() + 3 * (n - 1) * m);
         std::copy_n(normals.begin(), 3 * m, normals.begin() + 3 * (n - 1) * m);
     }
-    indices.clear();
-    indices.reserve(n > 0 && m > 0 ? 6 * (n - 1) * (m - 1) : 0);
+    indices.resize(n > 0 && m > 0 ? 6 * (n - 1) * (m - 1) : 0);
+    std::uint32_t* out = indices.data();
     for (std::size_t k = 0; k + 1 < n; ++k)
         for (std::size_t j = 0; j + 1 < m; ++j) {
-            const auto a = std::uint32_t(k * m + j), b = std::uint32_t(k * m + j + 1);
-            const auto c = std::uint32_t((k + 1) * m + j), d = std::uint32_t((k + 1) * m + j + 1);
-            indices.insert(indices.end(), {a, b, c, b, d, c});
+            const auto a = std::uint32_t(k * m + j), b = a + 1;
+            const auto c = std::uint32_t((k + 1) * m + j), d = c + 1;
+            out[0] = a, out[1] = b, out[2] = c, out[3] = b, out[4] = d, out[5] = c;
+            out += 6;
         }
 }
 
