@@ -56,6 +56,7 @@ totals run(const std::vector<fit_corpus::line>& lines, crspline::fit_mode mode) 
 }  // namespace
 
 int main(int argc, char** argv) {
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);  // each line as it is measured
     std::string dir = CRSPLINE_FIT_CORPUS_DIR;
     std::size_t max_n = 1000000, free_max = 100000;
     for (int i = 1; i + 1 < argc; i += 2) {

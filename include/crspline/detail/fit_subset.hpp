@@ -178,55 +178,73 @@ public:
 
     /// Local improvement of a choice: each point removed where the curve
     /// keeps the tolerance without it, and each pair of neighbouring points
-    /// replaced by one between them where some such point keeps it (every
-    /// segment whose four points change proved with its real neighbours).
-    /// The ends of an open line stay; a closed curve's point 0 too.
+    /// replaced by one between their neighbours where some such point keeps
+    /// it (every segment whose four points change tried with its real
+    /// neighbours). The ends of an open line stay; a closed curve's point 0
+    /// too. Each try looks at a window of eight points around the change, so
+    /// a pass costs time linear in the points.
     void improve(std::vector<std::size_t>& idx) const {
-        auto id_at = [&](const std::vector<std::size_t>& v, std::ptrdiff_t k) -> std::size_t {
-            const std::ptrdiff_t m = std::ptrdiff_t(v.size());
-            if (pb_.closed) {
-                // Unrolled: v.back() is point 0 again, one turn later.
-                if (k < 0) return v[std::size_t(k + m - 1)] - pb_.size();
-                if (k >= m) return v[std::size_t(k - m + 1)] + pb_.size();
-                return v[std::size_t(k)];
+        using sidx = std::ptrdiff_t;
+        const sidx n = sidx(pb_.size()), none = std::numeric_limits<sidx>::min();
+        // The points kept so far (`left`, the current point's predecessors)
+        // and those still to look at (idx[pos ..], the current one first);
+        // a removal or a merge only moves pos, so a pass is linear.
+        std::vector<std::size_t> left;
+        left.reserve(idx.size());
+        left.push_back(idx[0]);
+        std::size_t pos = 1;
+        // The point q places after the current one (q < 0: before it),
+        // unrolled past either end of a closed curve (whose last entry is
+        // point 0 one turn later); `none` past an open end.
+        auto at = [&](sidx q) -> sidx {
+            const sidx nl = sidx(left.size()), nr = sidx(idx.size() - pos), total = nl + nr;
+            sidx k = nl + q;  // position in left ++ idx[pos ..]
+            sidx shift = 0;
+            if (k < 0 || k >= total) {
+                if (!pb_.closed) return none;
+                // One turn: entry total - 1 is entry 0 again.
+                if (k < 0) k += total - 1, shift = -n;
+                else k -= total - 1, shift = n;
             }
-            return k < 0 || k >= m ? fit_none : v[std::size_t(k)];
+            const std::size_t v = k < nl ? left[std::size_t(k)] : idx[pos + std::size_t(k - nl)];
+            return sidx(v) + shift;
         };
-        auto wrap = [&](std::size_t i) -> std::size_t {
-            if (i == fit_none) return i;
-            return i % pb_.size();
+        auto wrap = [&](sidx i) { return i == none ? fit_none : std::size_t(((i % n) + n) % n); };
+        // Segment w[s] -> w[s + 1] of a window with its neighbours.
+        auto seg_ok = [&](const std::array<sidx, 8>& w, std::size_t len, std::size_t s) {
+            if (w[s] == none || w[s + 1] == none) return true;
+            sidx a = w[s], b = w[s + 1];
+            const sidx shift = a < 0 ? n : a >= n ? -n : 0;
+            a += shift, b += shift;
+            const std::size_t z = s > 0 ? wrap(w[s - 1]) : fit_none;
+            const std::size_t c = s + 2 < len ? wrap(w[s + 2]) : fit_none;
+            return passes(z, std::size_t(a), std::size_t(b), c);
         };
-        // Segment s of v (from v[s] to v[s + 1]) with its real neighbours.
-        auto seg_ok = [&](const std::vector<std::size_t>& v, std::ptrdiff_t s) {
-            if (s < 0 || s + 1 >= std::ptrdiff_t(v.size())) return true;
-            const std::size_t z = id_at(v, s - 1), c = id_at(v, s + 2);
-            return passes(pb_.closed ? wrap(z) : z, v[std::size_t(s)], v[std::size_t(s + 1)], pb_.closed ? wrap(c) : c);
-        };
-        std::vector<std::size_t> trial;
-        for (std::size_t v = 1; v + 1 < idx.size();) {
-            // Remove v: segments v-2 .. v (after removal: v-2, v-1, v).
-            trial = idx;
-            trial.erase(trial.begin() + std::ptrdiff_t(v));
-            const std::ptrdiff_t sv = std::ptrdiff_t(v);
-            if (seg_ok(trial, sv - 1) && seg_ok(trial, sv - 2) && seg_ok(trial, sv)) {
-                idx.swap(trial);
+        while (pos + 1 < idx.size()) {
+            std::array<sidx, 8> w{};
+            for (sidx q = 0; q < 8; ++q) w[std::size_t(q)] = at(q - 3);
+            // Remove the current point: segments -2 -> -1, -1 -> +1, +1 -> +2.
+            const std::array<sidx, 8> r{w[0], w[1], w[2], w[4], w[5], w[6], w[7], none};
+            if (seg_ok(r, 7, 2) && seg_ok(r, 7, 1) && seg_ok(r, 7, 3)) {
+                ++pos;
                 continue;
             }
-            // Replace v and v + 1 by one point k between their neighbours.
+            // Replace it and the next one by one point k between their neighbours.
             bool merged = false;
-            if (v + 2 < idx.size()) {
-                for (std::size_t k = idx[v + 2] - 1; k > idx[v - 1] && !merged; --k) {
-                    trial = idx;
-                    trial.erase(trial.begin() + std::ptrdiff_t(v) + 1);
-                    trial[v] = k;
-                    if (seg_ok(trial, sv - 1) && seg_ok(trial, sv) && seg_ok(trial, sv - 2) && seg_ok(trial, sv + 1)) {
-                        idx.swap(trial);
+            if (pos + 2 < idx.size()) {
+                for (sidx k = w[5] - 1; k > w[2] && !merged; --k) {
+                    const std::array<sidx, 8> t{w[0], w[1], w[2], k, w[5], w[6], w[7], none};
+                    if (seg_ok(t, 7, 2) && seg_ok(t, 7, 3) && seg_ok(t, 7, 1) && seg_ok(t, 7, 4)) {
+                        idx[pos + 1] = std::size_t(k);  // the merged point, looked at next
+                        ++pos;
                         merged = true;
                     }
                 }
             }
-            if (!merged) ++v;
+            if (!merged) left.push_back(idx[pos++]);
         }
+        left.push_back(idx.back());
+        idx = std::move(left);
     }
 
 private:
