@@ -224,9 +224,130 @@ export function decideSet(curves: CatmullRom[], options?: DecisionOptions & { se
 export function clearance(curve: CatmullRom, accuracy?: number): Clearance;
 export function clearance(a: CatmullRom, b: CatmullRom, accuracy?: number): Clearance;
 
-// --- rotations (quaternions [w, x, y, z], crspline's order) ---------------
+// --- fit (issue 40), sweeps and strokes (issue 41) -------------------------
+
+export interface FitOptions {
+  /** Distance allowed both ways, in the points' units (> 0, above the coordinates' rounding floor). */
+  tolerance: number;
+  /** 'subset' (default): the control points are input points; 'free': they may move (noisy data). */
+  mode?: 'subset' | 'free';
+  /** Knot exponent in [0, 1] (default 0.5, centripetal). */
+  alpha?: number;
+  /** The points are a ring (the first point not repeated). */
+  closed?: boolean;
+  /** The curve's own tension in [0, 1]; the fit raises it per vertex where needed. */
+  tension?: number;
+  start?: 'natural' | 'reflect';
+  end?: 'natural' | 'reflect';
+  /** The dimension of flat coordinates. */
+  dimension?: number;
+}
+
+export interface FitResult {
+  /** The fitted curve (Kochanek-Bartels tension per vertex where the fit raised it). */
+  curve: CatmullRom;
+  /** The proved bound (<= tolerance) on the distance both ways. */
+  deviation: number;
+  curveToInput: number;
+  inputToCurve: number;
+  /** Subset mode: the input index of each control point; null in free mode. */
+  indices: Float64Array | null;
+  /** Number of control points. */
+  count: number;
+  /** Vertices whose tension the fit raised. */
+  tensioned: number;
+  /** The input's rounding floor (tolerances at or below it are refused). */
+  roundingFloor: number;
+}
+
+export function fit(points: ArrayLike<PointLike> | ArrayLike<number>, options: FitOptions): FitResult;
+
+/** A cross-section: a polyline ([[x, y], ...]) or {points, closed, curve: true for a Catmull-Rom profile, alpha}. */
+export type SweepProfile = ArrayLike<ArrayLike<number>> | {
+  points: ArrayLike<ArrayLike<number>> | ArrayLike<number>;
+  closed?: boolean;
+  curve?: boolean;
+  alpha?: number;
+};
+
+export interface SweepOptions {
+  /** A circle of this radius (default 1) when no profile is given. */
+  radius?: number;
+  profile?: SweepProfile;
+  /** Roll angles (radians) about the tangent: one per knot, or at rollS arc lengths. */
+  roll?: ArrayLike<number>;
+  rollAt?: 'knots' | 'arcLength';
+  rollS?: ArrayLike<number>;
+  /** Scale of the profile at the arc lengths scaleS (interpolated smoothly). */
+  scale?: ArrayLike<number>;
+  scaleS?: ArrayLike<number>;
+  /** The normal follows this vector's projection (frames never flip through vertical). */
+  up?: ArrayLike<number> | { x: number; y: number; z: number };
+  /** Distance of the mesh to the true surface (0: the default); not with given counts. */
+  tolerance?: number;
+  tubularSegments?: number;
+  radialSegments?: number;
+  /** false: a closed curve's frame is not closed up (the seam, for comparison). Default true. */
+  spreadHolonomy?: boolean;
+  /** Measure the centre line's clearance for the report (default true). */
+  clearance?: boolean;
+}
+
+export interface SweepReport {
+  tolerance: number;
+  bound: number;
+  toleranceMet: boolean;
+  proved: boolean;
+  holonomy: number;
+  length: number;
+  largestRadius: number;
+  clearance: number;
+  minRadiusOfCurvature: number;
+  farContact: boolean;
+  localFold: boolean;
+  selfIntersects: boolean;
+  seamGap: number;
+  seamNormalGap: number;
+}
+
+export interface SweepMesh {
+  /** 3 per vertex; vertex ring * ringSize + j. */
+  positions: Float32Array;
+  normals: Float32Array;
+  /** 2 per vertex: u around the profile, v = s / length along the curve. */
+  uvs: Float32Array;
+  /** 3 per triangle. */
+  indices: Uint32Array;
+  rings: number;
+  ringSize: number;
+  /** The curve parameter and arc length of each ring. */
+  t: Float64Array;
+  s: Float64Array;
+  report: SweepReport;
+}
+
+export function sweep(curve: CatmullRom, options?: SweepOptions): SweepMesh;
+
+export interface StrokeOptions {
+  join?: 'round' | 'miter' | 'bevel';
+  cap?: 'butt' | 'round' | 'square';
+  miterLimit?: number;
+  tolerance?: number;
+}
+
+export interface Stroke {
+  /** Each polygon: its exterior ring, then its holes; a ring is flat [x0, y0, x1, y1, ...]. */
+  polygons: Float64Array[][];
+  tolerance: number;
+  tessellationVertices: number;
+}
+
+export function stroke(curve: CatmullRom, width: number, options?: StrokeOptions): Stroke;
+
 
 /** A unit quaternion [w, x, y, z]. */
+// --- rotations (quaternions [w, x, y, z], crspline's order) ---------------
+
 export type QuaternionWXYZ = ArrayLike<number>;
 export type RotationFrame = 'world' | 'body';
 export type RotationKind = 'catmull_rom' | 'kochanek_bartels' | 'piecewise_slerp' | 'barry_goldman' | 'squad';
@@ -337,6 +458,9 @@ export interface Crspline {
   decidePair: typeof decidePair;
   decideSet: typeof decideSet;
   clearance: typeof clearance;
+  fit: typeof fit;
+  sweep: typeof sweep;
+  stroke: typeof stroke;
   quaternionSpline: typeof quaternionSpline;
   rotationSpline: typeof rotationSpline;
   poseCurve: typeof poseCurve;

@@ -305,6 +305,84 @@ export function clearance(a, b, accuracy) {
 }
 
 // ---------------------------------------------------------------------------
+// Fit (issue 40), sweeps and strokes (issue 41): the core's fit.hpp,
+// sweep.hpp and stroke.hpp (web/src/bind_fit.cpp, bind_sweep.cpp).
+// ---------------------------------------------------------------------------
+
+/// The fewest control points whose curve stays within options.tolerance of
+/// the points, both ways (proved): {curve, deviation, curveToInput,
+/// inputToCurve, indices (subset mode; null in free mode), count, tensioned,
+/// roundingFloor}. options: tolerance (required), mode ('subset' | 'free'),
+/// alpha (0.5), closed, tension, start / end ('natural' | 'reflect'),
+/// dimension (with flat coordinates).
+export function fit(points, options = {}) {
+  const M = module();
+  if (options === null || typeof options !== 'object') throw inputError('options must be an object', 'options');
+  const { dimension, ...rest } = options;
+  const [flat, dim] = flatten(points, dimension);
+  const r = M.fitPoints(flat, dim, rest);
+  // The core's curve, built again from the same points and options.
+  const kb = r.kbTension ? { tension: r.kbTension } : undefined;
+  const ends = r.closed ? {} : { start: rest.start ?? 'natural', end: rest.end ?? 'natural' };
+  r.curve = catmullRom(r.points, { dimension: dim, alpha: r.alpha, closed: r.closed, tension: r.tension, kb, ...ends });
+  for (const k of ['points', 'dimension', 'kbTension', 'alpha', 'closed', 'tension']) delete r[k];
+  return r;
+}
+
+const curveData = (curve) => {
+  const c = rawSpline(curve) && curve;
+  return [c.points, c.grid, c.bezier(), c.closed, c.dimension];
+};
+const SWEEP_OPTIONS = new Set(['radius', 'profile', 'roll', 'rollAt', 'rollS', 'scale', 'scaleS', 'up', 'tolerance',
+  'tubularSegments', 'radialSegments', 'spreadHolonomy', 'clearance']);
+
+/// A profile carried along a 3-D curve by a rotation-minimizing frame (a
+/// closed curve's twist spread: no seam): {positions, normals, uvs
+/// (Float32Array: 3, 3, 2 per vertex, vertex ring * ringSize + j), indices
+/// (Uint32Array, 3 per triangle), rings, ringSize, t, s, report}. options:
+/// radius (a circle) or profile ([[x, y], ...] polyline, or {points, closed,
+/// curve: true, alpha} a Catmull-Rom profile), roll (radians per knot, or at
+/// rollS arc lengths with rollAt 'arcLength'), scale at scaleS, up [x, y, z],
+/// tolerance (0: the default) or tubularSegments / radialSegments,
+/// spreadHolonomy (false: the seam, for comparison), clearance (report).
+export function sweep(curve, options = {}) {
+  const M = module();
+  if (options === null || typeof options !== 'object') throw inputError('options must be an object', 'options');
+  for (const key of Object.keys(options))
+    if (!SWEEP_OPTIONS.has(key) && options[key] !== undefined)
+      throw inputError(`unknown option '${key}' (options are ${[...SWEEP_OPTIONS].join(', ')})`, key);
+  const { profile, up, ...o } = options;
+  if (up !== undefined && up !== null) o.up = 'x' in up ? [up.x, up.y, up.z] : up;
+  if (profile !== undefined && profile !== null) {
+    const p = typeof profile.length === 'number' ? { points: profile } : profile;
+    if (!p.points || typeof p.points.length !== 'number')
+      throw inputError('profile must be [[x, y], ...] or {points, closed, curve, alpha}', 'profile');
+    o.profileKind = p.curve ? 'curve' : 'polyline';
+    o.profilePoints = typeof p.points[0] === 'number' ? p.points : flatten(p.points)[0];
+    o.profileClosed = p.closed ?? !!p.curve;
+    if (p.alpha !== undefined) o.profileAlpha = p.alpha;
+  }
+  return M.sweepCurve(...curveData(curve), o);
+}
+
+const STROKE_OPTIONS = new Set(['join', 'cap', 'miterLimit', 'tolerance']);
+
+/// The outline of a 2-D curve stroked at `width`, as simple polygons (the
+/// union where the stroke overlaps itself): {polygons: [[exterior, ...holes]]
+/// with each ring a flat Float64Array [x0, y0, x1, y1, ...], tolerance,
+/// tessellationVertices}. options: join ('round' | 'miter' | 'bevel'), cap
+/// ('butt' | 'round' | 'square'), miterLimit (4), tolerance (0: the default).
+export function stroke(curve, width, options = {}) {
+  const M = module();
+  if (options === null || typeof options !== 'object') throw inputError('options must be an object', 'options');
+  for (const key of Object.keys(options))
+    if (!STROKE_OPTIONS.has(key) && options[key] !== undefined)
+      throw inputError(`unknown option '${key}' (options are ${[...STROKE_OPTIONS].join(', ')})`, key);
+  if (typeof width !== 'number') throw inputError(`width: must be a number, got ${typeof width}`, 'width');
+  return M.strokeCurve(...curveData(curve), width, options);
+}
+
+// ---------------------------------------------------------------------------
 // Rotations (issue 28): quaternions are [w, x, y, z] here, the core's order
 // (crspline/three converts to and from three.js' [x, y, z, w]).
 // ---------------------------------------------------------------------------
@@ -447,5 +525,6 @@ export function fromXYZW(q, out = new Float64Array(4)) {
 }
 
 const api = { init, isReady, version, wasmMemoryBytes, catmullRom, CatmullRom, decide, decidePair, decideSet, clearance,
+  fit, sweep, stroke,
   quaternionSpline, rotationSpline, poseCurve, RotationCurve, PoseCurve, toXYZW, fromXYZW };
 export default api;

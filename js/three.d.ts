@@ -1,6 +1,6 @@
 // Type declarations for crspline/three (three.js).
-import { Curve, Object3D, Quaternion, Vector3 } from 'three';
-import type { PoseCurve, PoseCurveOptions, QuaternionSplineOptions, RotationCurve, RotationFrame, RotationSplineOptions } from './index.js';
+import { BufferGeometry, Curve, Object3D, Quaternion, Vector3 } from 'three';
+import type { SweepReport, PoseCurve, PoseCurveOptions, QuaternionSplineOptions, RotationCurve, RotationFrame, RotationSplineOptions } from './index.js';
 
 export type CurveType = 'centripetal' | 'chordal' | 'catmullrom';
 
@@ -63,4 +63,45 @@ export class CRSplinePoseCurve extends Curve<Vector3> {
   applyTo<T extends Object3D>(object: T, u: number): T;
   constantSpeedU(n: number, positionWeight?: number, angleWeight?: number): number[];
   dispose(): void;
+}
+
+/** What CRSplineTubeGeometry takes beyond TubeGeometry's arguments (crspline's sweep options). */
+export interface CRSplineTubeOptions {
+  /** The radius's scale at the arc lengths scaleS (interpolated smoothly): a varying radius. */
+  scale?: ArrayLike<number>;
+  scaleS?: ArrayLike<number>;
+  /** Roll angles (radians) about the tangent, per knot of a CRSplineCurve3 path or at rollS arc lengths. */
+  roll?: ArrayLike<number>;
+  rollAt?: 'knots' | 'arcLength';
+  rollS?: ArrayLike<number>;
+  /** The normal follows this vector's projection. */
+  up?: ArrayLike<number> | { x: number; y: number; z: number };
+  /** false: a closed path's frame twist is not spread (three.js' seam, for comparison). */
+  spreadHolonomy?: boolean;
+}
+
+/**
+ * A drop-in for THREE.TubeGeometry(path, tubularSegments, radius, radialSegments, closed): the same
+ * attributes (position, normal, uv, index) and layout, computed by crspline's sweep: rotation-minimizing
+ * frames, no seam on a closed path, no flips; optional varying radius, roll and up vector.
+ */
+export class CRSplineTubeGeometry extends BufferGeometry {
+  constructor(path?: Curve<Vector3>, tubularSegments?: number, radius?: number, radialSegments?: number, closed?: boolean,
+    options?: CRSplineTubeOptions);
+  readonly isCRSplineTubeGeometry: true;
+  parameters: {
+    path: Curve<Vector3>;
+    tubularSegments: number;
+    radius: number;
+    radialSegments: number;
+    closed: boolean;
+    options: CRSplineTubeOptions;
+  };
+  tangents: Vector3[];
+  normals: Vector3[];
+  binormals: Vector3[];
+  /** The sweep's report: bound, holonomy, seamGap, selfIntersects, ... */
+  report: SweepReport;
+  copy(source: CRSplineTubeGeometry): this;
+  static fromJSON(data: any): CRSplineTubeGeometry;
 }

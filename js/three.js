@@ -23,8 +23,9 @@
 // The curve is rebuilt when `points` is a new array or changes length; after
 // moving points in place, call updateArcLengths() (as three.js asks for
 // getPointAt). dispose() frees the WASM memory now.
-import { Curve, Quaternion, Vector3 } from 'three';
-import { catmullRom, poseCurve, quaternionSpline, rotationSpline } from './index.js';
+import { BufferGeometry, CatmullRomCurve3, CubicBezierCurve3, Curve, Float32BufferAttribute, LineCurve3, QuadraticBezierCurve3,
+  Quaternion, Uint32BufferAttribute, Vector3 } from 'three';
+import { catmullRom, poseCurve, quaternionSpline, rotationSpline, sweep } from './index.js';
 
 const ALPHA = { centripetal: 0.5, chordal: 1, catmullrom: 0 };
 
@@ -292,4 +293,103 @@ export class CRSplinePoseCurve extends Curve {
     return Array.from(t, (x) => (x - this._t0) / this._span);
   }
   dispose() { this.pose.dispose(); }
+}
+
+// ---------------------------------------------------------------------------
+// Tubes (issue 41): CRSplineTubeGeometry, a drop-in for THREE.TubeGeometry
+// (path, tubularSegments, radius, radialSegments, closed) computed by
+// crspline's sweep: the same attribute layout (tubularSegments + 1 rings of
+// radialSegments + 1 vertices, rings at equal arc length as getPointAt
+// places them, uv = (along, around) as three.js has them, the same quads
+// split on the same diagonal), with a rotation-minimizing frame whose twist
+// on a closed path is spread evenly (no seam: the last ring is the first,
+// positions, normals and u), no frame flips, and options three.js lacks:
+// a varying radius (scale keys at arc lengths), roll keys and an up vector.
+// ---------------------------------------------------------------------------
+
+const PATH_TYPES = { CRSplineCurve3, CatmullRomCurve3, CubicBezierCurve3, LineCurve3, QuadraticBezierCurve3 };
+const TUBE_OPTIONS = ['scale', 'scaleS', 'roll', 'rollAt', 'rollS', 'up', 'spreadHolonomy'];
+
+// The crspline curve to sweep: a CRSplineCurve3's own (when its closedness
+// is the tube's), else the centripetal curve through the points three.js
+// puts its rings on (getSpacedPoints; closed: the last one is the first).
+function sweepCurveOf(path, tubularSegments, closed) {
+  if (path.isCRSplineCurve3 && Boolean(path.closed) === closed && path.points.length >= 2)
+    return { curve: path._data().curve, owned: false };
+  const pts = path.getSpacedPoints(Math.max(tubularSegments, 2));
+  if (closed) pts.pop();
+  const kept = pts.filter((p, i) => i === 0 || !p.equals(pts[i - 1]));
+  const flat = new Float64Array(3 * kept.length);
+  kept.forEach((p, i) => { flat[3 * i] = p.x; flat[3 * i + 1] = p.y; flat[3 * i + 2] = p.z; });
+  return { curve: catmullRom(flat, { dimension: 3, closed }), owned: true };
+}
+
+export class CRSplineTubeGeometry extends BufferGeometry {
+  constructor(path = new QuadraticBezierCurve3(new Vector3(-1, -1, 0), new Vector3(-1, 1, 0), new Vector3(1, 1, 0)),
+    tubularSegments = 64, radius = 1, radialSegments = 8, closed = false, options = {}) {
+    super();
+    this.isCRSplineTubeGeometry = true;
+    this.type = 'CRSplineTubeGeometry';
+    this.parameters = { path, tubularSegments, radius, radialSegments, closed, options };
+    for (const key of Object.keys(options))
+      if (!TUBE_OPTIONS.includes(key))
+        throw Object.assign(new Error(`unknown option '${key}' (options are ${TUBE_OPTIONS.join(', ')})`),
+          { field: key, index: null, component: null, value: '' });
+    const { curve, owned } = sweepCurveOf(path, tubularSegments, Boolean(closed));
+    let mesh;
+    try {
+      mesh = sweep(curve, { radius, tubularSegments, radialSegments, clearance: false, ...options });
+      // The frames three.js exposes: the tangent, and the normal as the
+      // direction of each ring's first vertex (the profile's angle 0).
+      this.tangents = [];
+      this.normals = [];
+      this.binormals = [];
+      const m = mesh.ringSize, pos = mesh.positions;
+      for (let k = 0; k < mesh.rings; ++k) {
+        const x = curve.evaluate(mesh.t[k]), d = curve.evaluate(mesh.t[k], 1);
+        const T = new Vector3(d[0], d[1], d[2]).normalize();
+        const N = new Vector3(pos[3 * k * m] - x[0], pos[3 * k * m + 1] - x[1], pos[3 * k * m + 2] - x[2]);
+        N.sub(T.clone().multiplyScalar(N.dot(T))).normalize();
+        this.tangents.push(T);
+        this.normals.push(N);
+        this.binormals.push(new Vector3().crossVectors(T, N));
+      }
+    } finally {
+      if (owned) curve.dispose();
+    }
+    // uv: three.js has (along, around); the core (around, along).
+    const uv = new Float32Array(mesh.uvs.length);
+    for (let i = 0; i < uv.length; i += 2) {
+      uv[i] = mesh.uvs[i + 1];
+      uv[i + 1] = mesh.uvs[i];
+    }
+    this.setIndex(new Uint32BufferAttribute(mesh.indices, 1));
+    this.setAttribute('position', new Float32BufferAttribute(mesh.positions, 3));
+    this.setAttribute('normal', new Float32BufferAttribute(mesh.normals, 3));
+    this.setAttribute('uv', new Float32BufferAttribute(uv, 2));
+    /// The sweep's report (bound, holonomy, seamGap, selfIntersects, ...).
+    this.report = mesh.report;
+  }
+
+  copy(source) {
+    super.copy(source);
+    this.parameters = Object.assign({}, source.parameters);
+    this.report = source.report;
+    return this;
+  }
+
+  toJSON() {
+    const data = super.toJSON();
+    data.path = this.parameters.path.toJSON();
+    return data;
+  }
+
+  static fromJSON(data) {
+    const Path = PATH_TYPES[data.path.type];
+    if (!Path)
+      throw Object.assign(new Error(`CRSplineTubeGeometry.fromJSON: path type '${data.path.type}' is not one of ${Object.keys(PATH_TYPES).join(', ')}`),
+        { field: 'path', index: null, component: null, value: String(data.path.type) });
+    return new CRSplineTubeGeometry(new Path().fromJSON(data.path), data.tubularSegments, data.radius,
+      data.radialSegments, data.closed, data.options ?? {});
+  }
 }

@@ -65,3 +65,31 @@ async function main(): Promise<number> {
     tube.attributes.position.count + at.x + (asCurve.arcLengthDivisions) + crspline.version().length;
 }
 void main;
+
+// fit, sweep, stroke (issues 40, 41) and CRSplineTubeGeometry.
+import { fit, sweep, stroke, type FitResult, type SweepMesh, type Stroke } from 'crspline';
+import { CRSplineTubeGeometry } from 'crspline/three';
+import { BufferGeometry } from 'three';
+
+async function shapes(): Promise<number> {
+  await init();
+  const r: FitResult = fit([[0, 0], [1, 1], [2, 0]], { tolerance: 0.1, mode: 'free', closed: false });
+  // @ts-expect-error: the fit's tolerance is required
+  fit([[0, 0], [1, 1]], { mode: 'subset' });
+  // @ts-expect-error: modes are 'subset' or 'free'
+  fit([[0, 0], [1, 1]], { tolerance: 1, mode: 'exact' });
+  const c3 = catmullRom([[0, 0, 0], [1, 0, 0], [1, 1, 1]]);
+  const m: SweepMesh = sweep(c3, { radius: 0.1, tubularSegments: 20, radialSegments: 8, up: { x: 0, y: 0, z: 1 } });
+  const pos: Float32Array = m.positions, idx: Uint32Array = m.indices;
+  const s: Stroke = stroke(r.curve, 2, { join: 'miter', cap: 'round', miterLimit: 4 });
+  // @ts-expect-error: joins are 'round', 'miter' or 'bevel'
+  stroke(r.curve, 2, { join: 'sharp' });
+  const tube: BufferGeometry = new CRSplineTubeGeometry(new CRSplineCurve3([new Vector3(), new Vector3(1, 0, 0)]), 20, 0.1, 8, false,
+    { scale: [1, 2], scaleS: [0, 1] });
+  const g = new CRSplineTubeGeometry();
+  // @ts-expect-error: options three.js' TubeGeometry lacks, and no others
+  new CRSplineTubeGeometry(undefined, 20, 0.1, 8, false, { taper: 1 });
+  return r.deviation + (r.indices?.length ?? 0) + pos.length + idx.length + s.polygons.length + m.report.holonomy +
+    tube.attributes.position.count + g.report.length + g.normals.length + CRSplineTubeGeometry.fromJSON(g.toJSON()).parameters.radius;
+}
+void shapes;
