@@ -313,6 +313,8 @@ const TUBE_OPTIONS = ['scale', 'scaleS', 'roll', 'rollAt', 'rollS', 'up', 'sprea
 // The crspline curve to sweep: a CRSplineCurve3's own (when its closedness
 // is the tube's), else the centripetal curve through the points three.js
 // puts its rings on (getSpacedPoints; closed: the last one is the first).
+// A tube is closed when `closed` says so or the path is closed: three.js
+// then places its last ring on the first too, but with an open frame.
 function sweepCurveOf(path, tubularSegments, closed) {
   if (path.isCRSplineCurve3 && Boolean(path.closed) === closed && path.points.length >= 2)
     return { curve: path._data().curve, owned: false };
@@ -335,7 +337,7 @@ export class CRSplineTubeGeometry extends BufferGeometry {
       if (!TUBE_OPTIONS.includes(key))
         throw Object.assign(new Error(`unknown option '${key}' (options are ${TUBE_OPTIONS.join(', ')})`),
           { field: key, index: null, component: null, value: '' });
-    const { curve, owned } = sweepCurveOf(path, tubularSegments, Boolean(closed));
+    const { curve, owned } = sweepCurveOf(path, tubularSegments, Boolean(closed) || path.closed === true);
     let mesh;
     try {
       mesh = sweep(curve, { radius, tubularSegments, radialSegments, clearance: false, ...options });

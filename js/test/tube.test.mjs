@@ -191,7 +191,7 @@ function frameSteps(g) {
   return steps;
 }
 
-test('seam: on a closed knot the last ring is the first (positions, normals, uv.y), the frame closes smoothly; three.js\' does not', () => {
+test('seam: on a closed knot the last ring is the first (positions, normals, uv.y) and the frame closes smoothly, also with closed left false (three.js\' seam)', () => {
   const path = new CRSplineCurve3(trefoil(), true);
   const g = new CRSplineTubeGeometry(path, 200, 0.3, 16, true);
   const pos = g.getAttribute('position').array, nor = g.getAttribute('normal').array, uv = g.getAttribute('uv').array;
@@ -219,6 +219,15 @@ test('seam: on a closed knot the last ring is the first (positions, normals, uv.
   // three.js' TubeGeometry on the same path: its last ring copies the
   // first, but its frame reaches the seam turned away from it (the
   // closing step of its normal, against its steps elsewhere).
+  // With closed left to its default (false) on the closed path, three.js'
+  // last ring sits on the first with another frame (the seam); the adapter
+  // sweeps a closed path closed, whatever the flag.
+  const open3 = new THREE.TubeGeometry(path, 200, 0.3, 16), openOurs = new CRSplineTubeGeometry(path, 200, 0.3, 16);
+  assert.deepEqual(Array.from(openOurs.getAttribute('normal').array.slice(3 * last)), Array.from(nor.slice(0, 3 * m)));
+  const n3 = open3.getAttribute('normal').array;
+  let gap3 = 0;
+  for (let i = 0; i < 3 * m; ++i) gap3 = Math.max(gap3, Math.abs(n3[3 * last + i] - n3[i]));
+  assert.ok(gap3 > 0.5, `three.js' open frame on the closed path: normal gap ${gap3}`);
   const three = new THREE.TubeGeometry(path, 200, 0.3, 16, true);
   const tn = three.normals, jump = tn[199].angleTo(tn[0]), typical = Math.max(...frameSteps(three).slice(0, 198).map((s) => s.normal));
   console.log(`three.js TubeGeometry on the closed trefoil: closing normal step ${jump.toFixed(4)} rad, largest other ${typical.toFixed(4)}; crspline's ${steps[199].normal.toFixed(4)}`);
