@@ -17,6 +17,7 @@
 //   files.mjs        import and export
 //   samples.mjs      the demo and the stress test
 //   console_api.mjs  window.editor, for tests and the console
+//   pencil.mjs       the pencil (freehand strokes become fitted curves) and Fit selection
 //
 // Frame budget. A frame makes one WASM call for the geometry (a new Spline
 // from the points, then bezierAll(): every segment's Bézier points in one
@@ -37,6 +38,7 @@ import './pointer.mjs';
 import './keyboard.mjs';
 import './files.mjs';
 import './console_api.mjs';
+import './pencil.mjs';
 
 connect({ requestFrame, settle, syncControls, syncProjection });
 $('version').textContent = `v${M.version()}`;

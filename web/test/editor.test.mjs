@@ -306,3 +306,125 @@ describe('tablet 1024x768, touch', () => {
     assert.equal(await page.locator('#canvas').evaluate((c) => getComputedStyle(c).touchAction), 'none');
   });
 });
+
+// The pencil (issue 40): a stroke drawn with the mouse (pointer events
+// through playwright) becomes the fitted curve, in one undo step; Fit
+// selection reduces a dense polyline. The fit is measured here, both
+// ways, against the stroke the page recorded (world coordinates).
+describe('pencil and Fit selection (issue 40)', () => {
+  let h, page;
+  before(async () => { h = await open(); page = h.page; });
+  after(async () => { await h.close(); });
+
+  // Both directions in the page: the curve (the editor's document, rebuilt
+  // with its options) sampled 200 times a segment against the input
+  // polyline, and every input point against the curve (nearest).
+  const measure = (input) => page.evaluate((input) => {
+    const e = window.editor, o = e.options;
+    const opt = { alpha: o.alpha, tension: o.tension, closed: o.closed };
+    if (!o.closed) { opt.start = o.start; opt.end = o.end; }
+    if (o.kb) opt.kb = o.kb;
+    const s = new e.module.Spline(Float64Array.from(e.points), 2, opt);
+    const toPolyline = (x, y) => {
+      let best = Infinity;
+      for (let i = 0; i + 3 < input.length; i += 2) {
+        const ax = input[i], ay = input[i + 1], bx = input[i + 2] - ax, by = input[i + 3] - ay;
+        const ab = bx * bx + by * by, u = ab > 0 ? Math.min(1, Math.max(0, ((x - ax) * bx + (y - ay) * by) / ab)) : 0;
+        best = Math.min(best, Math.hypot(ax + u * bx - x, ay + u * by - y));
+      }
+      return best;
+    };
+    let curveToInput = 0, inputToCurve = 0;
+    const t0 = s.tMin(), t1 = s.tMax(), N = 200 * s.segmentCount();
+    for (let k = 0; k <= N; ++k) {
+      const p = s.evaluate(t0 + ((t1 - t0) * k) / N);
+      curveToInput = Math.max(curveToInput, toPolyline(p[0], p[1]));
+    }
+    for (let i = 0; i < input.length; i += 2) inputToCurve = Math.max(inputToCurve, Math.sqrt(s.nearest([input[i], input[i + 1]]).distanceSq));
+    s.delete();
+    return { curveToInput, inputToCurve };
+  }, input);
+
+  test('P, then a freehand stroke: far fewer points than the stroke, within 2 px both ways; one undo step back', async () => {
+    const before = [[0, 0], [120, 40], [200, -30], [310, 60]];
+    await setPoints(page, before);
+    await page.click('#fit');
+    await idle(page);
+    const depth = await page.evaluate(() => window.editor.undoDepth);
+    await page.locator('#canvas').focus();
+    await page.keyboard.press('p');
+    assert.equal(await page.evaluate(() => window.editor.pencil.on), true);
+    assert.equal(await page.locator('#pencil').getAttribute('aria-pressed'), 'true');
+    // A wavy stroke of 301 pointer samples with a seeded 0.4 px jitter.
+    const seed = Number(process.env.CRSPLINE_SEED ?? Math.floor(Math.random() * 2 ** 31));
+    let s = seed >>> 0 || 1;
+    const rnd = () => { s ^= s << 13; s >>>= 0; s ^= s >>> 17; s ^= s << 5; s >>>= 0; return s / 2 ** 32 - 0.5; };
+    const box = await h.canvasBox();
+    const track = Array.from({ length: 301 }, (_, k) => [box.x + 150 + 2.5 * k + 0.8 * rnd(), box.y + 380 + 120 * Math.sin(k / 40) + 0.8 * rnd()]);
+    await page.mouse.move(...track[0]);
+    await page.mouse.down();
+    for (const p of track.slice(1)) await page.mouse.move(...p);
+    await page.mouse.up();
+    await idle(page);
+    const r = await page.evaluate(() => ({ last: window.editor.pencil.last, n: window.editor.points.length / 2, depth: window.editor.undoDepth,
+      scale: window.editor.view.s }));
+    const why = `seed ${seed}: ${JSON.stringify({ ...r, last: { ...r.last, input: undefined } })}`;
+    const inputCount = r.last.input.length / 2;
+    assert.ok(inputCount >= 250, `${why}: the page saw ${inputCount} pointer samples`);
+    assert.equal(r.n, r.last.count, why);
+    assert.ok(r.n >= 2 && r.n <= inputCount / 10, why);  // measured: about 8 to 12 of 301
+    assert.equal(r.depth, depth + 1, why);
+    // The tolerance: 2 screen pixels in world units at this zoom.
+    assert.ok(Math.abs(r.last.tolerance - 2 / r.scale) < 1e-12, why);
+    assert.ok(r.last.deviation <= r.last.tolerance, why);
+    const m = await measure(r.last.input);
+    console.log(`pencil: ${inputCount} pointer samples -> ${r.n} control points; tolerance ${r.last.tolerance}, proved ${r.last.deviation}, measured ${JSON.stringify(m)}`);
+    // Sampling finds at most the proved bound (plus rounding, 1e-9 of the coordinates ~1e3).
+    assert.ok(m.curveToInput <= r.last.tolerance + 1e-9 && m.inputToCurve <= r.last.tolerance + 1e-9, `${why}: measured ${JSON.stringify(m)}`);
+    // The stroke is drawn on the curve's canvas: blue pixels along it.
+    assert.ok(await bluePixels(page, await canvasPixels(page)) > 300, why);
+    // One undo step back to the points before the stroke, redo again.
+    await page.keyboard.press('Control+z');
+    await idle(page);
+    assert.deepEqual(await page.evaluate(() => window.editor.points), before.flat());
+    assert.equal(await page.evaluate(() => window.editor.undoDepth), depth);
+    await page.keyboard.press('Control+y');
+    await idle(page);
+    assert.equal(await page.evaluate(() => window.editor.points.length / 2), r.n);
+    // A click with the pencil on adds nothing (no stroke), and P turns it off.
+    await page.mouse.click(box.x + 600, box.y + 100);
+    await idle(page);
+    assert.equal(await page.evaluate(() => window.editor.undoDepth), depth + 1);
+    await page.keyboard.press('p');
+    assert.equal(await page.evaluate(() => window.editor.pencil.on), false);
+    assert.deepEqual(h.errors, []);
+  });
+
+  test('Fit selection: a dense imported polyline (1000 points) -> a subset of its points within the tolerance, one undo step', async () => {
+    const dense = Array.from({ length: 1000 }, (_, i) => [i * 0.8, 200 + 150 * Math.sin(i / 120) + 30 * Math.sin(i / 17)]);
+    await setPoints(page, dense);
+    await page.click('#fit');
+    await idle(page);
+    const depth = await page.evaluate(() => window.editor.undoDepth);
+    await page.click('#fit-selection');
+    await idle(page);
+    const r = await page.evaluate(() => ({ pts: window.editor.points, last: window.editor.pencil.last, depth: window.editor.undoDepth }));
+    const n = r.pts.length / 2;
+    assert.equal(r.last.from, 1000);
+    assert.ok(n >= 2 && n <= 100, `${n} points`);
+    assert.equal(r.depth, depth + 1);
+    // Real vertices: every kept point is one of the input points, in order.
+    let j = 0;
+    for (let k = 0; k < n; ++k) {
+      while (j < 1000 && (dense[j][0] !== r.pts[2 * k] || dense[j][1] !== r.pts[2 * k + 1])) ++j;
+      assert.ok(j < 1000, `point ${k} is not an input point in order`);
+    }
+    const m = await measure(dense.flat());
+    console.log(`Fit selection: 1000 points -> ${n}; tolerance ${r.last.tolerance}, proved ${r.last.deviation}, measured ${JSON.stringify(m)}`);
+    assert.ok(m.curveToInput <= r.last.tolerance + 1e-9 && m.inputToCurve <= r.last.tolerance + 1e-9, JSON.stringify({ m, last: r.last }));
+    await page.keyboard.press('Control+z');
+    await idle(page);
+    assert.deepEqual(await page.evaluate(() => window.editor.points), dense.flat());
+    assert.deepEqual(h.errors, []);
+  });
+});
