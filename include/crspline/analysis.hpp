@@ -21,7 +21,9 @@
 // level of the coefficients: zero_speed_tolerance * (|c1| + |c2| + |c3|)
 // (see zero_speed_tolerance below for the justification). Everything else is
 // exact algebra: self-intersections of a planar segment come from solving
-// C(s) = C(t) in closed form, maxima from the roots of polynomial derivatives.
+// C(s) = C(t) in closed form, maxima from the roots of polynomial derivatives.//
+// The parts: paper_bounds.hpp (the paper's closed forms), curvature.hpp
+// (curvature and its maxima); here the per-segment analysis.
 #pragma once
 
 #include <algorithm>
@@ -35,8 +37,10 @@
 #include <vector>
 
 #include "catmull_rom.hpp"
+#include "curvature.hpp"
 #include "detail/analysis_common.hpp"
 #include "detail/polynomial.hpp"
+#include "paper_bounds.hpp"
 #include "parameterization.hpp"
 #include "segment.hpp"
 #include "vec.hpp"
@@ -63,126 +67,6 @@ inline constexpr double zero_speed_tolerance = 64;
 template <class T>
 inline T end_merge_distance() noexcept {
     return std::sqrt(T(zero_speed_tolerance) * std::numeric_limits<T>::epsilon());
-}
-
-// ---------------------------------------------------------------------------
-// The paper's closed forms, with r = d1 / d2 and alpha the knot exponent.
-// ---------------------------------------------------------------------------
-
-/// Eq. 5: distance of B1 to the chord line, d2 r^(1-a) |sin theta| / (3 (1 + r^a)),
-/// theta the polygon angle at P1 (between P0 - P1 and P2 - P1).
-template <class T>
-T paper_eq5(T d2, T r, T theta, double alpha) noexcept {
-    const T a = T(alpha);
-    return d2 * std::pow(r, 1 - a) * std::abs(std::sin(theta)) / (3 * (1 + std::pow(r, a)));
-}
-
-/// Eq. 6 for one side: d2 r^(1-a) / (4 (1 + r^a)). The paper prints only the
-/// side r = d1/d2; the bound on the whole segment needs the larger of the two
-/// sides (paper_eq6_two_sided).
-template <class T>
-T paper_eq6(T d2, T r, double alpha) noexcept {
-    const T a = T(alpha);
-    return d2 * std::pow(r, 1 - a) / (4 * (1 + std::pow(r, a)));
-}
-
-/// Eq. 6 corrected: max over r in {d1/d2, d3/d2}.
-template <class T>
-T paper_eq6_two_sided(T d1, T d2, T d3, double alpha) noexcept {
-    return std::max(paper_eq6(d2, d1 / d2, alpha), paper_eq6(d2, d3 / d2, alpha));
-}
-
-/// Eq. 8: how far B1 can lie behind B0 (beyond the chord's end),
-/// d2 sqrt(r^2 - r^(4a)) / (3 r^a (1 + r^a)) where r^2 > r^(4a), else 0 (B1
-/// cannot project behind B0: Eq. 7 has no solution). r^2 - r^(4a) is
-/// computed as r^2 (1 - r^(4a - 2)): at alpha = 1/2 that is exactly 0, as it
-/// is in exact arithmetic, where r * r - pow(r, 2) is 1 ulp of r^2 for some r.
-template <class T>
-T paper_eq8(T d2, T r, double alpha) noexcept {
-    const T a = T(alpha);
-    const T v = r * r * (1 - std::pow(r, 4 * a - 2));
-    if (!(v > 0)) return T(0);
-    return d2 * std::sqrt(v) / (3 * std::pow(r, a) * (1 + std::pow(r, a)));
-}
-
-/// sup over r > 0 of paper_eq6(1, r, alpha): the "local" Eq. 6 factor (the
-/// bound from the edge length alone, Figure 5 top row). Infinite for alpha <
-/// 1/2; 1/4 for 1/2 and 1; 1/8 at alpha = 2/3 (the paper's minimum).
-inline double local_eq6_factor(double alpha) noexcept {
-    if (alpha < 0.5) return std::numeric_limits<double>::infinity();
-    if (alpha == 0.5 || alpha == 1.0) return 0.25;  // limits r -> infinity and r -> 0
-    // d/dr log f = 0  <=>  r^a = (1 - a) / (2a - 1)
-    const double ra = (1 - alpha) / (2 * alpha - 1);
-    const double r = std::pow(ra, 1 / alpha);
-    return std::max(0.25 * std::pow(r, 1 - alpha) / (1 + ra), 0.0);
-}
-
-/// sup over r > 0 of paper_eq8(1, r, alpha): the local Eq. 8 factor. Zero at
-/// alpha = 1/2, 1/3 for alpha = 1, infinite for alpha < 1/2. Found by a
-/// golden-section search in log r (the function is unimodal there).
-inline double local_eq8_factor(double alpha) noexcept {
-    if (alpha < 0.5) return std::numeric_limits<double>::infinity();
-    if (alpha == 0.5) return 0.0;
-    if (alpha == 1.0) return 1.0 / 3.0;  // the limit r -> 0
-    auto f = [&](double x) { return paper_eq8(1.0, std::exp(x), alpha); };
-    double lo = -60, hi = 0;  // r <= 1 is where r^2 > r^(4a) for a > 1/2
-    const double g = (std::sqrt(5.0) - 1) / 2;
-    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = f(x1), f2 = f(x2);
-    for (int it = 0; it < 200; ++it) {
-        if (f1 < f2) { lo = x1; x1 = x2; f1 = f2; x2 = lo + g * (hi - lo); f2 = f(x2); }
-        else { hi = x2; x2 = x1; f2 = f1; x1 = hi - g * (hi - lo); f1 = f(x1); }
-    }
-    // Near r -> 0 the supremum may be the limit 0 < r: compare with the edge.
-    return std::max({f1, f2, f(-60.0)});
-}
-
-/// The paper's per-segment quantities from the four control points P0..P3
-/// and the knot intervals h0 = t1 - t0, h1 = t2 - t1, h2 = t3 - t2. Written
-/// for general knots; with h = d^alpha they are exactly the printed formulas
-/// (Eq. 5, Eq. 6, Eq. 8) with r = d1/d2 at P1 and r = d3/d2 at P2.
-template <class T = double>
-struct paper_bounds {
-    T d1 = 0, d2 = 0, d3 = 0;          ///< polygon edge lengths |P1-P0|, |P2-P1|, |P3-P2|
-    T theta1 = 0, theta2 = 0;          ///< polygon angles at P1 (P0-P1, P2-P1) and at P2 (P1-P2, P3-P2)
-    T h1 = 0, h2 = 0;                  ///< Eq. 5: distances of B1, B2 to the chord line
-    T eq6_one_sided = 0;               ///< Eq. 6 as printed (r = d1/d2 only): NOT a bound in general
-    T eq6 = 0;                         ///< Eq. 6 two-sided (corrected): bounds the distance to the chord line
-    T eq8_start = 0, eq8_end = 0;      ///< Eq. 8 at P1 (r = d1/d2) and at P2 (r = d3/d2)
-};
-
-/// Paper bounds from points and knot intervals; nullopt when an edge or a
-/// knot interval is zero (the formulas divide by them).
-template <std::size_t D, class T>
-std::optional<paper_bounds<T>> segment_paper_bounds(const std::array<vec<D, T>, 4>& p,
-                                                    const std::array<T, 3>& h) noexcept {
-    paper_bounds<T> b;
-    const vec<D, T> e0 = p[1] - p[0], e1 = p[2] - p[1], e2 = p[3] - p[2];
-    b.d1 = norm(e0);
-    b.d2 = norm(e1);
-    b.d3 = norm(e2);
-    if (!(b.d1 > 0 && b.d2 > 0 && b.d3 > 0 && h[0] > 0 && h[1] > 0 && h[2] > 0)) return std::nullopt;
-    b.theta1 = detail::angle_between(vec<D, T>(-e0), e1);
-    b.theta2 = detail::angle_between(vec<D, T>(-e1), e2);
-    // B1 - P1 = [h1^2 (P1 - P0) + h0^2 (P2 - P1)] / [3 h0 (h0 + h1)]: its part
-    // perpendicular to the chord is h1^2 d1 sin(theta1) / [3 h0 (h0 + h1)].
-    const T k1 = h[1] * h[1] * b.d1 / (3 * h[0] * (h[0] + h[1]));  // |B1 - P1| part from P1 - P0
-    const T k2 = h[1] * h[1] * b.d3 / (3 * h[2] * (h[1] + h[2]));
-    b.h1 = k1 * std::sin(b.theta1);
-    b.h2 = k2 * std::sin(b.theta2);
-    // Eq. 6: 3/4 of the largest height with |sin| <= 1.
-    b.eq6_one_sided = T(0.75) * k1;
-    b.eq6 = T(0.75) * std::max(k1, k2);
-    // Eq. 8: B1 projects behind P1 iff cos(theta1) > c* = h0^2 d2 / (h1^2 d1)
-    // (Eq. 7 in general knots); |B1 - P1| is largest at cos(theta1) = c*:
-    // k1 sqrt(1 - c*^2).
-    const T c1s = h[0] * h[0] * b.d2 / (h[1] * h[1] * b.d1);
-    const T c2s = h[2] * h[2] * b.d2 / (h[1] * h[1] * b.d3);
-    // For alpha = 1/2, c* = 1 exactly (Eq. 8 is identically 0); its rounding
-    // (a few ulps) must not turn into a radius of sqrt(ulp).
-    const T one = 1 - T(16) * std::numeric_limits<T>::epsilon();
-    b.eq8_start = c1s < one ? k1 * std::sqrt((1 - c1s) * (1 + c1s)) : T(0);
-    b.eq8_end = c2s < one ? k2 * std::sqrt((1 - c2s) * (1 + c2s)) : T(0);
-    return b;
 }
 
 // ---------------------------------------------------------------------------
@@ -618,115 +502,6 @@ std::vector<segment_analysis<D, T>> analyze(const catmull_rom<D, T>& c) {
     out.reserve(c.segment_count());
     for (std::size_t i = 0; i < c.segment_count(); ++i) out.push_back(analyze(c, i));
     return out;
-}
-
-// ---------------------------------------------------------------------------
-// Curvature (Section 6.4)
-// ---------------------------------------------------------------------------
-
-/// Curvature |C' ^ C''| / |C'|^3 at local u (the same in u and t units);
-/// nullopt where the speed is zero.
-template <std::size_t D, class T>
-std::optional<T> curvature(const cubic_segment<D, T>& s, T u) noexcept {
-    const vec<D, T> d1 = s.du(u, 1), d2 = s.du(u, 2);
-    const T sp = norm(d1);
-    if (!(sp > 0)) return std::nullopt;
-    // |d1 ^ d2|^2 as a sum of squared 2x2 minors (no cancellation).
-    T w2 = 0;
-    for (std::size_t i = 0; i < D; ++i)
-        for (std::size_t j = i + 1; j < D; ++j) {
-            const T m = d1[i] * d2[j] - d1[j] * d2[i];
-            w2 += m * m;
-        }
-    return std::sqrt(w2) / (sp * sp * sp);
-}
-
-/// Where the curvature of a segment peaks.
-template <class T = double>
-struct curvature_maxima {
-    T start = 0, end = 0;            ///< curvature at u = 0 and u = 1 (infinity at zero speed)
-    std::vector<T> interior_u;       ///< interior local maxima, 0 < u < 1
-    std::vector<T> interior_value;
-    T max = 0, max_u = 0;            ///< the largest over [0, 1]
-    /// The segment's largest curvature is at one of its ends, i.e. at a
-    /// control point (Section 6.4's observation for centripetal curves).
-    bool max_at_control_point() const noexcept { return max_u == 0 || max_u == 1; }
-};
-
-/// Curvature maxima of a segment: kappa^2 = N / S^3 with N = |C' ^ C''|^2
-/// (degree 4, the sum of squared 2x2 minors) and S = |C'|^2 (degree 4); the
-/// critical points are the roots of N' S - 3 N S' (degree 7).
-template <std::size_t D, class T>
-curvature_maxima<T> segment_curvature_maxima(const cubic_segment<D, T>& s) {
-    curvature_maxima<T> m;
-    const T inf = std::numeric_limits<T>::infinity();
-    auto kappa = [&](T u) { return curvature(s, u).value_or(inf); };
-    m.start = kappa(T(0));
-    m.end = kappa(T(1));
-    const std::array<vec<D, T>, 3> d1{s.c1, T(2) * s.c2, T(3) * s.c3};
-    const std::array<vec<D, T>, 2> d2{T(2) * s.c2, T(6) * s.c3};
-    std::array<T, 5> N{};
-    for (std::size_t i = 0; i < D; ++i)
-        for (std::size_t j = i + 1; j < D; ++j) {
-            const std::array<T, 3> a{d1[0][i], d1[1][i], d1[2][i]}, b{d1[0][j], d1[1][j], d1[2][j]};
-            const std::array<T, 2> da{d2[0][i], d2[1][i]}, db{d2[0][j], d2[1][j]};
-            const auto p = detail::multiply(a, db), q = detail::multiply(b, da);
-            std::array<T, 3> minor{};
-            for (std::size_t k = 0; k < 3; ++k) minor[k] = p[k] - q[k];
-            const auto sq = detail::multiply(minor, minor);
-            for (std::size_t k = 0; k < 5; ++k) N[k] += sq[k];
-        }
-    const auto S = detail::dot_poly(d1, d1);
-    const auto a = detail::multiply(detail::derivative(N), S), b = detail::multiply(N, detail::derivative(S));
-    std::array<T, 8> crit{};
-    for (std::size_t k = 0; k < 8; ++k) crit[k] = a[k] - T(3) * b[k];
-    m.max = m.start;
-    m.max_u = 0;
-    if (m.end > m.max) { m.max = m.end; m.max_u = 1; }
-    // The critical points, with the ends: kappa is monotone between
-    // consecutive ones.
-    detail::root_list<T, 10> cp;
-    cp.push_back(T(0));
-    for (T u : detail::real_roots(crit, T(0), T(1)))
-        if (u > cp.back() && u < 1) cp.push_back(u);
-    cp.push_back(T(1));
-    for (std::size_t j = 1; j + 1 < cp.size(); ++j) {
-        // A local maximum: above kappa halfway to the critical points on
-        // either side (where it is monotone in exact arithmetic). Not
-        // compared at a fixed small step: near a near-cusp (speed 1e-5 of
-        // the coefficients' scale) the peak is narrower (1e-6, with kappa
-        // 1e11) than the rounding of crit's roots there (crit is a
-        // difference of terms 1e16 times larger than itself), so the root can
-        // sit on the peak's flank, below a neighbour 1e-6 away.
-        const T lo = cp[j - 1], hi = cp[j + 1], u = cp[j];
-        const T k = kappa(u);
-        if (!(k >= kappa(lo + (u - lo) / 2) && k >= kappa(u + (hi - u) / 2))) continue;
-        // The maximum over (lo, hi), where kappa rises then falls: golden
-        // section, to adjacent doubles (the root alone can miss the peak by
-        // several widths).
-        const T g = T(0.38196601125010515);  // (3 - sqrt 5) / 2
-        T ga = lo, gb = hi, x1 = ga + g * (gb - ga), x2 = gb - g * (gb - ga), f1 = kappa(x1), f2 = kappa(x2);
-        T best = k, best_u = u;
-        auto keep = [&](T x, T f) {
-            if (f > best) { best = f; best_u = x; }
-        };
-        for (int it = 0; it < 200 && x1 < x2; ++it) {
-            keep(x1, f1);
-            keep(x2, f2);
-            if (f1 < f2) {
-                ga = x1; x1 = x2; f1 = f2; x2 = gb - g * (gb - ga); f2 = kappa(x2);
-            } else {
-                gb = x2; x2 = x1; f2 = f1; x1 = ga + g * (gb - ga); f1 = kappa(x1);
-            }
-        }
-        keep(x1, f1);
-        keep(x2, f2);
-        if (!m.interior_u.empty() && best_u == m.interior_u.back()) continue;  // one peak from two roots
-        m.interior_u.push_back(best_u);
-        m.interior_value.push_back(best);
-        if (best > m.max) { m.max = best; m.max_u = best_u; }
-    }
-    return m;
 }
 
 }  // namespace crspline
