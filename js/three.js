@@ -347,10 +347,10 @@ export class CRSplineTubeGeometry extends BufferGeometry {
       this.normals = [];
       this.binormals = [];
       const m = mesh.ringSize, pos = mesh.positions;
+      const X = curve.evaluateMany(mesh.t), D = curve.evaluateMany(mesh.t, 1);
       for (let k = 0; k < mesh.rings; ++k) {
-        const x = curve.evaluate(mesh.t[k]), d = curve.evaluate(mesh.t[k], 1);
-        const T = new Vector3(d[0], d[1], d[2]).normalize();
-        const N = new Vector3(pos[3 * k * m] - x[0], pos[3 * k * m + 1] - x[1], pos[3 * k * m + 2] - x[2]);
+        const T = new Vector3(D[3 * k], D[3 * k + 1], D[3 * k + 2]).normalize();
+        const N = new Vector3(pos[3 * k * m] - X[3 * k], pos[3 * k * m + 1] - X[3 * k + 1], pos[3 * k * m + 2] - X[3 * k + 2]);
         N.sub(T.clone().multiplyScalar(N.dot(T))).normalize();
         this.tangents.push(T);
         this.normals.push(N);

@@ -134,6 +134,12 @@ val float64_array(const std::vector<double>& v) {
     return val::global("Float64Array").new_(emscripten::typed_memory_view(v.size(), v.data()));  // a copy
 }
 
+// What WebGL takes: one conversion here, one copy across.
+val float32_array(const std::vector<double>& v) {
+    const std::vector<float> f(v.begin(), v.end());
+    return val::global("Float32Array").new_(emscripten::typed_memory_view(f.size(), f.data()));
+}
+
 std::vector<cr::vec<2>> profile_points(const val& o) {
     const std::vector<double> f = numbers(o["profilePoints"], "profile");
     if (f.size() % 2 != 0)
@@ -197,9 +203,9 @@ val sweepCurve(val points, val grid, val bezier, bool closed, int dimension, val
         opt.clearance = flag(o, "clearance", true);
         const cr::sweep_mesh m = cr::sweep(c, opt);
         val r = val::object();
-        r.set("positions", val::global("Float32Array").new_(float64_array(m.positions)));
-        r.set("normals", val::global("Float32Array").new_(float64_array(m.normals)));
-        r.set("uvs", val::global("Float32Array").new_(float64_array(m.uvs)));
+        r.set("positions", float32_array(m.positions));
+        r.set("normals", float32_array(m.normals));
+        r.set("uvs", float32_array(m.uvs));
         r.set("indices", val::global("Uint32Array").new_(emscripten::typed_memory_view(m.indices.size(), m.indices.data())));
         r.set("rings", double(m.rings));
         r.set("ringSize", double(m.ring_size));
