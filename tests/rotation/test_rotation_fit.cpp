@@ -181,7 +181,7 @@ TEST(RotationFit, CountWithinFifteenPercentOfTheMinimum) {
     std::mt19937_64 rng(seed);
     std::size_t fitted = 0, best = 0, cases = 0;
     for (const double tol_deg : {0.5, 2.0})
-        for (const auto& s : corpus(rng, 48, 3)) {
+        for (const auto& s : corpus(rng, 40, 3)) {
             const double tol = tol_deg * deg;
             std::vector<quat> unit;
             for (const auto& q : s.q) unit.push_back(normalized(q));
@@ -197,4 +197,88 @@ TEST(RotationFit, CountWithinFifteenPercentOfTheMinimum) {
     std::printf("rotation fit: %zu keys against a minimum of %zu (%.3fx) over %zu streams\n", fitted, best,
                 double(fitted) / double(best), cases);
     EXPECT_LE(double(fitted), 1.15 * double(best)) << fitted << " keys, minimum " << best;
+}
+
+// The bound is never below the true angle: random pairs at every scale from
+// 1e-12 rad to pi, near pi too, with curve-like values (norm off by up to
+// 1e-15). A bound without its rounding terms fails here.
+TEST(RotationFit, AngleBoundIsAnUpperBound) {
+    CRSPLINE_SEEDED(seed, 4043);
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> G;
+    std::uniform_real_distribution<double> U(0, 1);
+    std::size_t checked = 0, tight = 0;
+    for (int k = 0; k < 200000; ++k) {
+        const quat q = normalized(quat{G(rng), G(rng), G(rng), G(rng)});
+        const double a = k % 2 ? std::numbers::pi - std::pow(10.0, -12 * U(rng)) : std::pow(10.0, -12 * U(rng)) * 3;
+        quat r = from_axis_angle(v3{{G(rng), G(rng), G(rng)}}, a) * q;
+        r = (1 + (U(rng) - 0.5) * 2e-15) * r;
+        if (U(rng) < 0.5) r = -r;
+        const long double truth = true_angle(r, q);
+        const double b = detail_fit::angle_bound(r, q);
+        ASSERT_GE((long double)b, truth) << "pair " << k;
+        tight += (long double)b - truth < 4e-14L;
+        ++checked;
+    }
+    EXPECT_EQ(checked, 200000u);
+    EXPECT_EQ(tight, checked);  // and within 4e-14 rad (the slack's size at angles up to pi)
+}
+
+TEST(RotationFit, StillStreamsAndTwoSamplesKeepTwoKeys) {
+    CRSPLINE_SEEDED(seed, 4044);
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> G;
+    const quat q = normalized(quat{G(rng), G(rng), G(rng), G(rng)});
+    std::vector<double> t;
+    std::vector<quat> s;
+    for (int i = 0; i < 500; ++i) t.push_back(i / 120.0), s.push_back(i % 3 ? q : -q);  // signs free
+    const auto r = fit(t, s, 1e-9);
+    EXPECT_EQ(r.count(), 2u);
+    EXPECT_LE(r.max_angle, 1e-13);
+    const std::vector<double> t2{0.0, 1.0};
+    const std::vector<quat> s2{q, from_axis_angle(v3{{0, 0, 1}}, 3.0) * q};
+    const auto r2 = fit(t2, s2, 1e-6);
+    EXPECT_EQ(r2.count(), 2u);
+    EXPECT_EQ(r2.indices, (std::vector<std::size_t>{0, 1}));
+}
+
+// Signs of the samples do not change the fit: q and -q are one rotation.
+TEST(RotationFit, SignsOfTheSamplesDoNotMatter) {
+    CRSPLINE_SEEDED(seed, 4045);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> U(0, 1);
+    stream s = mocap(rng, 400, 120, 0.05 * deg);
+    quat prev = quat::identity();
+    for (auto& q : s.q) q = dot(prev, q) < 0 ? -q : q, prev = q;  // continuous
+    const auto a = fit(s.t, s.q, 0.5 * deg);
+    for (auto& q : s.q) q = U(rng) < 0.5 ? -q : q;
+    const auto b = fit(s.t, s.q, 0.5 * deg);
+    EXPECT_EQ(a.indices, b.indices);
+    EXPECT_NEAR(a.max_angle, b.max_angle, 1e-15);
+}
+
+TEST(RotationFit, BadInputIsNamed) {
+    const std::vector<double> t{0, 1, 2};
+    const std::vector<quat> q{quat::identity(), from_axis_angle(v3{{1, 0, 0}}, 0.5), from_axis_angle(v3{{1, 0, 0}}, 1.0)};
+    auto message = [](auto&& f) -> std::string {
+        try {
+            f();
+        } catch (const crspline::invalid_input& e) {
+            return e.what();
+        }
+        return "no error";
+    };
+    auto has = [](const std::string& m, const std::string& part) { return m.find(part) != std::string::npos; };
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    for (const double tol : {0.0, -1.0, nan, inf}) EXPECT_TRUE(has(message([&] { fit(t, q, tol); }), "angle_tolerance must be")) << tol;
+    EXPECT_TRUE(has(message([&] { fit(t, q, 1e-14); }), "below what rounding"));
+    EXPECT_TRUE(has(message([&] { fit(std::vector<double>{0}, std::vector<quat>{q[0]}, 0.1); }), "at least 2 samples, got 1"));
+    EXPECT_TRUE(has(message([&] { fit(std::vector<double>{0, 1}, q, 0.1); }), "times has 2 values and quaternions 3 rows"));
+    EXPECT_TRUE(has(message([&] { fit(std::vector<double>{0, 2, 2}, q, 0.1); }), "times is not increasing at index 2 (2 then 2)"));
+    EXPECT_TRUE(has(message([&] { fit(std::vector<double>{0, nan, 2}, q, 0.1); }), "times 1 is not finite"));
+    auto bad = q;
+    bad[1] = quat{0, 0, 0, 0};
+    EXPECT_TRUE(has(message([&] { fit(t, bad, 0.1); }), "sample 1 [0, 0, 0, 0] is not a unit quaternion"));
+    bad[1] = quat{1, nan, 0, 0};
+    EXPECT_TRUE(has(message([&] { fit(t, bad, 0.1); }), "sample 1: component 1 (x) is not finite"));
 }

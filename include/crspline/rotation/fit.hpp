@@ -14,8 +14,10 @@
 // depends on its two keys and one neighbour each side):
 // 1. greedy: from the last key, the farthest next key whose segment passes,
 //    the key after it guessed at the same spacing (gallop, then bisection);
+//    then every segment tested with its true neighbours, a failing one
+//    given its worst sample as a key;
 // 2. removal: each interior key is dropped where the three segments that
-//    change still pass (repeated until none can go);
+//    change still pass;
 // 3. proof on the curve itself; a segment whose samples fail (the guess of
 //    step 1 was wrong, or the batch path rounds differently) gets its worst
 //    sample as a key, and steps 2-3 run again.
@@ -114,6 +116,25 @@ std::vector<std::size_t> greedy(const fit_window<T>& w, std::span<const T>) {
     return keys;
 }
 
+/// Makes every segment pass the window test with its true neighbours (the
+/// greedy step guessed the key after each): a failing segment gets its
+/// worst sample as a key, and the test steps back over the two segments
+/// whose windows that key entered.
+template <class T>
+void window_repair(const fit_window<T>& w, std::vector<std::size_t>& keys) {
+    const T tol = w.tolerance();
+    for (std::size_t j = 0; j + 1 < keys.size();) {
+        const std::size_t p = j > 0 ? keys[j - 1] : none, c = j + 2 < keys.size() ? keys[j + 2] : none;
+        const auto [e, at] = w.segment_worst(p, keys[j], keys[j + 1], c, std::numeric_limits<T>::infinity());
+        if (!(e > tol) || at == none || at == keys[j + 1]) {
+            ++j;  // passed (or only the end key fails: the proof below reports that)
+            continue;
+        }
+        keys.insert(keys.begin() + std::ptrdiff_t(j + 1), at);
+        j = j >= 2 ? j - 2 : 0;
+    }
+}
+
 /// Drops interior keys while the segments that change (new indices j - 2 ..
 /// j, whose windows lie within old keys j - 3 .. j + 3) still pass. A window
 /// cut short of the curve's ends is never looked past: the changed segments'
@@ -178,6 +199,7 @@ rotation_fit<T> fit(std::span<const T> times, std::span<const quaternion<T>> sam
 
     // 2. Choose, then prove on the curve and repair, until proved.
     std::vector<std::size_t> keys = greedy(w, times);
+    window_repair(w, keys);
     std::vector<bool> pinned(n, false);
     remove_keys(w, keys, pinned);
     for (;;) {
@@ -208,9 +230,9 @@ rotation_fit<T> fit(std::span<const T> times, std::span<const quaternion<T>> sam
         }
         keys.insert(keys.end(), add.begin(), add.end());
         std::sort(keys.begin(), keys.end());
-        // The added keys changed their neighbours' segments too: let removal
-        // look again (it keeps only what its own test passes; the proof
-        // above decides).
+        // The added keys changed their neighbours' segments too: test them
+        // again and let removal look again (the proof above decides).
+        window_repair(w, keys);
         remove_keys(w, keys, pinned);
     }
 }

@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <limits>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "../quaternion.hpp"
@@ -74,16 +75,21 @@ public:
     /// key before a and c the key after b (none at the ends). Stops early
     /// once the bound exceeds `stop_above`.
     T segment_error(std::size_t p, std::size_t a, std::size_t b, std::size_t c, T stop_above) const {
+        return segment_worst(p, a, b, c, stop_above).first;
+    }
+    /// The same, with the sample where the largest bound is (none: no sample).
+    std::pair<T, std::size_t> segment_worst(std::size_t p, std::size_t a, std::size_t b, std::size_t c, T stop_above) const {
         const auto k = controls(p, a, b, c);
         const T t0 = t_[a], h = t_[b] - t0, du = T(1) / h;
         const std::size_t last = c == none ? b : b - 1;
         T worst = 0;
+        std::size_t at = none;
         for (std::size_t i = a + 1; i <= last; ++i) {
             const T e = angle_bound(evaluate(k, (t_[i] - t0) / h, du), s_[i]);
-            if (e > worst) worst = e;
+            if (at == none || e > worst) worst = e, at = i;
             if (worst > stop_above) break;
         }
-        return worst;
+        return {worst, at};
     }
     bool ok(std::size_t p, std::size_t a, std::size_t b, std::size_t c) const {
         return segment_error(p, a, b, c, tol_) <= tol_;
