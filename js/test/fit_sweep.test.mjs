@@ -160,6 +160,8 @@ test('sweep: a closed knot closes with no seam (positions, normals, u equal; v 0
 test('sweep: the rings sit on the curve the package holds (tension, kb, given tangents): the curve crosses as its Bezier form', () => {
   const curves = [catmullRom(knot, { closed: true, tension: 0.3 }),
     catmullRom(knot.slice(0, 7), { kb: { tension: [0, 0.5, -0.3, 0.8, 0.2, 0.1, 0], bias: [0, 0.2, 0, 0, -0.4, 0, 0] } }),
+    // Continuity: incoming and outgoing tangents differ at the knots.
+    catmullRom(knot.slice(0, 7), { kb: { continuity: [0, 0.6, -0.5, 0.4, 0, -0.7, 0] } }),
     catmullRom(knot.slice(0, 4), { alpha: 1, start: 'reflect' })];
   let rings = 0;
   for (const c of curves) {
