@@ -25,7 +25,7 @@ import numpy as _np
 from . import _crspline
 
 __all__ = ["QuaternionSpline", "C2RotationSpline", "PoseCurve", "RotationSpline", "Slerp", "slerp", "as_matrix",
-           "from_matrix", "as_rotvec", "from_rotvec", "as_euler", "from_euler"]
+           "from_matrix", "as_rotvec", "from_rotvec", "as_euler", "from_euler", "fit", "RotationFit"]
 
 
 def _quats(q, what="keys"):
@@ -175,6 +175,48 @@ class PoseCurve:
 
     def constant_speed_times(self, n, position_weight=1.0, angle_weight=0.0, accuracy=1e-12):
         return self._c.constant_speed_times(int(n), position_weight, angle_weight, accuracy)
+
+
+# ----- keyframe reduction ------------------------------------------------------------
+
+class RotationFit:
+    """What ``fit`` returns: ``indices`` (kept samples, int64, first and last
+    included), ``times`` and ``keys`` (their times and quaternions [w, x, y,
+    z], normalized, signed as the curve signs them), ``curve`` (a
+    ``QuaternionSpline``: Catmull-Rom on grid ``times``, natural ends),
+    ``max_angle`` (the proved largest angle, radians, at the samples),
+    ``worst`` (the sample where it is reached) and ``count``."""
+
+    __slots__ = ("indices", "times", "keys", "curve", "max_angle", "worst")
+
+    def __init__(self, indices, times, keys, curve, max_angle, worst):
+        self.indices, self.times, self.keys, self.curve = indices, times, keys, curve
+        self.max_angle, self.worst = max_angle, worst
+
+    @property
+    def count(self):
+        return len(self.indices)
+
+    def __repr__(self):
+        return f"RotationFit(count={self.count}, max_angle={self.max_angle!r})"
+
+
+def fit(times, quaternions, *, angle_tolerance, unit_tolerance=_np.inf):
+    """Keyframe reduction: the fewest samples whose Catmull-Rom rotation curve
+    (the samples' times as its grid) is within ``angle_tolerance`` radians of
+    every sample at its time, proved at the samples (rounding included).
+
+    times: strictly increasing (n,); quaternions: (n, 4) rows [w, x, y, z],
+    normalized here (zero or non-finite rows refused, and with a finite
+    ``unit_tolerance`` rows farther from unit norm), signs free. Returns a
+    ``RotationFit``. Bad input raises ValueError naming the field, index and
+    value."""
+    t = _np.ascontiguousarray(_np.asarray(times, dtype=_np.float64))
+    indices, key_times, keys, native, max_angle, worst = _crspline._rotation_fit(
+        t, _quats(quaternions, "quaternions"), float(angle_tolerance), float(unit_tolerance))
+    curve = QuaternionSpline.__new__(QuaternionSpline)
+    curve._c = native
+    return RotationFit(indices, key_times, keys, curve, max_angle, worst)
 
 
 # ----- conversions (rows [w, x, y, z]) ------------------------------------------

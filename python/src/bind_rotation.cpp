@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -13,6 +14,7 @@
 #include <crspline/rotation/angle_length.hpp>
 #include <crspline/rotation/c2.hpp>
 #include <crspline/rotation/catmull_rom.hpp>
+#include <crspline/rotation/fit.hpp>
 #include <crspline/rotation/pose.hpp>
 
 namespace py = pybind11;
@@ -326,6 +328,26 @@ void bind_rotation(py::module_& m) {
              py::arg("accuracy") = default_angle_accuracy);
 
     // Conversions, row by row.
+    // Keyframe reduction (rotation/fit.hpp): (indices, times, keys, curve,
+    // max_angle, worst); the fit runs with the GIL released.
+    m.def(
+        "_rotation_fit",
+        [](const farray& times, const farray& quaternions, double angle_tolerance, double unit_tolerance) {
+            if (times.ndim() != 1)
+                throw invalid_input("times must be 1-dimensional, got " + std::to_string(times.ndim()) + " dimensions");
+            const auto t = to_vector(times);
+            const auto q = to_quats(quaternions, "quaternions");
+            std::optional<rotation_fit<double>> r;
+            {
+                py::gil_scoped_release release;
+                r.emplace(fit(t, q, angle_tolerance, rotation_fit_options<double>{unit_tolerance}));
+            }
+            py::array_t<long long> idx(py::ssize_t(r->count()));
+            for (std::size_t k = 0; k < r->count(); ++k) idx.mutable_data()[k] = (long long)r->indices[k];
+            return py::make_tuple(idx, grid_of(r->times), from_quats(r->keys), r->curve, r->max_angle, r->worst);
+        },
+        py::arg("times"), py::arg("quaternions"), py::arg("angle_tolerance"),
+        py::arg("unit_tolerance") = std::numeric_limits<double>::infinity());
     m.def("_rotation_slerp", [](const farray& a, const farray& b, const farray& u) {
         const auto qa = to_quats(a, "a"), qb = to_quats(b, "b");
         if (qa.size() != qb.size() || qa.size() != std::size_t(u.size())) throw invalid_input("slerp: a, b and u differ in length");

@@ -278,7 +278,10 @@ TEST(RotationFit, BadInputIsNamed) {
     EXPECT_TRUE(has(message([&] { fit(std::vector<double>{0, nan, 2}, q, 0.1); }), "times 1 is not finite"));
     auto bad = q;
     bad[1] = quat{0, 0, 0, 0};
-    EXPECT_TRUE(has(message([&] { fit(t, bad, 0.1); }), "sample 1 [0, 0, 0, 0] is not a unit quaternion"));
+    EXPECT_TRUE(has(message([&] { fit(t, bad, 0.1); }), "sample 1 [0, 0, 0, 0] has norm 0: not a rotation"));
+    bad[1] = 0.9 * q[1];  // normalized by default; a finite unit_tolerance refuses it
+    EXPECT_EQ(fit(t, bad, 0.1).indices, fit(t, q, 0.1).indices);
+    EXPECT_TRUE(has(message([&] { fit(t, bad, 0.1, rotation_fit_options<double>{1e-6}); }), "sample 1 [0.87"));
     bad[1] = quat{1, nan, 0, 0};
     EXPECT_TRUE(has(message([&] { fit(t, bad, 0.1); }), "sample 1: component 1 (x) is not finite"));
 }

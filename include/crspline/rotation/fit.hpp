@@ -44,7 +44,10 @@ namespace crspline::rotation {
 
 template <class T = double>
 struct rotation_fit_options {
-    T unit_tolerance = T(1e-6);  ///< samples within this of unit norm are normalized, others refused
+    /// Samples are normalized (as the curves' keys are, and SciPy's from_quat);
+    /// zero and non-finite ones are refused, and with a finite tolerance also
+    /// those farther than it from unit norm.
+    T unit_tolerance = std::numeric_limits<T>::infinity();
 };
 
 /// What fit() returns: the kept samples and their curve.
@@ -167,8 +170,8 @@ bool remove_keys(const fit_window<T>& w, std::vector<std::size_t>& keys, const s
 
 /// The fewest keys (a subset of the samples, the first and last kept) whose
 /// Catmull-Rom rotation curve is within angle_tolerance (radians) of every
-/// sample at its time. times: finite, strictly increasing; samples: unit
-/// quaternions [w, x, y, z] (to opt.unit_tolerance; signs free). Bad input
+/// sample at its time. times: finite, strictly increasing; samples:
+/// quaternions [w, x, y, z], nonzero (normalized here; signs free). Bad input
 /// is an invalid_input naming the field, index and value.
 template <class T>
 rotation_fit<T> fit(std::span<const T> times, std::span<const quaternion<T>> samples, T angle_tolerance,
@@ -194,7 +197,13 @@ rotation_fit<T> fit(std::span<const T> times, std::span<const quaternion<T>> sam
                                 detail::num(double(times[i - 1])) + " then " + detail::num(double(times[i])) + ")");
     }
     std::vector<quaternion<T>> s(n);
-    for (std::size_t i = 0; i < n; ++i) s[i] = checked_unit(samples[i], i, opt.unit_tolerance, "sample");
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto a = samples[i].array();
+        const bool finite = std::all_of(a.begin(), a.end(), [](T x) { return std::isfinite(x); });
+        if (finite && !(norm(samples[i]) > 0))
+            throw invalid_input("sample " + std::to_string(i) + " [0, 0, 0, 0] has norm 0: not a rotation");  // as checked_unit words it
+        s[i] = checked_unit(samples[i], i, opt.unit_tolerance, "sample");  // names a non-finite component
+    }
     const fit_window<T> w(times, s, angle_tolerance);
 
     // 2. Choose, then prove on the curve and repair, until proved.
