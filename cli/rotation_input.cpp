@@ -118,7 +118,9 @@ void read_keys(const json& r, rotation_file& f) {
         if (form == "quaternions") {
             const auto q = row<4>(a[i], p);
             const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-            // The core's rule (rotation_options::unit_tolerance), said here with the field's path.
+            // The file's check, stricter than the native classes (which normalize any
+            // nonzero key, as SciPy does): a norm of 0.9 in a file is more likely a
+            // wrong field than rounding. Said with the field's path.
             if (!(std::abs(n - 1) <= 1e-6))
                 fail(p, "not a unit quaternion (norm " + format_number(n) + ", allowed 1 +- 1e-6; order [w, x, y, z])");
             f.keys.push_back(Q{q[0], q[1], q[2], q[3]});

@@ -367,6 +367,8 @@ export interface QuaternionSplineOptions {
   keepSigns?: boolean;
   /** Refuse repeated keys with alpha > 0. */
   strict?: boolean;
+  /** Keys are normalized, as SciPy's from_quat does; zero or non-finite keys are refused.
+   * A finite tolerance also refuses keys farther than it from unit norm (default: none). */
   unitTolerance?: number;
 }
 
@@ -375,6 +377,7 @@ export interface RotationSplineOptions {
   start?: 'scipy' | 'natural' | AngularVelocityEnd;
   end?: 'scipy' | 'natural' | AngularVelocityEnd;
   keepSigns?: boolean;
+  /** As QuaternionSplineOptions.unitTolerance. */
   unitTolerance?: number;
 }
 

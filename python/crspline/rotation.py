@@ -93,11 +93,14 @@ class QuaternionSpline(_Evaluating):
     (the documented end), 'natural_splines' (what splines 0.3.3 computes) or
     an angular velocity (3-vector, in velocity_frame). Keys are made
     hemisphere-continuous unless keep_signs; repeated keys with alpha > 0 are
-    the curve's limit unless strict."""
+    the curve's limit unless strict. Keys are normalized, as SciPy's
+    Rotation.from_quat does; a zero or non-finite key raises ValueError, and
+    so does one farther than a finite unit_tolerance from unit norm (the
+    ``splines`` drop-in keeps that package's check: 1e-6)."""
 
     def __init__(self, keys, kind="catmull_rom", *, alpha=None, grid=None, closed=False, start="natural",
                  end="natural", velocity_frame="world", tcb=None, keep_signs=False, strict=False,
-                 unit_tolerance=1e-6):
+                 unit_tolerance=_np.inf):
         start = start if isinstance(start, str) else _np.asarray(start, dtype=_np.float64)
         end = end if isinstance(end, str) else _np.asarray(end, dtype=_np.float64)
         self._c = _crspline._QuaternionSpline(
@@ -132,10 +135,11 @@ class C2RotationSpline(_Evaluating):
     Newton's method to rounding. start/end: 'scipy' (SciPy's chord rates),
     'natural' (zero angular acceleration) or an angular velocity (3-vector in
     velocity_frame). closed: periodic, times has one more value than keys
-    (the return to key 0). residual: the largest acceleration jump left."""
+    (the return to key 0). residual: the largest acceleration jump left.
+    Keys are normalized as in QuaternionSpline (zero or non-finite refused)."""
 
     def __init__(self, times, keys, start="scipy", end="scipy", *, velocity_frame="world", closed=False,
-                 keep_signs=False, unit_tolerance=1e-6):
+                 keep_signs=False, unit_tolerance=_np.inf):
         start = start if isinstance(start, str) else _np.asarray(start, dtype=_np.float64)
         end = end if isinstance(end, str) else _np.asarray(end, dtype=_np.float64)
         self._c = _crspline._C2Spline(_np.asarray(times, dtype=_np.float64), _quats(keys), start, end, velocity_frame,
@@ -310,7 +314,8 @@ class RotationSpline:
         q, self._scipy = _from_rotations(rotations)
         self.times = _check_times(times, len(q))
         self.rotations = rotations
-        self._c = _crspline._C2Spline(self.times, q, "scipy", "scipy", "world", False, False, 1e-6)
+        # Keys normalized, as SciPy's from_quat does (a Rotation's are already).
+        self._c = _crspline._C2Spline(self.times, q, "scipy", "scipy", "world", False, False, _np.inf)
 
     residual = property(lambda self: self._c.residual, doc="largest angular-acceleration jump left at a key")
     iterations = property(lambda self: self._c.iterations)
@@ -341,7 +346,7 @@ class Slerp:
         self.times = _check_times(times, len(q))
         self.rotations = rotations
         self._c = _crspline._QuaternionSpline(q, "piecewise_slerp", False, None, self.times, "natural", "natural",
-                                              "world", None, False, False, 1e-6)
+                                              "world", None, False, False, _np.inf)  # normalized, as SciPy
 
     def __call__(self, times):
         ta, flat = _times(times)

@@ -195,8 +195,19 @@ def test_native_api_and_errors():
     c = rotation.QuaternionSpline(q, alpha=0.5)
     assert c.evaluate(np.zeros((2, 3))).shape == (2, 3, 4)
     assert c.evaluate(0.1, 1).shape == (3,)
+    # Keys are normalized as SciPy's from_quat does (issue 42); zero is no rotation;
+    # a finite unit_tolerance (the splines drop-in's 1e-6) refuses non-unit keys.
+    assert np.array_equal(rotation.QuaternionSpline([[1, 0, 0, 0], [0.5, 0, 0, 0]]).evaluate(1.0), [1, 0, 0, 0])
+    near = rotation.QuaternionSpline([[1, 0, 0, 0], [0.9689, 0.2474, 0, 0]])
+    assert abs(np.linalg.norm(near.evaluate(1.0)) - 1) <= 4e-16
     with pytest.raises(ValueError, match=r"key 1 \[0.5, 0, 0, 0\] is not a unit quaternion"):
-        rotation.QuaternionSpline([[1, 0, 0, 0], [0.5, 0, 0, 0]])
+        rotation.QuaternionSpline([[1, 0, 0, 0], [0.5, 0, 0, 0]], unit_tolerance=1e-6)
+    with pytest.raises(ValueError, match=r"key 1 \[0, 0, 0, 0\] has norm 0: not a rotation"):
+        rotation.QuaternionSpline([[1, 0, 0, 0], [0, 0, 0, 0]])
+    with pytest.raises(ValueError, match=r"key 1 \[0, 0, 0, 0\] has norm 0"):
+        rotation.C2RotationSpline([0, 1], [[1, 0, 0, 0], [0, 0, 0, 0]])
+    with pytest.raises(ValueError, match=r"key 1: component 1 \(x\) is not finite"):
+        rotation.QuaternionSpline([[1, 0, 0, 0], [1, np.nan, 0, 0]])
     with pytest.raises(ValueError, match=r"t = 9 \(index 1\) is outside"):
         c.evaluate([0.0, 9.0])
     with pytest.raises(ValueError, match="Values in `times` must be in a strictly increasing order."):

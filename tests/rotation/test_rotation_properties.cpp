@@ -505,8 +505,28 @@ TEST(RotationProperties, BadInputIsNamed) {
         }
         return std::string("(no error)");
     };
+    // Keys are normalized, as SciPy's from_quat does (issue 42); a finite
+    // unit_tolerance (the splines drop-in's 1e-6) refuses them instead.
     const std::vector<quat> nonunit{a, quat{0.9, 0, 0, 0}, b};
-    EXPECT_NE(message([&] { quaternion_spline<double> c(nonunit); }).find("key 1 [0.9, 0, 0, 0] is not a unit quaternion"), std::string::npos);
+    const quaternion_spline<double> normalized(nonunit);
+    EXPECT_LE(std::abs(norm(normalized.keys()[1]) - 1), eps);
+    EXPECT_EQ(normalized.keys()[1].w, 1.0);  // 0.9 / 0.9 exactly
+    rotation_options<double> checked;
+    checked.unit_tolerance = 1e-6;
+    EXPECT_NE(message([&] { quaternion_spline<double> c(nonunit, checked); }).find("key 1 [0.9, 0, 0, 0] is not a unit quaternion"), std::string::npos);
+    c2_options<double> checked_c2;
+    checked_c2.unit_tolerance = 1e-6;
+    const std::vector<double> t3{0, 1, 2};
+    EXPECT_NE(message([&] { c2_rotation_spline<double> c(t3, nonunit, checked_c2); }).find("key 1 [0.9, 0, 0, 0] is not a unit quaternion"), std::string::npos);
+    EXPECT_LE(std::abs(norm(c2_rotation_spline<double>(t3, nonunit).keys()[1]) - 1), eps);
+    // Zero is no rotation, whatever the tolerance; tiny and huge keys are scaled first.
+    const std::vector<quat> zero{a, quat{0, 0, 0, 0}, b};
+    EXPECT_NE(message([&] { quaternion_spline<double> c(zero); }).find("key 1 [0, 0, 0, 0] has norm 0: not a rotation"), std::string::npos);
+    EXPECT_NE(message([&] { c2_rotation_spline<double> c(t3, zero); }).find("key 1 [0, 0, 0, 0] has norm 0"), std::string::npos);
+    const std::vector<quat> extreme{quat{1e-320, 0, 0, 0}, quat{1e300, 1e300, 0, 0}};
+    const quaternion_spline<double> scaled(extreme);
+    EXPECT_EQ(scaled.keys()[0].w, 1.0);
+    EXPECT_LE(std::abs(norm(scaled.keys()[1]) - 1), eps);
     const std::vector<quat> nan{a, b, quat{1, std::nan(""), 0, 0}};
     EXPECT_NE(message([&] { quaternion_spline<double> c(nan); }).find("key 2: component 1 (x) is not finite (nan)"), std::string::npos);
     const std::vector<quat> nearly{a, quat{1 + 1e-9, 0, 0, 0}};

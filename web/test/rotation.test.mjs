@@ -133,7 +133,10 @@ test('pose curve: positions and orientations at the keys, rates in both frames',
 });
 
 test('errors name what is wrong', () => {
-  assert.throws(() => M.RotationCurve.quaternionSpline([2, 0, 0, 0, 1, 0, 0, 0], {}), /key 0 .* is not a unit quaternion/);
+  // Keys are normalized, as SciPy's from_quat does (issue 42); zero is no rotation; a finite
+  // unitTolerance refuses non-unit keys.
+  assert.throws(() => M.RotationCurve.quaternionSpline([0, 0, 0, 0, 1, 0, 0, 0], {}), /key 0 \[0, 0, 0, 0\] has norm 0: not a rotation/);
+  assert.throws(() => M.RotationCurve.quaternionSpline([2, 0, 0, 0, 1, 0, 0, 0], { unitTolerance: 1e-6 }), /key 0 .* is not a unit quaternion/);
   assert.throws(() => M.RotationCurve.quaternionSpline([1, 0, 0], {}), /keys has 3 numbers, not a multiple of 4/);
   assert.throws(() => M.RotationCurve.quaternionSpline([1, 0, 0, 0, 1, 0, 0, 0], { kind: 'cubic' }), /kind must be .* got 'cubic'/);
   assert.throws(() => M.RotationCurve.quaternionSpline([1, 0, 0, 0, 1, 0, 0, 0], { alphaa: 1 }), /unknown option 'alphaa'/);

@@ -61,7 +61,8 @@ struct c2_options {
     bool closed = false;       ///< periodic: n keys, n + 1 times (the last: key 0's return)
     bool keep_signs = false;   ///< steps as the given signs say (up to 2 pi), not the short way
     int max_iterations = 100;  ///< Newton steps; convergence takes 3 to 8 in practice
-    T unit_tolerance = T(1e-6);
+    /// As rotation_options::unit_tolerance: keys normalized, zero and non-finite refused.
+    T unit_tolerance = std::numeric_limits<T>::infinity();
 };
 
 namespace detail_c2 {

@@ -30,6 +30,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -78,7 +79,9 @@ struct rotation_options {
     std::vector<tcb<T>> kb{};              ///< one triple for all keys, or one per key that uses it
     bool keep_signs = false;               ///< do not make the keys hemisphere-continuous
     bool strict = false;                   ///< refuse repeated consecutive keys when alpha > 0
-    T unit_tolerance = T(1e-6);            ///< keys within this of unit norm are normalized, others refused
+    /// Keys are normalized (as SciPy's from_quat); zero and non-finite keys are
+    /// refused. A finite tolerance also refuses keys farther from unit norm.
+    T unit_tolerance = std::numeric_limits<T>::infinity();
 };
 
 /// A rotation curve through unit quaternions. t runs over [grid.front(),

@@ -12,9 +12,11 @@
 // pi). The rotation vector of q is 2 log(q) after q is taken with w >= 0.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -327,10 +329,13 @@ std::array<T, 3> to_euler(const euler_convention& c, const quaternion<T>& q) noe
     return e;
 }
 
-/// Checks a key: finite, and unit to within `tolerance` (then normalized);
-/// anything else is refused with the index and the value. Non-unit keys
-/// beyond the tolerance are refused, not normalized: a key of norm 0.9 is
-/// more likely a wrong field than a rounding.
+/// Checks a key and normalizes it, as SciPy's Rotation.from_quat does: a
+/// key with a component that is not finite, or of norm zero, is refused with
+/// the index and the value (it is no rotation). With a finite `tolerance`
+/// (the `splines` drop-in's 1e-6, the CLI's file check), a key farther than
+/// it from unit norm is refused too (a norm of 0.9 there is more likely a
+/// wrong field than rounding); the native classes' default is infinity:
+/// every other key is normalized.
 template <class T>
 quaternion<T> checked_unit(const quaternion<T>& q, std::size_t index, T tolerance, const char* what = "key") {
     const std::array<T, 4> a = q.array();
@@ -344,6 +349,16 @@ quaternion<T> checked_unit(const quaternion<T>& q, std::size_t index, T toleranc
                             detail::num(double(q.x)) + ", " + detail::num(double(q.y)) + ", " +
                             detail::num(double(q.z)) + "] is not a unit quaternion (norm " + detail::num(double(n)) +
                             ", allowed 1 +- " + detail::num(double(tolerance)) + ")");
+    if (!(n > 0) || !std::isfinite(n)) {
+        // Zero, or a norm below or beyond what T holds: scaled by the largest
+        // component first (then within [1, 2]).
+        T m = 0;
+        for (const T x : a) m = std::max(m, std::abs(x));
+        if (!(m > 0))
+            throw invalid_input(std::string(what) + " " + std::to_string(index) + " [0, 0, 0, 0] has norm 0: not a rotation");
+        const quaternion<T> s{q.w / m, q.x / m, q.y / m, q.z / m};
+        return checked_unit(s, index, std::numeric_limits<T>::infinity(), what);
+    }
     return {q.w / n, q.x / n, q.y / n, q.z / n};
 }
 
