@@ -396,6 +396,21 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", std::string("crspline ") + crspline::version, "Print the version and exit");
     app.require_subcommand(1);
     app.footer(
+        "What crspline does (each with its page under docs/):\n"
+        "  curves          eval, bezier, length, sample, plot: a curve through the points, its\n"
+        "                  derivatives, arc length, Bezier form and figures (docs/cli.md)\n"
+        "  decision        analyze: cusps and self-intersections, and a proved verdict on\n"
+        "                  crossings: simple, crosses or touches (docs/analysis.md)\n"
+        "  rotations       eval, sample on a \"rotations\" file: quaternion splines, SciPy's C2\n"
+        "                  spline, pose curves (docs/rotation.md)\n"
+        "  GIS smoothing   smooth: GeoJSON lines and polygons smoothed, shared borders and\n"
+        "                  containment kept, proved (docs/geo.md)\n"
+        "  fit             fit: the fewest control points within a proved tolerance of dense\n"
+        "                  or noisy samples (docs/fit.md)\n"
+        "  sweeps/strokes  sweep, stroke: tubes and roads along a 3-D curve as meshes, a 2-D\n"
+        "                  curve's outline as polygons (docs/sweep.md)\n"
+        "  rotation fit    the fewest keys within an angle of an orientation stream (Python and\n"
+        "                  C++: crspline.rotation.fit, docs/rotation.md)\n"
         "Example:\n"
         "  echo '{\"points\": [[0, 0], [1, 1], [2, 0]], \"t\": [0, 0.5, 1]}' | crspline eval\n"
         "  crspline bezier curve.json\n"

@@ -9,6 +9,23 @@ plain ndarrays and dicts.
 >>> c.evaluate(c.grid).tolist() == c.points.tolist()          # interpolates
 True
 
+What it does (each with its page under docs/):
+
+* curves: ``CatmullRom``, ``KochanekBartels``: evaluation, derivatives, arc
+  length, tessellation, the Bezier form, nearest points (docs/python.md)
+* decision: ``decide``, ``decide_pair``, ``decide_set``, ``clearance``: a
+  proved verdict on crossings, simple, crosses or touches (docs/analysis.md)
+* rotations: ``crspline.rotation``: quaternion splines, SciPy's C2
+  ``RotationSpline`` converged, pose curves (docs/rotation.md)
+* GIS smoothing: ``crspline.geo.smooth``: GeoPandas layers smoothed with
+  shared borders and containment kept, proved; Dask too (docs/geo.md)
+* fit: ``fit``: the fewest control points within a proved tolerance of
+  dense or noisy samples (docs/fit.md)
+* sweeps/strokes: ``sweep``, ``stroke``: tubes and roads along a 3-D curve
+  as meshes, a 2-D curve's outline as polygons (docs/sweep.md)
+* rotation fit: ``crspline.rotation.fit``: the fewest keys within an angle of
+  an orientation stream (docs/rotation.md)
+
 Conventions (those of the C++ library and of the ``splines`` package):
 
 * ``t`` is the curve parameter, running over ``grid[0] .. grid[-1]``; ``s`` is
