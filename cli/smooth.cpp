@@ -122,7 +122,7 @@ recipe add_geometry(geo::layer& l, std::size_t feature, const json& g, const std
 }
 
 void usage_error(const std::string& m) { throw smooth_error(m + " (usage: crspline smooth --tolerance METRES "
-                                                                "[--alpha A] [--max-deviation METRES] "
+                                                                "[--alpha A] [--max-deviation METRES] [--fit METRES] "
                                                                 "[--topology preserve|none] [-o OUT] [IN])"); }
 
 double number_option(const std::string& name, const char* value) {
@@ -143,6 +143,7 @@ int run(int argc, char** argv) {
         if (a == "--tolerance") opt.tolerance = number_option(a, next), have_tolerance = true, ++i;
         else if (a == "--alpha") opt.alpha = number_option(a, next), ++i;
         else if (a == "--max-deviation") opt.max_deviation = number_option(a, next), ++i;
+        else if (a == "--fit") opt.fit = number_option(a, next), ++i;
         else if (a == "--topology") {
             if (!next || (std::strcmp(next, "preserve") != 0 && std::strcmp(next, "none") != 0))
                 usage_error("--topology must be 'preserve' or 'none'");
@@ -159,6 +160,9 @@ int run(int argc, char** argv) {
                          "  --alpha A           knot exponent, default 0.5 (centripetal)\n"
                          "  --max-deviation M   no curve point farther than M metres from the input\n"
                          "  --topology T        preserve (default) or none (each part alone, unchecked)\n"
+                         "  --fit M             fit each arc with few control points (a subset of its vertices)\n"
+                         "                      within M metres of the input, proved both ways (docs/fit.md);\n"
+                         "                      --tolerance defaults to M/10 then\n"
                          "  -o FILE             output GeoJSON (default: standard output)\n"
                          "GeoJSON only: convert a GeoPackage or Shapefile with ogr2ogr -f GeoJSON, or use\n"
                          "crspline.geo.smooth on a GeoPandas frame (docs/geo.md).\n";
@@ -170,6 +174,10 @@ int run(int argc, char** argv) {
         } else {
             usage_error("more than one input file");
         }
+    }
+    if (opt.fit && !have_tolerance && *opt.fit > 0 && std::isfinite(*opt.fit)) {
+        opt.tolerance = *opt.fit / 10;  // the polylines near the fitted curves
+        have_tolerance = true;
     }
     if (!have_tolerance) usage_error("--tolerance is required");
     // Read.
@@ -342,6 +350,7 @@ int run(int argc, char** argv) {
         f["properties"]["crspline_max_deviation_m"] = rep.max_deviation;
         f["properties"]["crspline_verdict"] = geo::to_string(rep.verdict);
         f["properties"]["crspline_status"] = status;
+        if (opt.fit) f["properties"]["crspline_control_points"] = rep.control_points;
     }
     if (root.is_object()) {
         root["crspline"] = {{"units", "metre (lengths geodesic on WGS 84; tolerance and deviations bound true metres)"},

@@ -49,7 +49,7 @@ py::dict geo_smooth(carray<double> xy, carray<double> extra, carray<std::int64_t
                     carray<std::uint8_t> part_kinds, carray<std::int64_t> part_features, std::size_t feature_count,
                     double alpha, double tolerance, std::optional<double> max_deviation, bool preserve_topology,
                     std::optional<std::array<double, 4>> domain, bool polylines,
-                    std::optional<carray<std::uint8_t>> part_roles) {
+                    std::optional<carray<std::uint8_t>> part_roles, std::optional<double> fit) {
     if (xy.ndim() != 2 || xy.shape(1) != 2)
         throw crspline::invalid_input("xy must have shape (n, 2), got ndim " + std::to_string(xy.ndim()));
     const std::size_t n = std::size_t(xy.shape(0));
@@ -83,6 +83,7 @@ py::dict geo_smooth(carray<double> xy, carray<double> extra, carray<std::int64_t
     opt.max_deviation = max_deviation;
     opt.preserve_topology = preserve_topology;
     opt.polylines = polylines;
+    opt.fit = fit;
     if (domain) opt.domain = box<2>{vec<2>{{(*domain)[0], (*domain)[1]}}, vec<2>{{(*domain)[2], (*domain)[3]}}};
     geo::smooth_result r;
     {
@@ -100,9 +101,11 @@ py::dict geo_smooth(carray<double> xy, carray<double> extra, carray<std::int64_t
     const std::size_t nf = r.features.size();
     std::vector<std::uint8_t> status(nf), verdict(nf);
     std::vector<double> length(nf), deviation(nf);
+    std::vector<std::int64_t> control_points(nf);
     py::list messages(nf);
     for (std::size_t i = 0; i < nf; ++i) {
         const auto& f = r.features[i];
+        control_points[i] = std::int64_t(f.control_points);
         status[i] = std::uint8_t(f.status);
         verdict[i] = std::uint8_t(f.verdict);
         length[i] = f.length;
@@ -121,6 +124,7 @@ py::dict geo_smooth(carray<double> xy, carray<double> extra, carray<std::int64_t
     stats["input_crossings"] = r.stats.input_crossings;
     stats["input_touches"] = r.stats.input_touches;
     stats["swept_vertices"] = r.stats.swept_vertices;
+    stats["restored_vertices"] = r.stats.restored_vertices;
     py::dict d;
     d["xy"] = oxy;
     d["extra"] = oextra;
@@ -129,6 +133,7 @@ py::dict geo_smooth(carray<double> xy, carray<double> extra, carray<std::int64_t
     d["verdict"] = to_numpy(verdict);
     d["length"] = to_numpy(length);
     d["max_deviation"] = to_numpy(deviation);
+    d["control_points"] = to_numpy(control_points);
     d["message"] = messages;
     d["stats"] = stats;
     return d;
@@ -293,7 +298,7 @@ std::vector<geo::detail::arc_work> arcs_of(const carray<double>& xy, const carra
 // tension level's curve lies inside it (a tensioned segment's inner Bézier
 // points are on the segments from its ends to the untensioned ones).
 py::array_t<double> geo_arc_boxes(carray<double> xy, carray<std::int64_t> offsets, carray<std::uint8_t> closed,
-                                  double alpha) {
+                                  double alpha, bool fit) {
     auto arcs = arcs_of(xy, offsets, closed);
     py::array_t<double> out({py::ssize_t(arcs.size()), py::ssize_t(4)});
     double* o = out.mutable_data();
@@ -301,13 +306,18 @@ py::array_t<double> geo_arc_boxes(carray<double> xy, carray<std::int64_t> offset
         py::gil_scoped_release release;
         for (std::size_t i = 0; i < arcs.size(); ++i) {
             auto& a = arcs[i];
-            options<2> opt;
-            opt.alpha = alpha;
-            opt.closed = a.closed;
-            const catmull_rom<2> c(std::span<const geo::detail::p2>(a.pts), opt);
             box<2> b = box<2>::of(a.pts[0]);
-            for (std::size_t s = 0; s < c.segment_count(); ++s)
-                for (const auto& q : c.bezier(s)) b.expand(q);
+            if (fit) {
+                // A fitted arc's curves at every round (detail::fitted_bounds).
+                b = geo::detail::fitted_bounds(std::span<const geo::detail::p2>(a.pts));
+            } else {
+                options<2> opt;
+                opt.alpha = alpha;
+                opt.closed = a.closed;
+                const catmull_rom<2> c(std::span<const geo::detail::p2>(a.pts), opt);
+                for (std::size_t s = 0; s < c.segment_count(); ++s)
+                    for (const auto& q : c.bezier(s)) b.expand(q);
+            }
             o[4 * i] = b.lo[0];
             o[4 * i + 1] = b.lo[1];
             o[4 * i + 2] = b.hi[0];
@@ -324,7 +334,7 @@ py::array_t<double> geo_arc_boxes(carray<double> xy, carray<std::int64_t> offset
 // numbers are the single-process ones.
 py::dict geo_smooth_arcs(carray<double> xy, carray<std::int64_t> offsets, carray<std::uint8_t> closed, double alpha,
                          double tolerance, std::optional<double> max_deviation, bool preserve_topology,
-                         std::optional<std::array<double, 4>> domain_box, double slack) {
+                         std::optional<std::array<double, 4>> domain_box, double slack, std::optional<double> fit) {
     if (!(alpha >= 0 && alpha <= 1))
         throw crspline::invalid_input("alpha must be in [0, 1], got " + crspline::detail::num(alpha));
     if (!(tolerance > 0 && std::isfinite(tolerance)))
@@ -337,12 +347,17 @@ py::dict geo_smooth_arcs(carray<double> xy, carray<std::int64_t> offsets, carray
     opt.tolerance = tolerance;
     opt.max_deviation = max_deviation;
     opt.preserve_topology = preserve_topology;
+    opt.fit = fit;
     if (domain_box)
         opt.domain = box<2>{vec<2>{{(*domain_box)[0], (*domain_box)[1]}}, vec<2>{{(*domain_box)[2], (*domain_box)[3]}}};
     std::vector<std::uint8_t> arc_crossing;
     std::size_t rounds = 0;
     {
         py::gil_scoped_release release;
+        // Each arc fitted alone, as geo::smooth does (the layer's checks of
+        // the fit distance were made there: crspline.geo.dask checks first).
+        if (fit)
+            for (auto& a : arcs) geo::detail::fit_arc(a, alpha, *fit);
         geo::detail::proof pr{arcs, opt, slack};
         pr.run();
         arc_crossing = pr.crossing;
@@ -350,16 +365,21 @@ py::dict geo_smooth_arcs(carray<double> xy, carray<std::int64_t> offsets, carray
     }
     // Lengths (step 4) and the polylines, knots exact.
     std::vector<double> length(arcs.size(), 0), dev(arcs.size(), 0), vu;
-    std::vector<std::int64_t> line_offsets{0}, vseg;
+    std::vector<std::int64_t> line_offsets{0}, vseg, vnext, control(arcs.size(), 0);
     std::vector<double> line;
     for (std::size_t i = 0; i < arcs.size(); ++i) {
         auto& a = arcs[i];
         length[i] = geo::detail::arc_curve_length(a);  // as geo::smooth's step 4
         dev[i] = a.max_dev;
+        control[i] = std::int64_t(a.pts.size());
         for (std::size_t k = 0; k < a.line.points.size(); ++k) {
             line.push_back(a.line.points[k][0]);
             line.push_back(a.line.points[k][1]);
-            vseg.push_back(std::int64_t(a.vseg[k]));
+            // The arc vertices the polyline vertex lies between (a fitted
+            // arc's control points are some of its vertices).
+            const std::size_t s = a.vseg[k];
+            vseg.push_back(std::int64_t(a.fitted() ? a.src[s] % a.full.size() : s));
+            vnext.push_back(std::int64_t(a.fitted() ? a.src[a.next(s)] % a.full.size() : a.next(s)));
             vu.push_back(a.vu[k]);
         }
         line_offsets.push_back(std::int64_t(vseg.size()));
@@ -370,6 +390,8 @@ py::dict geo_smooth_arcs(carray<double> xy, carray<std::int64_t> offsets, carray
     d["xy"] = lxy;
     d["offsets"] = to_numpy(line_offsets);
     d["vseg"] = to_numpy(vseg);
+    d["vnext"] = to_numpy(vnext);
+    d["control_points"] = to_numpy(control);
     d["vu"] = to_numpy(vu);
     d["length"] = to_numpy(length);
     d["max_deviation"] = to_numpy(dev);
@@ -384,7 +406,7 @@ void bind_geo(py::module_& m) {
     m.def("_geo_smooth", &geo_smooth, py::arg("xy"), py::arg("extra"), py::arg("part_offsets"),
           py::arg("part_kinds"), py::arg("part_features"), py::arg("feature_count"), py::arg("alpha"),
           py::arg("tolerance"), py::arg("max_deviation"), py::arg("preserve_topology"), py::arg("domain") = py::none(),
-          py::arg("polylines") = true, py::arg("part_roles") = py::none(),
+          py::arg("polylines") = true, py::arg("part_roles") = py::none(), py::arg("fit") = py::none(),
           "Smooths a layer given as flat arrays (crspline/geo/smooth.hpp); private: use crspline.geo.smooth. "
           "polylines=False: the measures only, the input as output (smooth_options::polylines).");
     py::list statuses, verdicts;
@@ -398,10 +420,11 @@ void bind_geo(py::module_& m) {
           py::arg("part_features"), py::arg("feature_count"), py::arg("part_roles") = py::none(),
           "Step 1 of geo::smooth (statuses, cleaned parts); private: used by crspline.geo.dask.");
     m.def("_geo_arc_boxes", &geo_arc_boxes, py::arg("xy"), py::arg("offsets"), py::arg("closed"), py::arg("alpha"),
+          py::arg("fit") = false,
           "Boxes holding every tension level's curve of each arc; private: used by crspline.geo.dask.");
     m.def("_geo_smooth_arcs", &geo_smooth_arcs, py::arg("xy"), py::arg("offsets"), py::arg("closed"),
           py::arg("alpha"), py::arg("tolerance"), py::arg("max_deviation"), py::arg("preserve_topology"),
-          py::arg("domain"), py::arg("slack"),
+          py::arg("domain"), py::arg("slack"), py::arg("fit") = py::none(),
           "Steps 3-4 of geo::smooth on a closed group of arcs; private: used by crspline.geo.dask.");
     m.attr("_geo_statuses") = statuses;
     m.attr("_geo_verdicts") = verdicts;

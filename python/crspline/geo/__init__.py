@@ -55,9 +55,10 @@ import numpy as np
 
 from .. import _crspline
 
-__all__ = ["smooth", "measure", "geographic_frame"]
+__all__ = ["smooth", "measure", "fit", "geographic_frame"]
 
 _COLUMNS = ("length", "curve_length", "max_deviation", "verdict", "status")
+_FIT_COLUMNS = ("length", "control_points", "deviation", "verdict", "status")
 _TOPOLOGIES = ("preserve", "none")
 
 
@@ -296,7 +297,7 @@ class _Frame:
         return np.column_stack((lonlat[:, 0] * self.sx, lonlat[:, 1] * self.sy))
 
 
-def _run(series, *, alpha, tolerance, max_deviation, preserve):
+def _run(series, *, alpha, tolerance, max_deviation, preserve, fit=None):
     geoms = list(series.values)
     crs = series.crs
     prep = _Prepared(geoms, crs is not None and crs.is_geographic)
@@ -304,7 +305,8 @@ def _run(series, *, alpha, tolerance, max_deviation, preserve):
     frame_xy = frame.forward(prep.lonlat)
     r = _crspline._geo_smooth(frame_xy, prep.z, prep.offsets, prep.kinds, prep.features, prep.layer.feature_count,
                               float(alpha), float(tolerance), None if max_deviation is None else float(max_deviation),
-                              bool(preserve), frame.domain, part_roles=prep.roles)
+                              bool(preserve), frame.domain, part_roles=prep.roles,
+                              fit=None if fit is None else float(fit))
     return _finish(prep, frame, frame_xy, r)
 
 
@@ -395,8 +397,10 @@ def _finish(prep, frame, frame_xy, r):
         if i in layer.unsupported or statuses[r["status"][i]] == "invalid":
             length[i] = curve_length[i] = 0.0  # passed through unmeasured (coordinates may be NaN)
     verdict = [verdicts[v] for v in r["verdict"]]
-    return (new, length, np.asarray(r["max_deviation"], dtype=float), verdict, status, r.get("stats", {}),
-            curve_length)
+    cols = {"length": length, "curve_length": curve_length, "max_deviation": np.asarray(r["max_deviation"], dtype=float),
+            "verdict": verdict, "status": status,
+            "control_points": np.asarray(r["control_points"], dtype=np.int64)}
+    return new, cols, r.get("stats", {})
 
 
 def _geodesic_lengths(lonlat, offsets, features, feature_count):
@@ -451,7 +455,7 @@ def _check(alpha, tolerance, max_deviation, topology):
         raise ValueError("tolerance is required (a distance in the layer's units, metres on a geographic CRS)")
 
 
-def _frame(data, series, new_geoms, columns):
+def _frame(data, series, new_geoms, columns, names=_COLUMNS):
     import geopandas as gpd
 
     if data is None:
@@ -459,7 +463,7 @@ def _frame(data, series, new_geoms, columns):
                                geometry="geometry", crs=series.crs)
         out.index = series.index
     else:
-        for c in _COLUMNS:
+        for c in names:
             if c in data.columns:
                 raise ValueError(f"the input already has a column named {c!r}; rename it first")
         out = data.copy()
@@ -486,11 +490,9 @@ def smooth(data, *, alpha=0.5, tolerance=None, max_deviation=None, topology="pre
     """
     _check(alpha, tolerance, max_deviation, topology)
     data, series = _as_geoseries(data)
-    new, length, dev, verdict, status, stats, curve_length = _run(series, alpha=alpha, tolerance=tolerance,
-                                                                  max_deviation=max_deviation,
-                                                                  preserve=topology == "preserve")
-    out = _frame(data, series, new, {"length": length, "curve_length": curve_length, "max_deviation": dev,
-                                     "verdict": verdict, "status": status})
+    new, cols, stats = _run(series, alpha=alpha, tolerance=tolerance, max_deviation=max_deviation,
+                            preserve=topology == "preserve")
+    out = _frame(data, series, new, {c: cols[c] for c in _COLUMNS})
     out.attrs["crspline_stats"] = dict(stats)
     return out
 
@@ -505,9 +507,34 @@ def measure(data, *, alpha=0.5, tolerance=None):
     `status` as smooth() gives it."""
     _check(alpha, tolerance, None, "none")
     data, series = _as_geoseries(data)
-    _, length, dev, _, status, _, curve_length = _run(series, alpha=alpha, tolerance=tolerance,
-                                                      max_deviation=None, preserve=False)
-    _, _, _, verdict, _, _, _ = _run(series, alpha=alpha, tolerance=tolerance, max_deviation=None, preserve=True)
-    return _frame(data, series, list(series.values),
-                  {"length": length, "curve_length": curve_length, "max_deviation": dev, "verdict": verdict,
-                   "status": status})
+    _, cols, _ = _run(series, alpha=alpha, tolerance=tolerance, max_deviation=None, preserve=False)
+    _, topo, _ = _run(series, alpha=alpha, tolerance=tolerance, max_deviation=None, preserve=True)
+    cols["verdict"] = topo["verdict"]
+    return _frame(data, series, list(series.values), {c: cols[c] for c in _COLUMNS})
+
+
+def fit(data, *, tolerance=None, alpha=0.5, topology="preserve"):
+    """Fit every line and ring of a GeoDataFrame or GeoSeries with few
+    control points (issue 40): each arc of the coverage (each shared border
+    once, its junctions kept) becomes a Catmull-Rom curve through a subset of
+    its vertices, proved within `tolerance` of the input both ways (every
+    curve point near the input line, every input vertex near the curve),
+    with the smoothing's proof on the fitted curves: no new crossings, no
+    changed containment within or between features; where a proof fails,
+    the vertices left out there come back. The geometry is the fitted
+    curves' polylines (within tolerance / 10 of the curves). Columns:
+    `control_points` (the vertices kept, all parts), `deviation` (the proved
+    distance, <= tolerance), `length` (of the output, as smooth()),
+    `verdict`, `status`. Units as smooth(): metres on a geographic CRS.
+    topology: "preserve" (the default) or "none" (each part alone, fitted
+    and proved within the tolerance, no crossing proof)."""
+    _check(alpha, tolerance, None, topology)
+    if not (isinstance(tolerance, (int, float, np.floating, np.integer)) and math.isfinite(tolerance) and tolerance > 0):
+        raise ValueError(f"tolerance must be a positive finite distance, got {tolerance!r}")
+    data, series = _as_geoseries(data)
+    new, cols, stats = _run(series, alpha=alpha, tolerance=float(tolerance) / 10, max_deviation=None,
+                            preserve=topology == "preserve", fit=float(tolerance))
+    out = _frame(data, series, new, {c: (cols["max_deviation"] if c == "deviation" else cols[c])
+                                     for c in _FIT_COLUMNS}, _FIT_COLUMNS)
+    out.attrs["crspline_stats"] = dict(stats)
+    return out

@@ -45,20 +45,38 @@ form one group, so step 4 for Natural Earth's Eurasia and Africa is one
 task (docs/geo.md says why cutting a group needs rounds across tasks).
 Separate lines and islands spread over the workers.
 
+``fit(ddf, crs=..., tolerance=...)`` (issue 40) is crspline.geo.fit's path
+through the same stages: each distinct arc fitted in its group's task (the
+fit of an arc depends on the arc alone), with boxes that hold every hull a
+fitted arc can have (its input box grown by its diagonal, as the core's
+proof takes them), so the rows are crspline.geo.fit's, byte for byte.
+Stages 1-3 are in ``_dask_arcs.py``.
+
 ``write_partitions(result, directory, crs=...)`` writes one file per
 partition (GeoJSON by default; any fiona driver), each by a task on a worker.
 """
 from __future__ import annotations
 
-import copy
 import os
-import zlib
 
 import numpy as np
 
-__all__ = ["smooth", "write_partitions", "arc_counts"]
+from ._dask_arcs import (  # stages 1-3
+    _prepare,
+    _layer_info,
+    _vertex_keys,
+    _clean,
+    _junctions,
+    _cut,
+    _arc_split,
+    _distinct_arcs,
+    _flat,
+)
+
+__all__ = ["smooth", "fit", "write_partitions", "arc_counts"]
 
 _OUT_COLUMNS = ("length", "curve_length", "max_deviation", "verdict", "status")
+_FIT_COLUMNS = ("length", "control_points", "deviation", "verdict", "status")
 
 
 def _verdict(name):
@@ -66,251 +84,6 @@ def _verdict(name):
     from .. import _crspline
 
     return _crspline._geo_verdicts.index(name)
-_POS_BITS = 40  # a vertex's place in layer order: partition << 40 | index in the partition
-
-
-# --- 1. per partition --------------------------------------------------------
-
-def _decode(df, geometry):
-    """A partition's WKB column as Shapely geometries (None stays None)."""
-    from shapely import wkb
-
-    return [None if b is None else wkb.loads(bytes(b)) for b in df[geometry]]
-
-
-def _prepare(df, geometry, geographic):
-    from . import _Prepared
-
-    prep = _Prepared(_decode(df, geometry), geographic)
-    return {"prep": prep, "stats": prep.frame_stats() if geographic else None, "has_z": prep.layer.has_z,
-            "features": prep.layer.feature_count}
-
-
-def _layer_info(prepared, geographic):
-    """Layer-wide numbers: the frame, Z or not, each partition's first
-    feature (in layer order)."""
-    from . import _Frame
-
-    frame = _Frame(geographic, [p["stats"] for p in prepared])
-    first = np.concatenate(([0], np.cumsum([p["features"] for p in prepared])))
-    return {"frame": frame, "has_z": any(p["has_z"] for p in prepared), "first_feature": first}
-
-
-def _vertex_keys(xy):
-    """Exact coordinates as integer keys (-0 is 0), one row per vertex."""
-    a = np.where(xy == 0, 0.0, xy)
-    return np.ascontiguousarray(a).view(np.int64).reshape(-1, 2)
-
-
-def _bucket_of_keys(keys, buckets):
-    h = (keys[:, 0].astype(np.uint64) * np.uint64(0x9E3779B97F4A7C15)) ^ keys[:, 1].astype(np.uint64)
-    h ^= h >> np.uint64(29)
-    return (h % np.uint64(buckets)).astype(np.int64)
-
-
-def _clean(a, info, index, buckets, preserve):
-    """Frame coordinates, the core's cleaning, and the vertex records for
-    the junction shuffle (bucketed by vertex key)."""
-    from .. import _crspline
-
-    prep = a["prep"]
-    if info["has_z"] and not prep.layer.has_z:
-        # Z somewhere in the layer: every part gets it (0 where it had none).
-        prep = copy.copy(prep)
-        prep.layer = copy.copy(prep.layer)
-        prep.layer.has_z = True
-        prep.z = np.zeros((len(prep.xy), 1))
-    frame = info["frame"]
-    frame_xy = frame.forward(prep.lonlat)
-    c = _crspline._geo_clean(frame_xy, prep.offsets, prep.kinds, prep.features, prep.layer.feature_count,
-                             part_roles=prep.roles)
-    verts = c["vertices"]
-    pts = frame_xy[verts]
-    scale = float(np.max(np.abs(pts))) if len(pts) else 0.0
-    out = {"prep": prep, "frame_xy": frame_xy, "clean": c, "scale": scale, "index": index}
-    if not preserve:
-        return out
-    keys = _vertex_keys(pts)
-    offs = c["offsets"]
-    n = len(verts)
-    ring = c["rings"].astype(bool)
-    # Each vertex's neighbours along its part (both ways; a ring closes).
-    nxt = np.arange(1, n + 1)
-    prv = np.arange(-1, n - 1)
-    starts, ends = offs[:-1], offs[1:] - 1
-    nxt[ends] = np.where(ring, starts, -1)
-    prv[starts] = np.where(ring, ends, -1)
-    line_end = np.zeros(n, dtype=bool)
-    line_end[starts[~ring]] = True
-    line_end[ends[~ring]] = True
-    pos = (np.int64(index) << _POS_BITS) + np.arange(n, dtype=np.int64)
-    rec_v, rec_n = [], []
-    for nb in (nxt, prv):
-        has = nb >= 0
-        rec_v.append(np.flatnonzero(has))
-        rec_n.append(nb[has])
-    v = np.concatenate(rec_v)
-    nbr = np.concatenate(rec_n)
-    b_vertex = _bucket_of_keys(keys, buckets)
-    # Per bucket: every vertex once (key, place, line end) and its edges.
-    out["keys"] = keys
-    out["vbuckets"] = []
-    for b in range(buckets):
-        mine = np.flatnonzero(b_vertex == b)
-        edges = v[b_vertex[v] == b]
-        nbs = nbr[b_vertex[v] == b]
-        out["vbuckets"].append({"vertex": mine, "key": keys[mine], "pos": pos[mine], "line_end": line_end[mine],
-                                "edge_key": keys[edges], "edge_nbr": keys[nbs]})
-    return out
-
-
-# --- 2. junctions, by vertex ---------------------------------------------------
-
-def _junctions(*records):
-    """One bucket of vertices from every partition: junction flag and first
-    place in layer order per vertex key, answered to each partition for the
-    vertices it sent."""
-    keys = np.concatenate([r["key"] for r in records]).reshape(-1, 2)
-    uniq, inv = np.unique(keys, axis=0, return_inverse=True)
-    inv = inv.reshape(-1)
-    first = np.full(len(uniq), np.iinfo(np.int64).max, dtype=np.int64)
-    np.minimum.at(first, inv, np.concatenate([r["pos"] for r in records]))
-    junction = np.zeros(len(uniq), dtype=bool)
-    np.logical_or.at(junction, inv, np.concatenate([r["line_end"] for r in records]))
-    # Distinct neighbours per vertex.
-    ek = np.concatenate([r["edge_key"] for r in records]).reshape(-1, 2)
-    en = np.concatenate([r["edge_nbr"] for r in records]).reshape(-1, 2)
-    if len(ek):
-        pairs = np.unique(np.hstack((ek, en)), axis=0)
-        vk = pairs[:, :2]
-        idx = _rows_in(uniq, vk)
-        count = np.bincount(idx, minlength=len(uniq))
-    else:
-        count = np.zeros(len(uniq), dtype=np.int64)
-    junction |= count != 2
-    answers, k = [], 0
-    for r in records:
-        m = len(r["key"])
-        sel = inv[k:k + m]
-        answers.append({"vertex": r["vertex"], "junction": junction[sel], "first": first[sel]})
-        k += m
-    return answers
-
-
-def _rows_in(table, rows):
-    """Index in `table` (unique rows, sorted as np.unique sorts them) of each
-    row of `rows` (all present)."""
-    t = np.ascontiguousarray(table).view([("x", np.int64), ("y", np.int64)]).reshape(-1)
-    r = np.ascontiguousarray(rows).view([("x", np.int64), ("y", np.int64)]).reshape(-1)
-    return np.searchsorted(t, r)
-
-
-# --- 3. arcs, by key -----------------------------------------------------------
-
-def _cut(b, info, buckets, *answers):
-    """The partition's parts cut into arcs at the layer's junctions, each in
-    the canonical direction geo::smooth gives it (by first occurrence in
-    layer order), bucketed by arc key."""
-    c = b["clean"]
-    n = len(c["vertices"])
-    junction = np.zeros(n, dtype=bool)
-    first = np.zeros(n, dtype=np.int64)
-    for a in answers:
-        junction[a["vertex"]] = a["junction"]
-        first[a["vertex"]] = a["first"]
-    keys, offs = b["keys"], c["offsets"]
-    pts = b["frame_xy"][c["vertices"]]
-    prep = b["prep"]
-    extra = prep.z[c["vertices"]] if prep.layer.has_z else None
-    p_index = b["index"]
-    feature0 = int(info["first_feature"][p_index])
-    parts = []  # per clean part: [(arc key, reversed)]
-    abuckets = [dict() for _ in range(buckets)]
-    for q in range(len(offs) - 1):
-        s, e = int(offs[q]), int(offs[q + 1])
-        ids = first[s:e]
-        jn = junction[s:e]
-        m = e - s
-        runs = []  # (local indices in the part, closed)
-        if c["rings"][q]:
-            jidx = np.flatnonzero(jn)
-            if len(jidx) == 0:
-                runs.append((np.arange(m), True))
-            else:
-                walk = (jidx[0] + np.arange(m + 1)) % m
-                cuts = np.flatnonzero(jn[walk])
-                for u, w in zip(cuts[:-1], cuts[1:]):
-                    runs.append((walk[u:w + 1], False))
-        else:
-            cuts = np.flatnonzero(jn)
-            for u, w in zip(cuts[:-1], cuts[1:]):
-                runs.append((np.arange(u, w + 1), False))
-        arcs = []
-        for k, (seq, closed) in enumerate(runs):
-            sid = ids[seq]
-            reversed_ = False
-            if closed:
-                r = int(np.argmin(sid))
-                seq = np.roll(seq, -r)
-                sid = ids[seq]
-                if sid[-1] < sid[1]:
-                    seq = np.concatenate((seq[:1], seq[1:][::-1]))
-                    reversed_ = True
-            else:
-                diff = np.flatnonzero(sid != sid[::-1])
-                if len(diff) and sid[::-1][diff[0]] < sid[diff[0]]:
-                    seq = seq[::-1]
-                    reversed_ = True
-            g = s + seq
-            key = keys[g].tobytes() + (b"c" if closed else b"o")
-            arcs.append((key, reversed_))
-            bucket = zlib.crc32(key) % buckets
-            rec = abuckets[bucket].get(key)
-            order = (p_index, q, k)
-            feature = feature0 + int(c["features"][q])
-            if rec is None:
-                abuckets[bucket][key] = {"order": order, "xy": pts[g], "closed": closed,
-                                         "extra": None if extra is None else extra[g],
-                                         "features": {feature}, "partitions": {p_index}}
-            else:
-                rec["features"].add(feature)
-        parts.append(arcs)
-    return {"parts": parts, "abuckets": abuckets}
-
-
-def _arc_split(cut, bucket):
-    return cut["abuckets"][bucket]
-
-
-def _distinct_arcs(alpha, *records):
-    """One bucket of arc records from every partition: each distinct arc
-    once (its first occurrence's coordinates and Z, all its features and
-    partitions) and the box that holds it at every tension."""
-    from .. import _crspline
-
-    arcs = {}
-    for r in records:
-        for key, rec in r.items():
-            have = arcs.get(key)
-            if have is None:
-                arcs[key] = dict(rec, features=set(rec["features"]), partitions=set(rec["partitions"]))
-            else:
-                if rec["order"] < have["order"]:
-                    for f in ("order", "xy", "extra"):
-                        have[f] = rec[f]
-                have["features"] |= rec["features"]
-                have["partitions"] |= rec["partitions"]
-    keys = sorted(arcs, key=lambda k: arcs[k]["order"])
-    xy, offs, closed = _flat([arcs[k] for k in keys])
-    boxes = _crspline._geo_arc_boxes(xy, offs, closed, float(alpha)) if keys else np.zeros((0, 4))
-    return {"keys": keys, "arcs": arcs, "boxes": boxes}
-
-
-def _flat(arcs):
-    xy = np.concatenate([a["xy"] for a in arcs]) if arcs else np.zeros((0, 2))
-    offs = np.concatenate(([0], np.cumsum([len(a["xy"]) for a in arcs]))).astype(np.int64)
-    closed = np.asarray([a["closed"] for a in arcs], dtype=np.uint8)
-    return xy, offs, closed
 
 
 # --- 4. groups of arcs that may meet --------------------------------------------
@@ -416,7 +189,8 @@ def _smooth_groups(options, frame_domain, slack, groups, partitions, *pieces):
         arcs = [m[1] for m in members]
         xy, offs, closed = _flat(arcs)
         r = _crspline._geo_smooth_arcs(xy, offs, closed, float(options["alpha"]), float(options["tolerance"]),
-                                       None if max_dev is None else float(max_dev), True, frame_domain, slack)
+                                       None if max_dev is None else float(max_dev), True, frame_domain, slack,
+                                       fit=options.get("fit"))
         # Verdicts: an arc touches when several features use it or one of
         # its ends (a junction) is shared by several features' arcs: all
         # arcs ending at a vertex are in its group (their boxes meet there).
@@ -435,7 +209,8 @@ def _smooth_groups(options, frame_domain, slack, groups, partitions, *pieces):
             verdict = _verdict("crosses") if crossing == 2 else (
                 _verdict("touches") if touches or crossing == 1 else _verdict("simple"))
             a, b = lo[i], lo[i + 1]
-            result = {"xy": r["xy"][a:b], "vseg": r["vseg"][a:b], "vu": r["vu"][a:b],
+            result = {"xy": r["xy"][a:b], "vseg": r["vseg"][a:b], "vnext": r["vnext"][a:b], "vu": r["vu"][a:b],
+                      "control_points": int(r["control_points"][i]),
                       "length": float(r["length"][i]), "max_deviation": float(r["max_deviation"][i]),
                       "verdict": verdict, "extra": arc["extra"], "n": len(arc["xy"]), "closed": arc["closed"]}
             for p in arc["partitions"]:
@@ -457,19 +232,24 @@ def _assemble_parts(b, arc_of, part_arcs):
     length = np.zeros(nf)
     dev = np.zeros(nf)
     verdict = np.zeros(nf, dtype=np.uint8)
+    control = np.zeros(nf, dtype=np.int64)
     out_xy, out_z, offsets = [], [], [0]
     for p in range(nparts):
         s, e = int(prep.offsets[p]), int(prep.offsets[p + 1])
         q = clean_of[p]
         if q < 0:
+            control[int(prep.features[p])] += e - s  # passed through
             out_xy.append(frame_xy[s:e])
             out_z.append(prep.z[s:e])
             offsets.append(offsets[-1] + (e - s))
             continue
         f = int(prep.features[p])
         chunks, zchunks = [], []
+        if not c["rings"][q]:
+            control[f] += 1  # a line's last point (as geo::smooth counts)
         for j, (key, reversed_) in enumerate(part_arcs[q]):
             a = arc_of[key]
+            control[f] += a["control_points"] - (0 if a["closed"] else 1)
             length[f] += a["length"]
             dev[f] = max(dev[f], a["max_deviation"])
             verdict[f] = max(verdict[f], a["verdict"])
@@ -481,7 +261,7 @@ def _assemble_parts(b, arc_of, part_arcs):
             chunks.append(a["xy"][idx])
             if E:
                 seg = a["vseg"][idx]
-                nxt = np.where(seg + 1 == a["n"], 0, seg + 1)
+                nxt = a["vnext"][idx]
                 e0, e1 = a["extra"][seg, 0], a["extra"][nxt, 0]
                 u = a["vu"][idx]
                 zchunks.append(np.where(u == 0, e0, np.where(u == 1, e1, e0 + u * (e1 - e0))).reshape(-1, 1))
@@ -503,28 +283,27 @@ def _assemble_parts(b, arc_of, part_arcs):
     return {"xy": np.concatenate(out_xy) if out_xy else np.zeros((0, 2)),
             "extra": np.concatenate(out_z) if out_z else np.zeros((0, E)),
             "part_offsets": np.asarray(offsets, dtype=np.int64), "status": c["status"],
-            "message": message, "verdict": verdict, "length": length, "max_deviation": dev}
+            "message": message, "verdict": verdict, "length": length, "max_deviation": dev,
+            "control_points": control}
 
 
-def _finish_partition(df, b, info, geometry, r):
+def _finish_partition(df, b, info, geometry, r, options):
     from . import _finish
 
-    new, length, dev, verdict, status, _, curve_length = _finish(b["prep"], info["frame"], b["frame_xy"], r)
+    new, cols, _ = _finish(b["prep"], info["frame"], b["frame_xy"], r)
+    cols["deviation"] = cols["max_deviation"]
     out = df.copy()
     out[geometry] = [None if g is None else g.wkb for g in new]
-    out["length"] = length
-    out["curve_length"] = curve_length
-    out["max_deviation"] = dev
-    out["verdict"] = verdict
-    out["status"] = status
+    for c in (_FIT_COLUMNS if options.get("fit") is not None else _OUT_COLUMNS):
+        out[c] = cols[c]
     return out
 
 
-def _assemble(df, b, cut, info, geometry, *answers):
+def _assemble(df, b, cut, info, geometry, options, *answers):
     arc_of = {}
     for a in answers:
         arc_of.update(a)
-    return _finish_partition(df, b, info, geometry, _assemble_parts(b, arc_of, cut["parts"]))
+    return _finish_partition(df, b, info, geometry, _assemble_parts(b, arc_of, cut["parts"]), options)
 
 
 def _assemble_alone(df, b, info, geometry, options, slack):
@@ -538,24 +317,26 @@ def _assemble_alone(df, b, info, geometry, options, slack):
     closed = np.asarray(c["rings"], dtype=np.uint8)
     max_dev = options["max_deviation"]
     r = _crspline._geo_smooth_arcs(pts, offs, closed, float(options["alpha"]), float(options["tolerance"]),
-                                   None if max_dev is None else float(max_dev), False, info["frame"].domain, slack)
+                                   None if max_dev is None else float(max_dev), False, info["frame"].domain, slack,
+                                   fit=options.get("fit"))
     prep = b["prep"]
     extra = prep.z[c["vertices"]] if prep.layer.has_z else None
     arc_of, parts = {}, []
     for q in range(len(offs) - 1):
         a, e = r["offsets"][q], r["offsets"][q + 1]
-        arc_of[q] = {"xy": r["xy"][a:e], "vseg": r["vseg"][a:e], "vu": r["vu"][a:e], "length": float(r["length"][q]),
+        arc_of[q] = {"xy": r["xy"][a:e], "vseg": r["vseg"][a:e], "vnext": r["vnext"][a:e], "vu": r["vu"][a:e],
+                     "control_points": int(r["control_points"][q]), "length": float(r["length"][q]),
                      "max_deviation": float(r["max_deviation"][q]), "verdict": 0,
                      "extra": None if extra is None else extra[offs[q]:offs[q + 1]],
                      "n": int(offs[q + 1] - offs[q]), "closed": bool(closed[q])}
         parts.append([(q, False)])
-    return _finish_partition(df, b, info, geometry, _assemble_parts(b, arc_of, parts))
+    return _finish_partition(df, b, info, geometry, _assemble_parts(b, arc_of, parts), options)
 
 
-def _check_frame(ddf, geometry, alpha, tolerance, max_deviation, topology):
+def _check_frame(ddf, geometry, alpha, tolerance, max_deviation, topology, names=_OUT_COLUMNS):
     from . import _check
 
-    for c in _OUT_COLUMNS:
+    for c in names:
         if c in ddf.columns:
             raise ValueError(f"the input already has a column named {c!r}; rename it first")
     if geometry not in ddf.columns:
@@ -563,7 +344,7 @@ def _check_frame(ddf, geometry, alpha, tolerance, max_deviation, topology):
     _check(alpha, tolerance, max_deviation, topology)
 
 
-def _stages(ddf, *, crs, geometry, alpha, tolerance, max_deviation, topology, buckets):
+def _stages(ddf, *, crs, geometry, alpha, tolerance, max_deviation, topology, buckets, fit=None):
     """The task graph, stage by stage (lazy Dask objects): "outs" (one
     pandas frame per partition) and, with topology "preserve", "distinct"
     (the distinct arcs per bucket) and "groups"."""
@@ -572,7 +353,7 @@ def _stages(ddf, *, crs, geometry, alpha, tolerance, max_deviation, topology, bu
 
     geographic = crs is not None and pyproj.CRS.from_user_input(crs).is_geographic
     preserve = topology == "preserve"
-    options = dict(alpha=alpha, tolerance=tolerance, max_deviation=max_deviation)
+    options = dict(alpha=alpha, tolerance=tolerance, max_deviation=max_deviation, fit=fit)
     delayed = dask.delayed
     frames = ddf.to_delayed()
     P = len(frames)
@@ -591,7 +372,8 @@ def _stages(ddf, *, crs, geometry, alpha, tolerance, max_deviation, topology, bu
     junctions = [delayed(_junctions, nout=P)(*[c["vbuckets"][j] for c in cleaned]) for j in range(B)]
     # 3. Arcs, shuffled by arc key.
     cuts = [delayed(_cut)(c, info, B, *[junctions[j][i] for j in range(B)]) for i, c in enumerate(cleaned)]
-    distinct = [delayed(_distinct_arcs)(alpha, *[delayed(_arc_split)(cut, j) for cut in cuts]) for j in range(B)]
+    distinct = [delayed(_distinct_arcs)((alpha, fit), *[delayed(_arc_split)(cut, j) for cut in cuts])
+                for j in range(B)]
     # 4. Groups of arcs that may meet (boxes only in one task), smoothed.
     groups = delayed(_groups)(slack, tolerance, B, *[delayed(_box_summary)(d) for d in distinct])
     domain = info["frame"].domain
@@ -600,7 +382,7 @@ def _stages(ddf, *, crs, geometry, alpha, tolerance, max_deviation, topology, bu
                                                   for j, d in enumerate(distinct)])
                 for t in range(B)]
     # 5. Back to the partitions.
-    outs = [delayed(_assemble)(f, c, cut, info, geometry, *[smoothed[t][i] for t in range(B)])
+    outs = [delayed(_assemble)(f, c, cut, info, geometry, options, *[smoothed[t][i] for t in range(B)])
             for i, (f, c, cut) in enumerate(zip(frames, cleaned, cuts))]
     return {"outs": outs, "distinct": distinct, "groups": groups}
 
@@ -621,6 +403,26 @@ def smooth(ddf, *, crs, geometry="geometry", alpha=0.5, tolerance=None, max_devi
                  topology=topology, buckets=buckets)
     meta = ddf._meta.copy()
     for c, dtype in zip(_OUT_COLUMNS, ("f8", "f8", "f8", "object", "object")):
+        meta[c] = pd.Series([], dtype=dtype)
+    return dd.from_delayed(st["outs"], meta=meta, divisions=ddf.divisions)
+
+
+def fit(ddf, *, crs, geometry="geometry", alpha=0.5, tolerance=None, topology="preserve", buckets=None):
+    """Fit a Dask DataFrame's WKB geometry column with few control points
+    (see crspline.geo.fit for what is proved and the columns); the rows are
+    crspline.geo.fit's on the same layer, byte for byte. Returns a lazy Dask
+    DataFrame: the geometry (WKB) and the columns length, control_points,
+    deviation, verdict and status."""
+    import dask.dataframe as dd
+    import pandas as pd
+
+    _check_frame(ddf, geometry, alpha, tolerance, None, topology, _FIT_COLUMNS)
+    if not (isinstance(tolerance, (int, float, np.floating, np.integer)) and np.isfinite(tolerance) and tolerance > 0):
+        raise ValueError(f"tolerance must be a positive finite distance, got {tolerance!r}")
+    st = _stages(ddf, crs=crs, geometry=geometry, alpha=alpha, tolerance=float(tolerance) / 10, max_deviation=None,
+                 topology=topology, buckets=buckets, fit=float(tolerance))
+    meta = ddf._meta.copy()
+    for c, dtype in zip(_FIT_COLUMNS, ("f8", "i8", "f8", "object", "object")):
         meta[c] = pd.Series([], dtype=dtype)
     return dd.from_delayed(st["outs"], meta=meta, divisions=ddf.divisions)
 
