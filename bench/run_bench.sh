@@ -72,6 +72,18 @@ PYTHONPATH="$py_build/python" /usr/bin/python3 bench/geo_bench.py --sizes "${GEO
     --out "$results/geo-$stamp.json" | tee "$results/latest-geo.txt"
 PYTHONPATH="$py_build/python" /usr/bin/python3 bench/geo_bench.py --sizes 1000000 --rows length --frame-sizes "" \
     --dask-lines 0 --reps 1 --out "$results/geo-1e6-$stamp.json" | tee -a "$results/latest-geo.txt"
+# Fit (issue 40): counts against Ramer-Douglas-Peucker and speed on the real
+# corpus, and the peers (simplify-js, paper.js) on the same lines with their
+# measured deviation.
+echo
+"$build/crspline_fit_bench" | tee "$results/latest-fit.txt"
+if [[ ! -d bench/js/fit/node_modules ]]; then (cd bench/js/fit && npm ci --no-audit --no-fund); fi
+node bench/js/fit_peers.mjs tests/reference/fit/*.txt | tee "$results/latest-fit-peers.json"
+# Sweeps (issue 41): a 10^6-vertex tube against the memory floor, and three.js'
+# TubeGeometry at the same counts.
+echo
+"$build/crspline_sweep_bench" --dump-points="$results/knot48.json" | tee "$results/latest-sweep.json"
+node bench/js/tube_bench.mjs "$results/knot48.json" "$reps" | tee "$results/latest-tube-threejs.json"
 # Instruction counts (callgrind): stable where the times above are not.
 if [[ -x "$build/crspline_instructions" ]] && command -v valgrind >/dev/null; then
     echo
