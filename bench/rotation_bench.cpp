@@ -12,6 +12,10 @@
 //       10^5 keys; linear in the keys (block tridiagonal steps), so time per
 //       key (the counter) should stay flat.
 //   rotation/pose/eval: a pose curve, 10^6 samples.
+//   rotation/fit/mocap/<samples>: keyframe reduction (rotation/fit.hpp) of a
+//       120 Hz motion-capture-like stream (sums of sinusoids of the rotation
+//       vector, 0.05 degree noise) at 0.5 degrees; per input sample, and the
+//       kept keys as a counter. Linear in the samples: the rate should stay flat.
 //   */portable: the same batch on the portable lanes (SSE2) where the CPU
 //       has the AVX2 clone (batch.hpp), to show what the clone gains.
 // Figures go to BENCHMARKS.md with the run that produced them.
@@ -19,6 +23,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <numbers>
 #include <random>
 #include <span>
 #include <vector>
@@ -26,6 +31,7 @@
 #include <crspline/catmull_rom.hpp>
 #include <crspline/rotation/c2.hpp>
 #include <crspline/rotation/catmull_rom.hpp>
+#include <crspline/rotation/fit.hpp>
 #include <crspline/rotation/pose.hpp>
 
 namespace {
@@ -207,6 +213,34 @@ void eval_pose(benchmark::State& state) {
 
 }  // namespace
 
+void fit_mocap(benchmark::State& state) {
+    const auto n = std::size_t(state.range(0));
+    std::mt19937_64 rng(40);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::normal_distribution<double> g;
+    double amp[9], freq[9], phase[9];
+    for (int k = 0; k < 9; ++k) amp[k] = u(rng), freq[k] = u(rng), phase[k] = u(rng);
+    const double noise = 0.05 * std::numbers::pi / 180;
+    std::vector<double> t(n);
+    std::vector<quat> q(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        t[i] = double(i) / 120;
+        rot::vec3<double> r{};
+        for (int k = 0; k < 9; ++k)
+            r[std::size_t(k / 3)] += 0.8 * amp[k] * std::sin(2 * std::numbers::pi * (0.2 + 1.8 * freq[k]) * t[i] + 6.3 * phase[k]) / 3;
+        const rot::vec3<double> e{{g(rng) * noise, g(rng) * noise, g(rng) * noise}};
+        q[i] = rot::from_rotation_vector(e) * rot::from_rotation_vector(r);
+    }
+    std::size_t keys = 0;
+    for (auto _ : state) {
+        const auto f = rot::fit(t, q, 0.5 * std::numbers::pi / 180);
+        keys = f.count();
+        benchmark::DoNotOptimize(keys);
+    }
+    state.counters["keys"] = double(keys);
+    state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(n));
+}
+
 BENCHMARK(eval_euclid4)->Name("rotation/euclid4/eval")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(eval_quaternion, catmull_rom, rot::spline_kind::catmull_rom)
     ->Name("rotation/eval/catmull_rom")->Unit(benchmark::kMillisecond);
@@ -233,5 +267,7 @@ BENCHMARK(eval_c2_scalar)->Name("rotation/eval/c2/scalar")->Unit(benchmark::kMil
 BENCHMARK(eval_slerp_scalar)->Name("rotation/eval/slerp/scalar")->Unit(benchmark::kMillisecond);
 BENCHMARK(construct_c2)->Name("rotation/c2/construct")->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(eval_pose)->Name("rotation/pose/eval")->Unit(benchmark::kMillisecond);
+
+BENCHMARK(fit_mocap)->Name("rotation/fit/mocap")->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();
