@@ -69,7 +69,7 @@ PAGES = {
     # added. js.md's and web.md's ```js blocks are shown text (fragments of
     # an app); their shell blocks build, serve or pack, and are marked.
     "docs/geo.md": (2, 4),
-    "docs/rotation.md": (1, 0),
+    "docs/rotation.md": (2, 0),
     "docs/js.md": (0, 1),
     "docs/web.md": (0, 3),
 }
