@@ -68,7 +68,7 @@ PAGES = {
     # Issue 42: the pages the rotation, GIS and web rounds
     # added. js.md's and web.md's ```js blocks are shown text (fragments of
     # an app); their shell blocks build, serve or pack, and are marked.
-    "docs/geo.md": (2, 4),
+    "docs/geo.md": (3, 4),
     "docs/rotation.md": (2, 0),
     "docs/js.md": (0, 1),
     "docs/web.md": (0, 3),
