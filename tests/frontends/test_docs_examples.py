@@ -65,13 +65,15 @@ PAGES = {
     "docs/spec.md": (0, 0),
     "docs/report.md": (1, 0),
     "docs/analysis.md": (0, 0),
-    # Issue 42: the pages the rotation, GIS and web rounds
+    # Issue 42: the pages the rotation, GIS, web, fit and sweep rounds
     # added. js.md's and web.md's ```js blocks are shown text (fragments of
     # an app); their shell blocks build, serve or pack, and are marked.
     "docs/geo.md": (3, 4),
     "docs/rotation.md": (2, 0),
     "docs/js.md": (0, 1),
     "docs/web.md": (0, 3),
+    "docs/fit.md": (2, 0),
+    "docs/sweep.md": (3, 0),
 }
 
 FENCE = re.compile(r"^(\s*)(```+)\s*([\w+-]*)\s*$")
