@@ -47,7 +47,7 @@ function noisyStroke(rng, n, noise) {
 function measured(r, flat, dim, closed) {
   let curveToInput = 0, inputToCurve = 0;
   const c = r.curve, t0 = c.tMin, t1 = c.tMax, N = 64 * c.segmentCount;
-  for (let k = 0; k <= N; ++k) curveToInput = Math.max(curveToInput, toPolyline(c.evaluate(t0 + ((t1 - t0) * k) / N), flat, dim, closed));
+  for (let k = 0; k <= N; ++k) curveToInput = Math.max(curveToInput, toPolyline(c.evaluate(k === N ? t1 : t0 + ((t1 - t0) * k) / N), flat, dim, closed));
   for (let i = 0; i < flat.length / dim; ++i) inputToCurve = Math.max(inputToCurve, c.nearest(flat.subarray(i * dim, (i + 1) * dim)).distance);
   return { curveToInput, inputToCurve };
 }

@@ -336,8 +336,9 @@ describe('pencil and Fit selection (issue 40)', () => {
     };
     let curveToInput = 0, inputToCurve = 0;
     const t0 = s.tMin(), t1 = s.tMax(), N = 200 * s.segmentCount();
+    // k === N takes t1 itself: t0 + (t1 - t0) * N / N can round one ulp past it, which evaluate rejects (CI, stop 43).
     for (let k = 0; k <= N; ++k) {
-      const p = s.evaluate(t0 + ((t1 - t0) * k) / N);
+      const p = s.evaluate(k === N ? t1 : t0 + ((t1 - t0) * k) / N);
       curveToInput = Math.max(curveToInput, toPolyline(p[0], p[1]));
     }
     for (let i = 0; i < input.length; i += 2) inputToCurve = Math.max(inputToCurve, Math.sqrt(s.nearest([input[i], input[i + 1]]).distanceSq));
