@@ -113,7 +113,10 @@ public:
     /// The choice: a shortest path over states (a, b), the last two chosen
     /// points, each knowing its best predecessor z. From a state, the
     /// candidates for the next point c are the last `lookahead` points
-    /// within reach of b (with predecessor a); a candidate must keep the
+    /// within reach of b (with predecessor a) and two backed off from it
+    /// (without them, a point reached at the very end of a segment can leave
+    /// the next one a tangent that keeps it one input step long, and the
+    /// count grew with the tolerance on an ellipse); a candidate must keep the
     /// segment a -> b within the tolerance now that its successor is known
     /// (its four points z, a, b, c are then the curve's own). States that
     /// reach the same point are kept `beam` at most, the fewest points
@@ -143,7 +146,16 @@ public:
                 const std::size_t r = reach(s.a, b);
                 const std::size_t from = r > b + lookahead ? r - lookahead + 1 : b + 1;
                 bool any = false;
-                for (std::size_t c = r + 1; c-- > from;) {
+                // Candidates: the last `lookahead` points within reach, and
+                // two backed off (7/8 and 3/4 of the reach), which leave the
+                // next segment a tangent it can keep.
+                std::array<std::size_t, 8> cand{};
+                std::size_t nc = 0;
+                for (std::size_t c = r + 1; c-- > from && nc < 6;) cand[nc++] = c;
+                for (std::size_t c : {b + (r - b) * 7 / 8, b + (r - b) * 3 / 4})
+                    if (c > b && c < from && (nc == 0 || cand[nc - 1] != c)) cand[nc++] = c;
+                for (std::size_t ci = 0; ci < nc; ++ci) {
+                    const std::size_t c = cand[ci];
                     if (!first && !passes(s.z, s.a, b, c)) continue;
                     any = true;
                     // Merge with a state (b, c) already there.
