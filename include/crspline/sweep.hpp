@@ -88,7 +88,7 @@ struct sweep_report {
     double tolerance = 0;            ///< the tolerance asked for (adaptive) or 0 (given counts)
     double bound = 0;                ///< the mesh's distance bound to the surface (+inf: not proved)
     bool tolerance_met = true;       ///< bound <= tolerance (adaptive)
-    bool proved = true;              ///< false with an up vector: its turning is measured at the rings, not bounded
+    bool proved = true;              ///< false with an up vector that a tangent comes within 5 degrees of (a pole): its turn there is measured at the rings, not bounded
     double holonomy = 0;             ///< the rotation-minimizing frame's twist after one loop (closed, no up), radians
     double length = 0;               ///< the curve's arc length (v = s / length)
     double largest_radius = 0;       ///< largest scale x |profile point|
@@ -235,7 +235,23 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
         }
         q.twist_t = twist;
         q.up_u1 = up_u1;
+        if (opt.up) q.has_up = true, q.up = *opt.up / norm(*opt.up);
         return q;
+    };
+    // Up mode: proved where every piece between rings keeps its tangent
+    // clear of the poles (sweep/sampling.hpp); the others have their turn
+    // measured at the rings only.
+    auto up_proved = [&](const std::vector<ring_site>& rs) {
+        if (!opt.up) return true;
+        const vec<3> up = *opt.up / norm(*opt.up);
+        for (std::size_t k = 0; k + 1 < rs.size(); ++k)
+            for (std::size_t i = rs[k].segment; i <= rs[k + 1].segment; ++i) {
+                const auto& sg = curve.segment(i);
+                if (sg.c1 == vec<3>{} && sg.c2 == vec<3>{} && sg.c3 == vec<3>{}) continue;
+                const double ua = i == rs[k].segment ? rs[k].u : 0.0, ub = i == rs[k + 1].segment ? rs[k + 1].u : 1.0;
+                if (ub > ua && !up_piece_proved(sg, ua, ub, up)) return false;
+            }
+        return true;
     };
     auto site = [&](std::size_t i, double u) {
         ring_site r;
@@ -317,11 +333,11 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
             for (std::size_t i = a.segment; i <= b.segment; ++i) {
                 if (constant(i)) continue;
                 const double ua = i == a.segment ? a.u : 0.0, ub = i == b.segment ? b.u : 1.0;
-                if (ub > ua) along = std::max(along, along_bound(curve.segment(i), ua, ub, rates_for(i, ua, ub, twist, 0)));
+                if (ub > ua)
+                    along = std::max(along, along_bound(curve.segment(i), ua, ub, rates_for(i, ua, ub, twist, frames.up_turn_u)));
             }
         }
         bound = along + around;
-        out.report.proved = !opt.up;
     }
     // 5. The mesh.
     write_mesh(frames, sites, prof, length, closed, closed && opt.spread_holonomy, out.positions, out.normals, out.uvs,
@@ -333,7 +349,7 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
     auto& rep = out.report;
     rep.bound = bound;
     rep.tolerance_met = given_counts || bound <= tol * (1 + 1e-12);
-    if (opt.up) rep.proved = false;
+    rep.proved = up_proved(sites);
     rep.holonomy = frames.holonomy;
     rep.length = length;
     for (std::size_t k = 0; k < sites.size(); ++k) {

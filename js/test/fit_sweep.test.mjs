@@ -190,8 +190,14 @@ test('sweep: profiles, scale, roll, up; bad input names the field', () => {
   // A closed curve's scale keys are periodic: in [0, L).
   const scaled = sweep(c, { radius: 0.2, scale: [1, 2], scaleS: [0, L / 2], tubularSegments: 10, radialSegments: 6 });
   assert.ok(Math.abs(scaled.report.largestRadius - 0.4) < 1e-9, `${scaled.report.largestRadius}`);
-  const withUp = sweep(c, { radius: 0.2, up: { x: 0, y: 0, z: 1 }, tubularSegments: 10, radialSegments: 6 });
-  assert.equal(withUp.report.proved, false);
+  // An up vector: proved where every tangent stays clear of it (the knot's
+  // stay more than 30 degrees from vertical); a loop through vertical (a
+  // pole) has its turn there measured only.
+  const withUp = sweep(c, { radius: 0.2, up: { x: 0, y: 0, z: 1 } });
+  assert.ok(withUp.report.proved && withUp.report.toleranceMet);
+  const vertical = catmullRom([[0, 0, 0], [1, 0, 1], [0, 0, 2], [-1, 0, 1], [0, 0.01, 0.1], [1, 0.02, 0]]);
+  const overPole = sweep(vertical, { radius: 0.1, up: [0, 0, 1] });
+  assert.ok(!overPole.report.proved && overPole.report.toleranceMet);
   const err = (f, field, re) => assert.throws(f, (e) => re.test(e.message) && e.field === field);
   err(() => sweep(c, { radius: 0 }), 'radius', /radius: must be positive and finite, got 0/);
   err(() => sweep(c, { radius: NaN }), 'radius', /radius: must be positive/);

@@ -21,6 +21,18 @@
 //     |(rF)''| <= |r''| + 2 |r'| |omega| + r (|omega|^2 + |omega'|),
 //     |omega|  <= |x''| / |x'| + |psi'|,
 //     |omega'| <= |x'''| / |x'| + 2 |x''|^2 / |x'|^2 + |psi''| + |psi'| |x''| / |x'|,
+// With an up vector U (unit) the normal is U's projection on the normal
+// plane wherever the tangent T is more than 5 degrees from U (rings.hpp);
+// there its turn about T is psi' = -(U.T)(T'.B) / |U x T|, so with
+// theta the angle of T to U and tau >= |T'| (= |x''| / |x'| at most):
+//     |psi'|  <= cot(theta) tau,
+//     |psi''| <= tau^2 / sin^2(theta) + cot(theta) (|T''| + tau |omega|),
+//     |T''|   <= |x'''| / |x'| + 3 tau |x''| / |x'|,
+// sin(theta) bounded from below over the piece as |x'| is (|U x x'| has
+// derivative |U x x''| <= |x''|) over max |x'|. A piece whose tangent may
+// come within 5 degrees of U (a pole: the frame is held and eased there,
+// not the projection) has only the turn measured at the rings: the report
+// then says the bound is not proved.
 // each maximum taken over the piece: |x''| at an end (x'' is affine),
 // |x'''| = 6 |c3|, |x'| from below by (|x'(u_a)| + |x'(u_b)| - w max|x''|) / 2,
 // the roll and the scale by their Bézier control polygons. A piece whose
@@ -29,6 +41,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -52,8 +65,49 @@ struct piece_rates {
     bool roll_in_s = false; ///< w is arc length (else t)
     double dt_du = 1;       ///< the segment's knot interval (dt/du)
     double twist_t = 0;     ///< |holonomy| / period: the spread twist per unit t (constant)
-    double up_u1 = 0;       ///< the up frame's turning per unit u, estimated (up mode only)
+    double up_u1 = 0;       ///< the up frame's turning per unit u measured at the rings (near a pole only)
+    bool has_up = false;    ///< up mode: the frame follows `up`'s projection
+    vec<3> up{};            ///< the unit up vector
 };
+
+/// Where the up vector's projection is the frame (rings.hpp eases it only
+/// within 5 degrees of the tangent): sin(5 degrees).
+inline const double up_clear_sin = std::sin(5 * 3.14159265358979323846 / 180);
+
+/// A lower bound on sin(angle(up, tangent)) over [ua, ub] of segment s
+/// (up a unit vector); 0 where it may vanish.
+inline double up_sin_lower(const cubic_segment<3, double>& s, double ua, double ub, const vec<3>& up) {
+    const double w = ub - ua;
+    const vec<3> da = s.du(ua, 1), db = s.du(ub, 1);
+    const double k2 = std::max(norm(s.du(ua, 2)), norm(s.du(ub, 2)));
+    const double v_hi = (norm(da) + norm(db) + w * k2) / 2;
+    const double g_lo = (norm(cross(up, da)) + norm(cross(up, db)) - w * k2) / 2;
+    return v_hi > 0 && g_lo > 0 ? std::min(1.0, g_lo / v_hi) : 0.0;
+}
+
+/// The up frame's turn rates over [ua, ub] (see above): {|psi'|, |psi''|}
+/// bounds per unit u, or {-1, -1} where the tangent may come within 5
+/// degrees of up (or the speed bound is not positive).
+inline std::array<double, 2> up_rates(const cubic_segment<3, double>& s, double ua, double ub, const vec<3>& up) {
+    const double w = ub - ua;
+    const double k2 = std::max(norm(s.du(ua, 2)), norm(s.du(ub, 2)));
+    const double k3 = norm(s.du(0, 3));
+    const double v_lo = (norm(s.du(ua, 1)) + norm(s.du(ub, 1)) - w * k2) / 2;
+    const double sn = up_sin_lower(s, ua, ub, up);
+    if (!(v_lo > 0) || !(sn > up_clear_sin)) return {-1.0, -1.0};
+    const double cot = std::sqrt(std::max(0.0, 1 - sn * sn)) / sn;
+    const double tau = k2 / v_lo, t2 = k3 / v_lo + 3 * tau * k2 / v_lo;
+    const double psi1 = cot * tau;
+    return {psi1, tau * tau / (sn * sn) + cot * (t2 + tau * (tau + psi1))};
+}
+
+/// Whether the piece's up frame is the projection, proved: clear of the
+/// poles, and turning less than a radian between its rings (so the ring's
+/// choice of the projection or its opposite follows the continuous frame).
+inline bool up_piece_proved(const cubic_segment<3, double>& s, double ua, double ub, const vec<3>& up) {
+    const auto r = up_rates(s, ua, ub, up);
+    return r[0] >= 0 && r[0] * (ub - ua) < 1;
+}
 
 /// The along-curve bound of the piece [ua, ub] of segment s (see above);
 /// +infinity when the speed bound is not positive.
@@ -64,9 +118,15 @@ inline double along_bound(const cubic_segment<3, double>& s, double ua, double u
     const double va = norm(s.du(ua, 1)), vb = norm(s.du(ub, 1));
     const double v_lo = (va + vb - w * k2) / 2, v_hi = (va + vb + w * k2) / 2;
     if (!(v_lo > 0)) return std::numeric_limits<double>::infinity();
-    // Roll, spread holonomy and scale per unit u.
-    const double p1 = (q.roll_in_s ? q.roll_w1 * v_hi : q.roll_w1 * q.dt_du) + q.twist_t * q.dt_du + q.up_u1;
-    const double roll2 = q.roll_in_s ? q.roll_w2 * v_hi * v_hi + q.roll_w1 * k2 : q.roll_w2 * q.dt_du * q.dt_du;
+    // The up frame's turn: bounded clear of the poles, measured near them.
+    double up1 = q.up_u1, up2 = 0;
+    if (q.has_up) {
+        const auto r = up_rates(s, ua, ub, q.up);
+        if (r[0] >= 0) up1 = r[0], up2 = r[1];
+    }
+    // Roll, spread holonomy, up and scale per unit u.
+    const double p1 = (q.roll_in_s ? q.roll_w1 * v_hi : q.roll_w1 * q.dt_du) + q.twist_t * q.dt_du + up1;
+    const double roll2 = (q.roll_in_s ? q.roll_w2 * v_hi * v_hi + q.roll_w1 * k2 : q.roll_w2 * q.dt_du * q.dt_du) + up2;
     const double r = q.scale, r1 = q.scale_s1 * v_hi, r2 = q.scale_s2 * v_hi * v_hi + q.scale_s1 * k2;
     // The frame's angular velocity and its derivative.
     const double turn = k2 / v_lo;
