@@ -181,20 +181,27 @@ struct proof_base {
         const p2 p0 = a.pts[s], p3 = a.pts[a.next(s)];
         if (w == p0 || w == p3) return true;
         if (a.dropped(s)) return outside_fitted(i, s, w);
-        const box<2>& bx = a.hull_box[s];
-        if (w[0] < bx.lo[0] - slack || w[0] > bx.hi[0] + slack || w[1] < bx.lo[1] - slack ||
-            w[1] > bx.hi[1] + slack)
-            return true;
+        if (!boxes_meet(a.hull_box[s], box<2>::of(w), slack)) return true;
         if (outside_hull(a.hull[s], w, slack)) return true;
         if (!(point_segment_distance(w, p0, p3) > slack)) return false;
-        ensure_line(i);
+        if (!pieces_clear_of(i, s, w)) return false;
         const std::size_t k0 = a.first_piece[s], k1 = a.first_piece[s + 1];
-        for (std::size_t k = k0; k < k1; ++k) {
+        return winding_around(std::span<const p2>(a.line.points.data() + k0, k1 - k0 + 1), w) == 0;
+    }
+
+    // Each polyline piece of segment s of arc i clear of w: w farther from
+    // its chord than its flatness margin, or outside its Bézier hull (then
+    // the loop of curve pieces winds around w as the polygon of their chords
+    // does).
+    bool pieces_clear_of(std::uint32_t i, std::size_t s, const p2& w) {
+        ensure_line(i);
+        const arc_work& a = arcs[i];
+        for (std::size_t k = a.first_piece[s]; k < a.first_piece[s + 1]; ++k) {
             const piece pc = piece_of(a, i, k, slack);
             if (point_segment_distance(w, pc.q[0], pc.q[3]) > pc.e + slack) continue;
             if (!outside_hull(pc.q, w, slack)) return false;
         }
-        return winding_around(std::span<const p2>(a.line.points.data() + k0, k1 - k0 + 1), w) == 0;
+        return true;
     }
 
     // outside_swept for a fitted segment that leaves input vertices out: its
@@ -208,18 +215,11 @@ struct proof_base {
         const auto [first, last] = a.span(s);
         box<2> bx = a.hull_box[s];
         for (std::size_t k = first; k <= last; ++k) bx.expand(a.full_at(k));
-        if (w[0] < bx.lo[0] - slack || w[0] > bx.hi[0] + slack || w[1] < bx.lo[1] - slack ||
-            w[1] > bx.hi[1] + slack)
-            return true;
+        if (!boxes_meet(bx, box<2>::of(w), slack)) return true;
         for (std::size_t k = first; k < last; ++k)
             if (!(point_segment_distance(w, a.full_at(k), a.full_at(k + 1)) > slack)) return false;
-        ensure_line(i);
+        if (!pieces_clear_of(i, s, w)) return false;
         const std::size_t k0 = a.first_piece[s], k1 = a.first_piece[s + 1];
-        for (std::size_t k = k0; k < k1; ++k) {
-            const piece pc = piece_of(a, i, k, slack);
-            if (point_segment_distance(w, pc.q[0], pc.q[3]) > pc.e + slack) continue;
-            if (!outside_hull(pc.q, w, slack)) return false;
-        }
         std::vector<p2>& poly = loop_scratch;
         poly.assign(a.line.points.begin() + std::ptrdiff_t(k0), a.line.points.begin() + std::ptrdiff_t(k1) + 1);
         for (std::size_t k = last - 1; k > first; --k) poly.push_back(a.full_at(k));

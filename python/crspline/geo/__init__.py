@@ -403,38 +403,36 @@ def _finish(prep, frame, frame_xy, r):
     return new, cols, r.get("stats", {})
 
 
+def _feature_sums(seg, offsets, features, feature_count):
+    """Per feature, the sum of the lengths `seg` of its output polylines'
+    segments (segment k joins vertices k and k + 1; it belongs to a part
+    when both do)."""
+    lengths = np.zeros(feature_count)
+    part_of_vertex = np.repeat(np.arange(len(offsets) - 1), np.diff(offsets))
+    inside = part_of_vertex[:-1] == part_of_vertex[1:]
+    seg = np.where(inside, seg, 0.0)
+    feature_of_segment = np.asarray(features, dtype=np.int64)[part_of_vertex[:-1]]
+    np.add.at(lengths, feature_of_segment, seg)
+    return lengths
+
+
 def _geodesic_lengths(lonlat, offsets, features, feature_count):
     """Geodesic length (metres, WGS 84) of each feature's output polylines,
     summed over its parts: one pyproj call for all segments."""
     from pyproj import Geod
 
-    lengths = np.zeros(feature_count)
-    n = len(lonlat)
-    if n < 2:
-        return lengths
+    if len(lonlat) < 2:
+        return np.zeros(feature_count)
     seg = np.asarray(Geod(ellps="WGS84").line_lengths(lonlat[:, 0], lonlat[:, 1]), dtype=float)
-    # Segment k joins vertices k and k + 1; it belongs to a part when both do.
-    part_of_vertex = np.repeat(np.arange(len(offsets) - 1), np.diff(offsets))
-    inside = part_of_vertex[:-1] == part_of_vertex[1:]
-    seg = np.where(inside, seg, 0.0)
-    feature_of_segment = np.asarray(features, dtype=np.int64)[part_of_vertex[:-1]]
-    np.add.at(lengths, feature_of_segment, seg)
-    return lengths
+    return _feature_sums(seg, offsets, features, feature_count)
 
 
 def _planar_lengths(xy, offsets, features, feature_count):
     """Planar length of each feature's output polylines (the CRS's units),
     summed over its parts."""
-    lengths = np.zeros(feature_count)
     if len(xy) < 2:
-        return lengths
-    seg = np.hypot(np.diff(xy[:, 0]), np.diff(xy[:, 1]))
-    part_of_vertex = np.repeat(np.arange(len(offsets) - 1), np.diff(offsets))
-    inside = part_of_vertex[:-1] == part_of_vertex[1:]
-    seg = np.where(inside, seg, 0.0)
-    feature_of_segment = np.asarray(features, dtype=np.int64)[part_of_vertex[:-1]]
-    np.add.at(lengths, feature_of_segment, seg)
-    return lengths
+        return np.zeros(feature_count)
+    return _feature_sums(np.hypot(np.diff(xy[:, 0]), np.diff(xy[:, 1])), offsets, features, feature_count)
 
 
 def _units(crs):
