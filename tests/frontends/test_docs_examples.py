@@ -66,8 +66,10 @@ PAGES = {
     "docs/report.md": (1, 0),
     "docs/analysis.md": (0, 0),
     # Issue 42: the pages the rotation, GIS, web, fit and sweep rounds
-    # added. js.md's and web.md's ```js blocks are shown text (fragments of
-    # an app); their shell blocks build, serve or pack, and are marked.
+    # added. js.md's and web.md's ```js blocks are run in node against the
+    # installed npm package by js/test/docs.test.mjs (the web stage: the
+    # WebAssembly module is built there); their shell blocks build, serve or
+    # pack, and are marked.
     "docs/geo.md": (3, 4),
     "docs/rotation.md": (2, 0),
     "docs/js.md": (0, 1),
