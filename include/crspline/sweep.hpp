@@ -238,21 +238,6 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
         if (opt.up) q.has_up = true, q.up = *opt.up / norm(*opt.up);
         return q;
     };
-    // Up mode: proved where every piece between rings keeps its tangent
-    // clear of the poles (sweep/sampling.hpp); the others have their turn
-    // measured at the rings only.
-    auto up_proved = [&](const std::vector<ring_site>& rs) {
-        if (!opt.up) return true;
-        const vec<3> up = *opt.up / norm(*opt.up);
-        for (std::size_t k = 0; k + 1 < rs.size(); ++k)
-            for (std::size_t i = rs[k].segment; i <= rs[k + 1].segment; ++i) {
-                const auto& sg = curve.segment(i);
-                if (sg.c1 == vec<3>{} && sg.c2 == vec<3>{} && sg.c3 == vec<3>{}) continue;
-                const double ua = i == rs[k].segment ? rs[k].u : 0.0, ub = i == rs[k + 1].segment ? rs[k + 1].u : 1.0;
-                if (ub > ua && !up_piece_proved(sg, ua, ub, up)) return false;
-            }
-        return true;
-    };
     auto site = [&](std::size_t i, double u) {
         ring_site r;
         r.segment = i;
@@ -264,6 +249,25 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
     auto constant = [&](std::size_t i) {
         const auto& s = curve.segment(i);
         return s.c1 == vec<3>{} && s.c2 == vec<3>{} && s.c3 == vec<3>{};
+    };
+    // Each piece between consecutive rings, split at knots: f(i, ua, ub) on
+    // segment i (constant segments left out); stops at the first false.
+    auto every_piece = [&](const std::vector<ring_site>& rs, auto&& f) {
+        for (std::size_t k = 0; k + 1 < rs.size(); ++k)
+            for (std::size_t i = rs[k].segment; i <= rs[k + 1].segment; ++i) {
+                if (constant(i)) continue;
+                const double ua = i == rs[k].segment ? rs[k].u : 0.0, ub = i == rs[k + 1].segment ? rs[k + 1].u : 1.0;
+                if (ub > ua && !f(i, ua, ub)) return false;
+            }
+        return true;
+    };
+    // Up mode: proved where every piece between rings keeps its tangent
+    // clear of the poles (sweep/sampling.hpp); the others have their turn
+    // measured at the rings only.
+    auto up_proved = [&](const std::vector<ring_site>& rs) {
+        if (!opt.up) return true;
+        const vec<3> up = *opt.up / norm(*opt.up);
+        return every_piece(rs, [&](std::size_t i, double ua, double ub) { return up_piece_proved(curve.segment(i), ua, ub, up); });
     };
     ring_inputs in;
     in.curve = &curve;
@@ -328,15 +332,10 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
         // The bound these rings achieve, piece by piece (split at knots).
         const double twist = closed && !opt.up ? std::abs(frames.holonomy) / period : 0.0;
         double along = 0;
-        for (std::size_t k = 0; k + 1 < sites.size(); ++k) {
-            const auto &a = sites[k], &b = sites[k + 1];
-            for (std::size_t i = a.segment; i <= b.segment; ++i) {
-                if (constant(i)) continue;
-                const double ua = i == a.segment ? a.u : 0.0, ub = i == b.segment ? b.u : 1.0;
-                if (ub > ua)
-                    along = std::max(along, along_bound(curve.segment(i), ua, ub, rates_for(i, ua, ub, twist, frames.up_turn_u)));
-            }
-        }
+        every_piece(sites, [&](std::size_t i, double ua, double ub) {
+            along = std::max(along, along_bound(curve.segment(i), ua, ub, rates_for(i, ua, ub, twist, frames.up_turn_u)));
+            return true;
+        });
         bound = along + around;
     }
     // 5. The mesh.

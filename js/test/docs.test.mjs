@@ -40,7 +40,11 @@ function readBlocks(text) {
     const open = FENCE.exec(lines[i]);
     if (!open) continue;
     let j = i + 1;
-    while (j < lines.length && !(FENCE.exec(lines[j]) && FENCE.exec(lines[j])[2] === open[2] && FENCE.exec(lines[j])[3] === '')) ++j;
+    const closes = (line) => {
+      const f = FENCE.exec(line);
+      return f !== null && f[2] === open[2] && f[3] === '';
+    };
+    while (j < lines.length && !closes(lines[j])) ++j;
     let above = i - 1;
     while (above >= 0 && lines[above].trim() === '') --above;
     const marker = above >= 0 ? MARKER.exec(lines[above].trim()) : null;

@@ -148,10 +148,12 @@ public:
                 bool any = false;
                 // Candidates: the last `lookahead` points within reach, and
                 // two backed off (7/8 and 3/4 of the reach), which leave the
-                // next segment a tangent it can keep.
-                std::array<std::size_t, 8> cand{};
+                // next segment a tangent it can keep. (A lookahead above
+                // max_lookahead counts as max_lookahead; fit.hpp asks for 2.)
+                constexpr std::size_t max_lookahead = 6;
+                std::array<std::size_t, max_lookahead + 2> cand{};
                 std::size_t nc = 0;
-                for (std::size_t c = r + 1; c-- > from && nc < 6;) cand[nc++] = c;
+                for (std::size_t c = r + 1; c-- > from && nc < max_lookahead;) cand[nc++] = c;
                 for (std::size_t c : {b + (r - b) * 7 / 8, b + (r - b) * 3 / 4})
                     if (c > b && c < from && (nc == 0 || cand[nc - 1] != c)) cand[nc++] = c;
                 for (std::size_t ci = 0; ci < nc; ++ci) {

@@ -131,24 +131,6 @@ inline bool wedge_of(const std::array<p2, 4>& pts, const p2& v, double slack, do
     return true;
 }
 
-// The angular interval, seen from V, holding the control points of p other
-// than V itself: [lo, hi] in radians, hi - lo < pi. False when it is not
-// that narrow (or every point is V).
-inline bool wedge_at(const piece& p, const p2& v, double slack, double& lo, double& hi) {
-    return wedge_of(p.q, v, slack, lo, hi);
-}
-
-// Pieces p and q sharing the end point v meet nowhere else: their wedges at
-// v are disjoint (with a margin against rounding).
-inline bool wedges_apart(const piece& p, const piece& q, const p2& v, double slack) {
-    double a0, a1, b0, b1;
-    if (!wedge_at(p, v, slack, a0, a1) || !wedge_at(q, v, slack, b0, b1)) return false;
-    constexpr double margin = 1e-9, two_pi = 2 * std::numbers::pi;
-    double s = std::fmod(b0 - a0, two_pi);
-    if (s < 0) s += two_pi;
-    return s > (a1 - a0) + margin && s + (b1 - b0) < two_pi - margin;
-}
-
 // An arc being smoothed.
 struct arc_work {
     std::vector<p2> pts;

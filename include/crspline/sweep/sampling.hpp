@@ -74,54 +74,60 @@ struct piece_rates {
 /// within 5 degrees of the tangent): sin(5 degrees).
 inline const double up_clear_sin = std::sin(5 * 3.14159265358979323846 / 180);
 
-/// A lower bound on sin(angle(up, tangent)) over [ua, ub] of segment s
-/// (up a unit vector); 0 where it may vanish.
-inline double up_sin_lower(const cubic_segment<3, double>& s, double ua, double ub, const vec<3>& up) {
-    const double w = ub - ua;
-    const vec<3> da = s.du(ua, 1), db = s.du(ub, 1);
-    const double k2 = std::max(norm(s.du(ua, 2)), norm(s.du(ub, 2)));
-    const double v_hi = (norm(da) + norm(db) + w * k2) / 2;
-    const double g_lo = (norm(cross(up, da)) + norm(cross(up, db)) - w * k2) / 2;
-    return v_hi > 0 && g_lo > 0 ? std::min(1.0, g_lo / v_hi) : 0.0;
+/// The bounds on the centre line's derivatives over the piece [ua, ub] of
+/// segment s that the bounds below share (see above): x' at the ends,
+/// max |x''| (at an end: x'' is affine), |x'''|, and |x'| from below and
+/// above.
+struct piece_derivatives {
+    double w, k2, k3, v_lo = 0, v_hi = 0;
+    vec<3> da, db;
+    piece_derivatives(const cubic_segment<3, double>& s, double ua, double ub)
+        : w(ub - ua), k2(std::max(norm(s.du(ua, 2)), norm(s.du(ub, 2)))), k3(norm(s.du(0, 3))), da(s.du(ua, 1)),
+          db(s.du(ub, 1)) {
+        const double va = norm(da), vb = norm(db);
+        v_lo = (va + vb - w * k2) / 2;
+        v_hi = (va + vb + w * k2) / 2;
+    }
+};
+
+/// A lower bound on sin(angle(up, tangent)) over the piece (up a unit
+/// vector); 0 where it may vanish.
+inline double up_sin_lower(const piece_derivatives& d, const vec<3>& up) {
+    const double g_lo = (norm(cross(up, d.da)) + norm(cross(up, d.db)) - d.w * d.k2) / 2;
+    return d.v_hi > 0 && g_lo > 0 ? std::min(1.0, g_lo / d.v_hi) : 0.0;
 }
 
-/// The up frame's turn rates over [ua, ub] (see above): {|psi'|, |psi''|}
+/// The up frame's turn rates over the piece (see above): {|psi'|, |psi''|}
 /// bounds per unit u, or {-1, -1} where the tangent may come within 5
 /// degrees of up (or the speed bound is not positive).
-inline std::array<double, 2> up_rates(const cubic_segment<3, double>& s, double ua, double ub, const vec<3>& up) {
-    const double w = ub - ua;
-    const double k2 = std::max(norm(s.du(ua, 2)), norm(s.du(ub, 2)));
-    const double k3 = norm(s.du(0, 3));
-    const double v_lo = (norm(s.du(ua, 1)) + norm(s.du(ub, 1)) - w * k2) / 2;
-    const double sn = up_sin_lower(s, ua, ub, up);
-    if (!(v_lo > 0) || !(sn > up_clear_sin)) return {-1.0, -1.0};
+inline std::array<double, 2> up_rates(const piece_derivatives& d, const vec<3>& up) {
+    const double sn = up_sin_lower(d, up);
+    if (!(d.v_lo > 0) || !(sn > up_clear_sin)) return {-1.0, -1.0};
     const double cot = std::sqrt(std::max(0.0, 1 - sn * sn)) / sn;
-    const double tau = k2 / v_lo, t2 = k3 / v_lo + 3 * tau * k2 / v_lo;
+    const double tau = d.k2 / d.v_lo, t2 = d.k3 / d.v_lo + 3 * tau * d.k2 / d.v_lo;
     const double psi1 = cot * tau;
     return {psi1, tau * tau / (sn * sn) + cot * (t2 + tau * (tau + psi1))};
 }
 
-/// Whether the piece's up frame is the projection, proved: clear of the
-/// poles, and turning less than a radian between its rings (so the ring's
-/// choice of the projection or its opposite follows the continuous frame).
+/// Whether the piece [ua, ub] of segment s has the up vector's projection
+/// for its frame, proved: clear of the poles, and turning less than a
+/// radian between its rings (so the ring's choice of the projection or its
+/// opposite follows the continuous frame).
 inline bool up_piece_proved(const cubic_segment<3, double>& s, double ua, double ub, const vec<3>& up) {
-    const auto r = up_rates(s, ua, ub, up);
+    const auto r = up_rates(piece_derivatives(s, ua, ub), up);
     return r[0] >= 0 && r[0] * (ub - ua) < 1;
 }
 
 /// The along-curve bound of the piece [ua, ub] of segment s (see above);
 /// +infinity when the speed bound is not positive.
 inline double along_bound(const cubic_segment<3, double>& s, double ua, double ub, const piece_rates& q) {
-    const double w = ub - ua;
-    const double k2 = std::max(norm(s.du(ua, 2)), norm(s.du(ub, 2)));
-    const double k3 = norm(s.du(0, 3));
-    const double va = norm(s.du(ua, 1)), vb = norm(s.du(ub, 1));
-    const double v_lo = (va + vb - w * k2) / 2, v_hi = (va + vb + w * k2) / 2;
+    const piece_derivatives d(s, ua, ub);
+    const double w = d.w, k2 = d.k2, k3 = d.k3, v_lo = d.v_lo, v_hi = d.v_hi;
     if (!(v_lo > 0)) return std::numeric_limits<double>::infinity();
     // The up frame's turn: bounded clear of the poles, measured near them.
     double up1 = q.up_u1, up2 = 0;
     if (q.has_up) {
-        const auto r = up_rates(s, ua, ub, q.up);
+        const auto r = up_rates(d, q.up);
         if (r[0] >= 0) up1 = r[0], up2 = r[1];
     }
     // Roll, spread holonomy, up and scale per unit u.
