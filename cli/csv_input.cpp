@@ -37,14 +37,14 @@ std::string shown(std::string_view s) {
     return "\"" + t + "\"";
 }
 
-struct field {
+struct csv_field {
     std::size_t begin = 0;  // byte offset in the line
     std::string_view text;  // trimmed
 };
 
 // Splits a line into fields (trimmed); blanks as delimiter means runs of
 // spaces and tabs, ignoring leading and trailing ones.
-void split(std::string_view line, char delimiter, std::vector<field>& out) {
+void split(std::string_view line, char delimiter, std::vector<csv_field>& out) {
     out.clear();
     if (delimiter == ' ') {
         std::size_t i = 0;
@@ -160,7 +160,7 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
     point_set out;
     out.name = in.name;
     const std::string_view text = in.text;
-    std::vector<field> fields;
+    std::vector<csv_field> fields;
     fields.reserve(8);
     std::optional<char> delimiter = opt.delimiter;
     std::vector<std::size_t> chosen;  // indices of the columns to read
@@ -198,7 +198,7 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
             split(line, *delimiter, fields);
             nfields = fields.size();
             const bool header = std::none_of(fields.begin(), fields.end(),
-                                             [](const field& f) { return parse_number(f.text).has_value(); });
+                                             [](const csv_field& f) { return parse_number(f.text).has_value(); });
             if (!opt.curve_column.empty()) {
                 const std::string& c = opt.curve_column;
                 const bool numeric = std::all_of(c.begin(), c.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
@@ -211,7 +211,7 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
                     id_column = k - 1;
                 } else {
                     const auto it = std::find_if(fields.begin(), fields.end(),
-                                                 [&](const field& f) { return unquote(f.text) == c; });
+                                                 [&](const csv_field& f) { return unquote(f.text) == c; });
                     if (!header || it == fields.end())
                         throw input_error("--curve-column: no column named '" + c + "' in the header of " + in.name);
                     id_column = std::size_t(it - fields.begin());
@@ -249,10 +249,10 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
                         throw input_error("--columns: '" + c + "' is not a column number, and " + in.name +
                                           " has no header line to name columns");
                     const auto it = std::find_if(fields.begin(), fields.end(),
-                                                 [&](const field& f) { return unquote(f.text) == c; });
+                                                 [&](const csv_field& f) { return unquote(f.text) == c; });
                     if (it == fields.end()) {
                         std::string names;
-                        for (const field& f : fields) names += (names.empty() ? "" : ", ") + std::string(unquote(f.text));
+                        for (const csv_field& f : fields) names += (names.empty() ? "" : ", ") + std::string(unquote(f.text));
                         throw input_error("--columns: no column named '" + c + "' in the header of " + in.name +
                                           " (columns: " + names + ")");
                     }
@@ -261,7 +261,7 @@ point_set parse_csv(const input_text& in, const csv_options& opt) {
             }
             out.dimension = chosen.size();
             if (header) {
-                for (const field& f : fields) header_names.emplace_back(unquote(f.text));
+                for (const csv_field& f : fields) header_names.emplace_back(unquote(f.text));
                 for (const std::size_t k : chosen) out.column_names.push_back(header_names[k]);
                 continue;
             }
@@ -310,9 +310,9 @@ nlohmann::json number_list(const std::string& option, const std::string& text, b
     {
         json list = json::array();
         bool ok = !trim(text).empty();
-        std::vector<field> fields;
+        std::vector<csv_field> fields;
         split(text, text.find(',') != std::string::npos ? ',' : ' ', fields);
-        for (const field& f : fields) {
+        for (const csv_field& f : fields) {
             if (allow_null && f.text == "null") {
                 list.push_back(nullptr);
                 continue;
@@ -340,7 +340,7 @@ nlohmann::json number_list(const std::string& option, const std::string& text, b
     const std::size_t first = in.text.find_first_not_of(" \t\r\n");
     if (first != std::string::npos && in.text[first] == '[') return parse_json(in);
     json list = json::array();
-    std::vector<field> fields;
+    std::vector<csv_field> fields;
     std::size_t line_no = 0;
     for (std::size_t pos = 0; pos < in.text.size();) {
         const std::size_t nl = in.text.find('\n', pos);
@@ -350,7 +350,7 @@ nlohmann::json number_list(const std::string& option, const std::string& text, b
         ++line_no;
         if (trim(line).empty() || trim(line).front() == '#') continue;
         split(line, line.find(',') != std::string_view::npos ? ',' : ' ', fields);
-        for (const field& f : fields) {
+        for (const csv_field& f : fields) {
             if (allow_null && f.text == "null") {
                 list.push_back(nullptr);
                 continue;

@@ -55,13 +55,13 @@ const char* usage =
     "[--start natural|reflect] [--end natural|reflect] [--format json|csv|geojson] [--input-format F] "
     "[--columns C] [--delimiter D] [--curve-column C] [-o OUT] [INPUT]";
 
-[[noreturn]] void usage_error(const std::string& m) { throw input_error(m + " (" + usage + ")"); }
+[[noreturn]] void fit_usage_error(const std::string& m) { throw input_error(m + " (" + usage + ")"); }
 
-double number_option(const std::string& name, const char* value) {
-    if (!value) usage_error(name + " needs a value");
+double fit_number_option(const std::string& name, const char* value) {
+    if (!value) fit_usage_error(name + " needs a value");
     char* end = nullptr;
     const double v = std::strtod(value, &end);
-    if (end == value || *end != '\0') usage_error(name + ": expected a number, got '" + std::string(value) + "'");
+    if (end == value || *end != '\0') fit_usage_error(name + ": expected a number, got '" + std::string(value) + "'");
     return v;
 }
 
@@ -179,7 +179,7 @@ std::string csv_field(const std::string& v) {
     return q + "\"";
 }
 
-int run(int argc, char** argv) {
+int run_fit(int argc, char** argv) {
     fit_settings s;
     cli_options o;
     o.command = "fit";
@@ -189,7 +189,7 @@ int run(int argc, char** argv) {
         const std::string a = argv[i];
         const char* next = i + 1 < argc ? argv[i + 1] : nullptr;
         auto value = [&](const std::string& name) -> std::string {
-            if (!next) usage_error(name + " needs a value");
+            if (!next) fit_usage_error(name + " needs a value");
             ++i;
             return next;
         };
@@ -199,20 +199,20 @@ int run(int argc, char** argv) {
                       << usage << "\n";
             return 0;
         } else if (a == "--tolerance") {
-            s.tolerance = number_option(a, next), ++i, have_tolerance = true;
+            s.tolerance = fit_number_option(a, next), ++i, have_tolerance = true;
         } else if (a == "--mode") {
             const std::string m = value(a);
-            if (m != "subset" && m != "free") usage_error("--mode: expected subset or free, got '" + m + "'");
+            if (m != "subset" && m != "free") fit_usage_error("--mode: expected subset or free, got '" + m + "'");
             s.mode = m == "free" ? fit_mode::free : fit_mode::subset;
         } else if (a == "--alpha") {
-            s.alpha = number_option(a, next), ++i;
+            s.alpha = fit_number_option(a, next), ++i;
         } else if (a == "--tension") {
-            s.tension = number_option(a, next), ++i;
+            s.tension = fit_number_option(a, next), ++i;
         } else if (a == "--closed") {
             s.closed = true;
         } else if (a == "--start" || a == "--end") {
             const std::string e = value(a);
-            if (e != "natural" && e != "reflect") usage_error(a + ": expected natural or reflect, got '" + e + "'");
+            if (e != "natural" && e != "reflect") fit_usage_error(a + ": expected natural or reflect, got '" + e + "'");
             (a == "--start" ? s.start : s.end) = e;
         } else if (a == "--format") {
             s.format = value(a);
@@ -227,14 +227,14 @@ int run(int argc, char** argv) {
         } else if (a == "-o" || a == "--output") {
             o.output = value(a);
         } else if (a.size() > 1 && a[0] == '-' && a != "-") {
-            usage_error("unknown option '" + a + "'");
+            fit_usage_error("unknown option '" + a + "'");
         } else if (input.empty()) {
             input = a;
         } else {
-            usage_error("one input only, got '" + input + "' and '" + a + "'");
+            fit_usage_error("one input only, got '" + input + "' and '" + a + "'");
         }
     }
-    if (!have_tolerance) usage_error("--tolerance is required");
+    if (!have_tolerance) fit_usage_error("--tolerance is required");
     o.input = input.empty() ? "-" : input;
     o.format = s.format;
     s.format = output_format(o, {"json", "csv", "geojson"}, "json");
@@ -312,7 +312,7 @@ int run(int argc, char** argv) {
 
 int fit_main(int argc, char** argv) {
     try {
-        return run(argc, argv);
+        return run_fit(argc, argv);
     } catch (const input_error& e) {
         std::cerr << "crspline: " << e.what() << "\n";
     } catch (const invalid_input& e) {

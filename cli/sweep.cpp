@@ -46,7 +46,7 @@ namespace crspline::cli {
 
 namespace {
 
-using json = nlohmann::ordered_json;
+using ojson = nlohmann::ordered_json;
 
 // A comma-separated list of numbers given to a flag; the message names the flag.
 std::vector<double> number_list(const std::string& text, const std::string& flag) {
@@ -200,21 +200,21 @@ std::string write_gltf(const merged_mesh& m) {
     for (std::size_t k = 0; k < m.uvs.size(); ++k) append_bytes(buf, float(k % 2 ? 1 - m.uvs[k] : m.uvs[k]));
     const std::size_t indices_at = buf.size();
     for (auto i : m.indices) append_bytes(buf, i);
-    json g;
+    ojson g;
     g["asset"] = {{"version", "2.0"}, {"generator", "crspline sweep"}};
     g["scene"] = 0;
-    g["scenes"] = json::array({{{"nodes", {0}}}});
-    g["nodes"] = json::array({{{"mesh", 0}}});
-    g["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}}},
+    g["scenes"] = ojson::array({{{"nodes", {0}}}});
+    g["nodes"] = ojson::array({{{"mesh", 0}}});
+    g["meshes"] = ojson::array({{{"primitives", ojson::array({{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}}},
                                                              {"indices", 3},
                                                              {"mode", 4}}})}}});
-    g["buffers"] = json::array({{{"byteLength", buf.size()},
+    g["buffers"] = ojson::array({{{"byteLength", buf.size()},
                                  {"uri", "data:application/octet-stream;base64," + base64(buf)}}});
-    g["bufferViews"] = json::array({{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", normals_at}, {"target", 34962}},
+    g["bufferViews"] = ojson::array({{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", normals_at}, {"target", 34962}},
                                     {{"buffer", 0}, {"byteOffset", normals_at}, {"byteLength", uvs_at - normals_at}, {"target", 34962}},
                                     {{"buffer", 0}, {"byteOffset", uvs_at}, {"byteLength", indices_at - uvs_at}, {"target", 34962}},
                                     {{"buffer", 0}, {"byteOffset", indices_at}, {"byteLength", buf.size() - indices_at}, {"target", 34963}}});
-    g["accessors"] = json::array(
+    g["accessors"] = ojson::array(
         {{{"bufferView", 0}, {"componentType", 5126}, {"count", nv}, {"type", "VEC3"}, {"min", lo}, {"max", hi}},
          {{"bufferView", 1}, {"componentType", 5126}, {"count", nv}, {"type", "VEC3"}},
          {{"bufferView", 2}, {"componentType", 5126}, {"count", nv}, {"type", "VEC2"}},
@@ -222,9 +222,9 @@ std::string write_gltf(const merged_mesh& m) {
     return g.dump() + "\n";
 }
 
-json report_json(const sweep_report& r, const std::string& id) {
-    auto num = [](double v) -> json { return std::isfinite(v) ? json(v) : json(nullptr); };
-    json j;
+ojson report_json(const sweep_report& r, const std::string& id) {
+    auto num = [](double v) -> ojson { return std::isfinite(v) ? ojson(v) : ojson(nullptr); };
+    ojson j;
     if (!id.empty()) j["id"] = id;
     j["tolerance"] = num(r.tolerance);
     j["bound"] = num(r.bound);
@@ -308,7 +308,7 @@ int run_sweep(int argc, char** argv) {
     so.spread_holonomy = !seam;
     const loaded_input in = load_input(o);
     merged_mesh all;
-    json reports = json::array();
+    ojson reports = ojson::array();
     for (const auto& doc : in.curves) {
         const curve_spec spec = parse_curve(doc, "sweep", {});
         if (spec.dimension != 3)
@@ -331,7 +331,7 @@ int run_sweep(int argc, char** argv) {
     }
     const std::string bytes = format == "gltf" ? write_gltf(all) : format == "ply" ? write_ply(all) : write_obj(all);
     write_output(o.output, bytes);
-    if (!o.output.empty() && o.output != "-") std::cout << json({{"reports", reports}}).dump() << "\n";
+    if (!o.output.empty() && o.output != "-") std::cout << ojson({{"reports", reports}}).dump() << "\n";
     return 0;
 }
 
@@ -368,14 +368,14 @@ std::string svg_of(const std::vector<stroke_result>& results) {
     return out;
 }
 
-json geojson_of(const std::vector<stroke_result>& results, const loaded_input& in) {
-    json features = json::array();
+ojson geojson_of(const std::vector<stroke_result>& results, const loaded_input& in) {
+    ojson features = ojson::array();
     for (std::size_t i = 0; i < results.size(); ++i) {
-        json polys = json::array();
+        ojson polys = ojson::array();
         for (const auto& p : results[i].polygons) {
-            json rings = json::array();
+            ojson rings = ojson::array();
             auto ring = [](const std::vector<vec<2>>& r) {
-                json a = json::array();
+                ojson a = ojson::array();
                 for (const auto& q : r) a.push_back({q[0], q[1]});
                 if (!r.empty()) a.push_back({r.front()[0], r.front()[1]});  // closed, as GeoJSON asks
                 return a;
@@ -384,7 +384,7 @@ json geojson_of(const std::vector<stroke_result>& results, const loaded_input& i
             for (const auto& h : p.holes) rings.push_back(ring(h));
             polys.push_back(rings);
         }
-        json f = {{"type", "Feature"},
+        ojson f = {{"type", "Feature"},
                   {"properties", {{"crspline_tolerance", results[i].tolerance}}},
                   {"geometry", {{"type", "MultiPolygon"}, {"coordinates", polys}}}};
         const auto& doc = in.curves[i];

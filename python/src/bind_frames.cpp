@@ -70,7 +70,7 @@ void bind_frames(py::module_&, py::class_<curve>& cls) {
             auto ts = contiguous<T>(t);
             if (ts.ndim() != 1) throw invalid_input("t must be a 1-D array for frames");
             std::span<const T> in(ts.data(), std::size_t(ts.size()));
-            std::vector<frame<D, T>> f;
+            std::vector<crspline::frame<D, T>> f;
             if (kind == "frenet") {
                 if constexpr (D == 3) {
                     if (initial_normal) throw invalid_input("Frenet frames take no initial normal");

@@ -10,7 +10,7 @@
 namespace {
 using namespace crspline;
 using P2 = vec<2>;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using crspline::test::eps;
 
 std::array<P2, 4> pts(P2 a, P2 b, P2 c, P2 d) { return {a, b, c, d}; }
 

@@ -38,7 +38,7 @@ json streamed(const catmull_rom<D, T>& c, const report_options& opt = {}) {
     return sink.o;
 }
 
-std::vector<P> walk(std::mt19937_64& rng, std::size_t n) {
+std::vector<P> report_walk(std::mt19937_64& rng, std::size_t n) {
     std::normal_distribution<double> g(0.0, 1.0);
     std::vector<P> p(n);
     for (std::size_t i = 1; i < n; ++i) p[i] = p[i - 1] + P{{g(rng), g(rng)}};
@@ -55,7 +55,7 @@ TEST(DecisionReport, VerdictIsDecideVerdict) {
     for (std::size_t i = 0; i < 240; ++i) {
         SCOPED_TRACE("curve " + std::to_string(i));
         const double alphas[] = {0.0, 0.5, 1.0, U(rng)};
-        const catmull_rom<2> c(walk(rng, npts(rng)), {.alpha = alphas[i % 4], .closed = i % 7 == 0,
+        const catmull_rom<2> c(report_walk(rng, npts(rng)), {.alpha = alphas[i % 4], .closed = i % 7 == 0,
                                                        .tension = i % 5 == 0 ? 0.3 : 0.0});
         const decision full = decide(c);
         const std::string want = to_string(full.result);

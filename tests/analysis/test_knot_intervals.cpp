@@ -17,7 +17,7 @@ using namespace crspline;
 using P2 = vec<2>;
 using L = long double;
 using L2 = std::array<L, 2>;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using crspline::test::eps;
 
 // The example. 1.000000001 is not a double: the reference uses the
 // double the curve gets.

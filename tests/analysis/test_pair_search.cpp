@@ -14,7 +14,7 @@
 
 namespace {
 using namespace crspline;
-constexpr double pi = std::numbers::pi;
+using crspline::test::pi;
 
 // The reference enumeration: every pair i < j, in nested-loop order. The
 // per-pair code then does its own box test, exactly as the all-pairs loops

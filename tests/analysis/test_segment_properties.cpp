@@ -15,8 +15,8 @@
 namespace {
 using namespace crspline;
 using P2 = vec<2>;
-constexpr double eps = std::numeric_limits<double>::epsilon();
-constexpr double pi = std::numbers::pi;
+using crspline::test::eps;
+using crspline::test::pi;
 
 // CRSPLINE_PROPERTY_SCALE (default 1: the full run) multiplies the random
 // case counts. Below 1 the minimum-count checks are off, and the run says so

@@ -21,13 +21,13 @@ namespace {
 using namespace crspline;
 using P2 = vec<2>;
 using P3 = vec<3>;
-constexpr double pi = std::numbers::pi;
+using crspline::test::pi;
 using test::smooth_polygon;
 
 // CRSPLINE_PROPERTY_SCALE < 1 runs fewer cases and says so (scaled()
 // prints the reduced count); a Debug + AddressSanitizer build, some 30 times
 // slower, runs a fifth of them by default.
-double property_scale() {
+double soundness_scale() {
     if (std::getenv("CRSPLINE_PROPERTY_SCALE")) return test::property_scale();
 #if defined(__SANITIZE_ADDRESS__)
     return 0.2;
@@ -36,7 +36,7 @@ double property_scale() {
 #endif
 }
 std::size_t scaled(std::size_t n) {
-    const std::size_t m = std::max<std::size_t>(1, std::size_t(double(n) * property_scale()));
+    const std::size_t m = std::max<std::size_t>(1, std::size_t(double(n) * soundness_scale()));
     if (m < n) std::printf("reduced run: %zu of %zu cases (sanitizer build or CRSPLINE_PROPERTY_SCALE)\n", m, n);
     return m;
 }
@@ -256,7 +256,7 @@ void falsify(std::uint64_t seed, std::size_t tries, std::size_t& certified, std:
     std::printf(" ), %zu pairs searched, %zu undecided\n", counts.pairs, counts.undecided);
     EXPECT_EQ(counts.undecided, 0u);
     // Every kind gets certified curves (so every kind was really tested).
-    if (property_scale() >= 1) {
+    if (soundness_scale() >= 1) {
         EXPECT_EQ(per_kind.size(), 6u);
     }
 }
@@ -269,7 +269,7 @@ TEST(Soundness, CertifiedCurvesNeverMeetAnIndependentCheck) {
     std::printf("certified: %zu in 2-D, %zu in 3-D; crossings of uncertified 2-D curves: %zu, independent check "
                 "agreed on %zu\n",
                 cert2, cert3, found, agreed);
-    if (property_scale() >= 1) {
+    if (soundness_scale() >= 1) {
         EXPECT_GE(cert2, 1500u);
         EXPECT_GE(cert3, 300u);
         EXPECT_GE(found, 100u);
@@ -509,7 +509,7 @@ TEST(Soundness, AnswersDoNotChangeWhenTheCurveIsMovedOrScaled) {
     std::printf("invariance: %zu cases x 5 moves = %zu compared, %zu crossings, %zu certified\n", count, compared,
                 crossings, certified);
     EXPECT_EQ(compared, 5 * count);
-    if (property_scale() >= 1) {
+    if (soundness_scale() >= 1) {
         EXPECT_GT(crossings, count / 4);
         EXPECT_GT(certified, count / 20);
     }

@@ -13,7 +13,7 @@ namespace {
 using namespace crspline;
 using P2 = vec<2>;
 using P3 = vec<3>;
-constexpr double pi = std::numbers::pi;
+using crspline::test::pi;
 using test::property_scale;
 using test::smooth_polygon;
 

@@ -10,7 +10,7 @@
 namespace {
 using namespace crspline;
 using crspline::test::random_polygon;
-constexpr double alphas[] = {0.0, 0.25, 0.5, 0.75, 1.0};
+using crspline::test::alphas;
 
 // How far a sample may stray from a face by rounding alone: evaluations at
 // different u round differently, by a few eps of the coordinates' size.

@@ -15,9 +15,9 @@ using crspline::test::random_polygon;
 using crspline::test::scale_of;
 using P2 = vec<2>;
 using P3 = vec<3>;
-constexpr double eps = std::numeric_limits<double>::epsilon();
-constexpr double pi = std::numbers::pi;
-constexpr double alphas[] = {0.0, 0.25, 0.5, 0.75, 1.0};
+using crspline::test::eps;
+using crspline::test::pi;
+using crspline::test::alphas;
 
 template <class T>
 std::vector<T> linspace(T a, T b, std::size_t n) {

@@ -12,7 +12,7 @@ namespace {
 using namespace crspline;
 using crspline::test::random_polygon;
 using crspline::test::scale_of;
-constexpr double alphas[] = {0.0, 0.25, 0.5, 0.75, 1.0};
+using crspline::test::alphas;
 
 // The promise of nearest.hpp: distance exact to 1e-12 of the scale.
 constexpr double promise = 1e-12;

@@ -10,7 +10,7 @@
 namespace {
 using namespace crspline;
 using crspline::test::random_polygon;
-constexpr double alphas[] = {0.0, 0.25, 0.5, 0.75, 1.0};
+using crspline::test::alphas;
 
 // Distance from p to the segment [a, b], in double.
 template <std::size_t D, class T>
@@ -41,7 +41,7 @@ double sampled_error(const catmull_rom<D, T>& c, T ta, T tb, const vec<D, T>& pa
 // Largest coordinate and the curve's size: rounding is relative to both.
 template <std::size_t D, class T>
 double magnitude_of(const catmull_rom<D, T>& c) {
-    const box<D, T> b = bounding_box(c);
+    const crspline::box<D, T> b = bounding_box(c);
     return double(b.diagonal()) + double(std::max(max_abs(b.lo), max_abs(b.hi)));
 }
 

@@ -8,8 +8,8 @@ using crspline::test::random_polygon;
 using crspline::test::scale_of;
 using P2 = vec<2>;
 using P3 = vec<3>;
-constexpr double eps = std::numeric_limits<double>::epsilon();
-constexpr double alphas[] = {0.0, 0.25, 0.5, 0.75, 1.0};
+using crspline::test::eps;
+using crspline::test::alphas;
 
 TEST(Property, InterpolatesItsPointsAtTheKnots) {
     CRSPLINE_SEEDED(s, 101);

@@ -27,7 +27,7 @@ using v3 = vec3<double>;
 
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using crspline::test::eps;
 
 v3 random_vec(std::mt19937_64& rng, double length) {
     std::normal_distribution<double> g;

@@ -23,14 +23,14 @@ using v3 = vec3<double>;
 
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using crspline::test::eps;
 
 quat random_quat(std::mt19937_64& rng) {
     std::normal_distribution<double> g;
     return normalized(quat{g(rng), g(rng), g(rng), g(rng)});
 }
 
-v3 random_vec(std::mt19937_64& rng, double length) {
+v3 props_random_vec(std::mt19937_64& rng, double length) {
     std::normal_distribution<double> g;
     v3 v{{g(rng), g(rng), g(rng)}};
     return v * (length / crspline::norm(v));
@@ -38,28 +38,28 @@ v3 random_vec(std::mt19937_64& rng, double length) {
 
 /// A walk: each key turns from the last by an angle in [lo, hi] degrees about
 /// a random axis; signs random (the curves must not care).
-std::vector<quat> random_keys(std::mt19937_64& rng, std::size_t n, double lo_deg, double hi_deg) {
+std::vector<quat> props_random_keys(std::mt19937_64& rng, std::size_t n, double lo_deg, double hi_deg) {
     std::uniform_real_distribution<double> a(lo_deg, hi_deg), coin(0, 1);
     std::vector<quat> k{random_quat(rng)};
     while (k.size() < n) {
         const double ang = a(rng) * std::numbers::pi / 180;
-        quat q = from_rotation_vector(random_vec(rng, ang)) * k.back();
+        quat q = from_rotation_vector(props_random_vec(rng, ang)) * k.back();
         k.push_back(coin(rng) < 0.5 ? q : -q);
     }
     return k;
 }
 
-std::vector<double> random_times(std::mt19937_64& rng, std::size_t n) {
+std::vector<double> props_random_times(std::mt19937_64& rng, std::size_t n) {
     std::uniform_real_distribution<double> d(0.3, 2.0);
     std::vector<double> t{d(rng) - 1};
     while (t.size() < n) t.push_back(t.back() + d(rng));
     return t;
 }
 
-double qdiff(const quat& a, const quat& b) {
+double props_qdiff(const quat& a, const quat& b) {
     return std::max({std::abs(a.w - b.w), std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)});
 }
-double qdiff_sign(const quat& a, const quat& b) { return std::min(qdiff(a, b), qdiff(a, -b)); }
+double props_qdiff_sign(const quat& a, const quat& b) { return std::min(props_qdiff(a, b), props_qdiff(a, -b)); }
 
 const spline_kind quaternion_kinds[] = {spline_kind::catmull_rom, spline_kind::kochanek_bartels, spline_kind::piecewise_slerp,
                                         spline_kind::barry_goldman, spline_kind::squad};
@@ -92,7 +92,7 @@ TEST(RotationProperties, UnitNormAndKeys) {
     int checked = 0;
     for (int round = 0; round < 20; ++round) {
         const std::size_t n = 2 + rng() % 8;
-        const auto keys = random_keys(rng, n, 1, 170);
+        const auto keys = props_random_keys(rng, n, 1, 170);
         for (bool closed : {false, true})
             for (auto kind : quaternion_kinds)
                 for (std::optional<double> alpha : {std::optional<double>{}, std::optional<double>{0.5}}) {
@@ -100,9 +100,9 @@ TEST(RotationProperties, UnitNormAndKeys) {
                     // At the keys: the canonical key exactly at u = 0 (a slerp by 0 is
                     // exp(0) a = a, up to one rounding of the product: 4 eps).
                     for (std::size_t k = 0; k + 1 < c.grid().size(); ++k)
-                        EXPECT_LE(qdiff(c.evaluate_on(k, c.grid()[k]).q, c.keys()[k]), 4 * eps) << "key " << k;
+                        EXPECT_LE(props_qdiff(c.evaluate_on(k, c.grid()[k]).q, c.keys()[k]), 4 * eps) << "key " << k;
                     // The last knot: the De Casteljau value at u = 1, within a few roundings per level (3 levels, 16 eps).
-                    EXPECT_LE(qdiff(c(c.grid().back()), c.keys().back()), 16 * eps);
+                    EXPECT_LE(props_qdiff(c(c.grid().back()), c.keys().back()), 16 * eps);
                     std::uniform_real_distribution<double> u(c.grid().front(), c.grid().back());
                     for (int s = 0; s < 20; ++s) {
                         const auto j = c.evaluate(u(rng), 2);
@@ -127,8 +127,8 @@ TEST(RotationProperties, AngularVelocityIsTheDerivative) {
     const double h = 1e-5;
     for (int round = 0; round < 10; ++round) {
         const std::size_t n = 3 + rng() % 6;
-        const auto keys = random_keys(rng, n, 5, 150);
-        const auto times = random_times(rng, n);
+        const auto keys = props_random_keys(rng, n, 5, 150);
+        const auto times = props_random_times(rng, n);
         auto check = [&](const auto& c, double t) {
             const auto j = c.evaluate(t, 2);
             const double scale = std::pow(1 + crspline::max_abs(j.omega) + crspline::max_abs(j.alpha), 3);
@@ -172,7 +172,7 @@ TEST(RotationProperties, ContinuityAcrossKeysAndSeam) {
     int joins = 0;
     for (int round = 0; round < 10; ++round) {
         const std::size_t n = 3 + rng() % 8;
-        const auto keys = random_keys(rng, n, 1, 170);
+        const auto keys = props_random_keys(rng, n, 1, 170);
         for (bool closed : {false, true}) {
             for (auto kind : {spline_kind::catmull_rom, spline_kind::kochanek_bartels, spline_kind::barry_goldman, spline_kind::squad}) {
                 const quaternion_spline<double> c(keys, make_options(kind, closed, 0.5));
@@ -185,12 +185,12 @@ TEST(RotationProperties, ContinuityAcrossKeysAndSeam) {
                     // At the seam the far side is segment 0 at t0 (the same rotation, maybe the other sign).
                     const auto r = c.evaluate_on(after, after == 0 ? c.grid()[0] : t, 1);
                     const double scale = 1 + crspline::max_abs(l.omega);
-                    EXPECT_LE(qdiff_sign(l.q, r.q), 64 * eps) << "key " << k;
+                    EXPECT_LE(props_qdiff_sign(l.q, r.q), 64 * eps) << "key " << k;
                     EXPECT_LE(crspline::max_abs(l.omega - r.omega), 1e-12 * scale) << "key " << k << " kind " << int(kind);
                     ++joins;
                 }
             }
-            auto t = random_times(rng, n + (closed ? 1 : 0));
+            auto t = props_random_times(rng, n + (closed ? 1 : 0));
             c2_options<double> o;
             o.closed = closed;
             const c2_rotation_spline<double> c(t, keys, o);
@@ -201,7 +201,7 @@ TEST(RotationProperties, ContinuityAcrossKeysAndSeam) {
                 if (k + 1 == t.size() && !closed) break;
                 const std::size_t after = k + 1 == t.size() ? 0 : k;
                 const auto l = c.evaluate_on(k - 1, t[k], 2), r = c.evaluate_on(after, after == 0 ? t[0] : t[k], 2);
-                EXPECT_LE(qdiff_sign(l.q, r.q), 64 * eps);
+                EXPECT_LE(props_qdiff_sign(l.q, r.q), 64 * eps);
                 EXPECT_LE(crspline::max_abs(l.omega - r.omega), 1e-12 * (1 + crspline::max_abs(l.omega)));
                 EXPECT_LE(crspline::max_abs(l.alpha - r.alpha), 1e-9 * ascale) << "key " << k;
                 ++joins;
@@ -217,8 +217,8 @@ TEST(RotationProperties, C2ManyKeysLargeSteps) {
     CRSPLINE_SEEDED(seed, 2814);
     std::mt19937_64 rng(seed);
     const std::size_t n = 200;
-    const auto keys = random_keys(rng, n, 160, 170);
-    const auto t = random_times(rng, n);
+    const auto keys = props_random_keys(rng, n, 160, 170);
+    const auto t = props_random_times(rng, n);
     const v3 w0{{0.3, -0.2, 0.5}}, w1{{-1, 0.5, 0.25}};
     int ends = 0;
     for (int variant = 0; variant < 3; ++variant) {
@@ -259,7 +259,7 @@ TEST(RotationProperties, TimeReversal) {
     int checked = 0;
     for (int round = 0; round < 10; ++round) {
         const std::size_t n = 3 + rng() % 6;
-        auto keys = random_keys(rng, n, 1, 150);
+        auto keys = props_random_keys(rng, n, 1, 150);
         auto rev = std::vector<quat>(keys.rbegin(), keys.rend());
         for (auto kind : {spline_kind::catmull_rom, spline_kind::piecewise_slerp, spline_kind::barry_goldman, spline_kind::squad}) {
             auto o = make_options(kind, false, 0.5);
@@ -271,7 +271,7 @@ TEST(RotationProperties, TimeReversal) {
                 const double t = u(rng);
                 // Tolerance: the two evaluations round differently through up to 6
                 // slerps of O(1) values: 1e-13 leaves room for that, not for a wrong construction.
-                EXPECT_LE(qdiff_sign(a(t), b(std::clamp(b.grid().back() - t, 0.0, b.grid().back()))), 1e-13)
+                EXPECT_LE(props_qdiff_sign(a(t), b(std::clamp(b.grid().back() - t, 0.0, b.grid().back()))), 1e-13)
                     << "kind " << int(kind) << " t " << t;
                 ++checked;
             }
@@ -288,8 +288,8 @@ TEST(RotationProperties, FixedRotationOnEitherSide) {
     int checked = 0;
     for (int round = 0; round < 10; ++round) {
         const std::size_t n = 3 + rng() % 6;
-        const auto keys = random_keys(rng, n, 1, 150);
-        const auto times = random_times(rng, n);
+        const auto keys = props_random_keys(rng, n, 1, 150);
+        const auto times = props_random_times(rng, n);
         const quat g = random_quat(rng);
         std::vector<quat> left, right;
         for (const auto& q : keys) left.push_back(g * q), right.push_back(q * g);
@@ -301,8 +301,8 @@ TEST(RotationProperties, FixedRotationOnEitherSide) {
                 const double t = u(rng);
                 const auto ja = a.evaluate(t, 1), jl = l.evaluate(t, 1);
                 // Rounding only (a few slerps, one extra product): 1e-13.
-                EXPECT_LE(qdiff_sign(g * ja.q, jl.q), 1e-13);
-                EXPECT_LE(qdiff_sign(ja.q * g, r(t)), 1e-13);
+                EXPECT_LE(props_qdiff_sign(g * ja.q, jl.q), 1e-13);
+                EXPECT_LE(props_qdiff_sign(ja.q * g, r(t)), 1e-13);
                 EXPECT_LE(crspline::max_abs(rotate(g, ja.omega) - jl.omega), 1e-12 * (1 + crspline::max_abs(ja.omega)));
                 ++checked;
             }
@@ -311,8 +311,8 @@ TEST(RotationProperties, FixedRotationOnEitherSide) {
         std::uniform_real_distribution<double> u(times.front(), times.back());
         for (int s = 0; s < 10; ++s) {
             const double t = u(rng);
-            EXPECT_LE(qdiff_sign(g * a(t), l(t)), 1e-13);
-            EXPECT_LE(qdiff_sign(a(t) * g, r(t)), 1e-13);
+            EXPECT_LE(props_qdiff_sign(g * a(t), l(t)), 1e-13);
+            EXPECT_LE(props_qdiff_sign(a(t) * g, r(t)), 1e-13);
             ++checked;
         }
     }
@@ -326,18 +326,18 @@ TEST(RotationProperties, SignsOfKeysDoNotMatter) {
     int checked = 0;
     for (int round = 0; round < 10; ++round) {
         const std::size_t n = 2 + rng() % 7;
-        const auto keys = random_keys(rng, n, 1, 179);
+        const auto keys = props_random_keys(rng, n, 1, 179);
         auto flipped = keys;
         for (auto& q : flipped)
             if (rng() % 2) q = -q;
-        const auto times = random_times(rng, n);
+        const auto times = props_random_times(rng, n);
         for (auto kind : quaternion_kinds) {
             const auto o = make_options(kind, round % 2 == 1, 0.5);
             const quaternion_spline<double> a(keys, o), b(flipped, o);
             std::uniform_real_distribution<double> u(a.grid().front(), a.grid().back());
             for (int s = 0; s < 10; ++s) {
                 const double t = u(rng);
-                EXPECT_LE(qdiff_sign(a(t), b(t)), 4 * eps);  // the same canonical keys up to one overall sign
+                EXPECT_LE(props_qdiff_sign(a(t), b(t)), 4 * eps);  // the same canonical keys up to one overall sign
                 ++checked;
             }
         }
@@ -345,7 +345,7 @@ TEST(RotationProperties, SignsOfKeysDoNotMatter) {
         std::uniform_real_distribution<double> u(times.front(), times.back());
         for (int s = 0; s < 10; ++s) {
             const double t = u(rng);
-            EXPECT_LE(qdiff_sign(a(t), b(t)), 1e-14);  // conj(q_i) q_(i+1) changes sign, the short-way step does not
+            EXPECT_LE(props_qdiff_sign(a(t), b(t)), 1e-14);  // conj(q_i) q_(i+1) changes sign, the short-way step does not
             ++checked;
         }
     }
@@ -358,7 +358,7 @@ TEST(RotationProperties, TwoKeysGiveSlerp) {
     std::mt19937_64 rng(seed);
     int checked = 0;
     for (int round = 0; round < 20; ++round) {
-        auto keys = random_keys(rng, 2, 1, 179);
+        auto keys = props_random_keys(rng, 2, 1, 179);
         if (dot(keys[0], keys[1]) < 0) keys[1] = -keys[1];
         const std::vector<double> times{0.5, 2.0};
         for (auto kind : {spline_kind::catmull_rom, spline_kind::kochanek_bartels, spline_kind::piecewise_slerp}) {
@@ -367,14 +367,14 @@ TEST(RotationProperties, TwoKeysGiveSlerp) {
             const quaternion_spline<double> c(keys, o);
             for (int s = 0; s <= 10; ++s) {
                 const double u = s / 10.0;
-                EXPECT_LE(qdiff_sign(c(0.5 + 1.5 * u), slerp(keys[0], keys[1], u)), 1e-14);
+                EXPECT_LE(props_qdiff_sign(c(0.5 + 1.5 * u), slerp(keys[0], keys[1], u)), 1e-14);
                 ++checked;
             }
         }
         const c2_rotation_spline<double> c(times, keys);
         for (int s = 0; s <= 10; ++s) {
             const double u = s / 10.0;
-            EXPECT_LE(qdiff_sign(c(0.5 + 1.5 * u), slerp(keys[0], keys[1], u)), 1e-14);
+            EXPECT_LE(props_qdiff_sign(c(0.5 + 1.5 * u), slerp(keys[0], keys[1], u)), 1e-14);
             ++checked;
         }
     }
@@ -404,7 +404,7 @@ TEST(RotationProperties, SmallAngleLimitIsEuclidean) {
         }
         double vmax = 0;
         for (const auto& x : v) vmax = std::max(vmax, crspline::max_abs(x));
-        const auto times = random_times(rng, n);
+        const auto times = props_random_times(rng, n);
         crspline::options<3, double> eo;
         eo.grid = times;
         std::vector<crspline::vec<3, double>> ev;
@@ -439,9 +439,9 @@ TEST(RotationProperties, AngleLengthAndConstantAngularSpeed) {
     int checked = 0;
     for (int round = 0; round < 10; ++round) {
         const std::size_t n = 2 + rng() % 8;
-        const auto keys = random_keys(rng, n, 1, 170);
+        const auto keys = props_random_keys(rng, n, 1, 170);
         auto o = make_options(spline_kind::piecewise_slerp, false, std::nullopt);
-        o.grid = random_times(rng, n);
+        o.grid = props_random_times(rng, n);
         const quaternion_spline<double> c(keys, o);
         double exact = 0;
         for (std::size_t k = 0; k + 1 < n; ++k) exact += angle_between(c.keys()[k], c.keys()[k + 1]);
@@ -556,11 +556,11 @@ TEST(RotationProperties, Conversions) {
                            std::array<double, 3>{0.3, round % 2 ? std::numbers::pi / 2 : 0.0, -1.1});
         }
         // Matrix, rotation vector and axis-angle round trips (up to sign), and rotate = matrix product.
-        EXPECT_LE(qdiff_sign(from_matrix(to_matrix(q)), q), 8 * eps);
-        EXPECT_LE(qdiff_sign(from_rotation_vector(to_rotation_vector(q)), q), 8 * eps);
+        EXPECT_LE(props_qdiff_sign(from_matrix(to_matrix(q)), q), 8 * eps);
+        EXPECT_LE(props_qdiff_sign(from_rotation_vector(to_rotation_vector(q)), q), 8 * eps);
         const auto aa = to_axis_angle(q);
-        EXPECT_LE(qdiff_sign(from_axis_angle(aa.axis, aa.angle), q), 8 * eps);
-        const v3 x = random_vec(rng, 2.0);
+        EXPECT_LE(props_qdiff_sign(from_axis_angle(aa.axis, aa.angle), q), 8 * eps);
+        const v3 x = props_random_vec(rng, 2.0);
         const auto m = to_matrix(q);
         v3 mx{};
         for (std::size_t i = 0; i < 3; ++i) mx[i] = m[i][0] * x[0] + m[i][1] * x[1] + m[i][2] * x[2];
@@ -573,7 +573,7 @@ TEST(RotationProperties, Conversions) {
                 const auto c = euler_convention::parse(s);
                 const auto e = to_euler(c, q);
                 // Near gimbal lock an angle's error grows like eps / sin(second angle): 1e-9 holds there too.
-                EXPECT_LE(qdiff_sign(from_euler(c, e), q), round < 10 ? 1e-9 : 1e-14) << s;
+                EXPECT_LE(props_qdiff_sign(from_euler(c, e), q), round < 10 ? 1e-9 : 1e-14) << s;
                 ++checked;
             }
     }
@@ -593,7 +593,7 @@ TEST(RotationProperties, PoseCurve) {
     CRSPLINE_SEEDED(seed, 2822);
     std::mt19937_64 rng(seed);
     const std::size_t n = 12;
-    const auto keys = random_keys(rng, n, 5, 120);
+    const auto keys = props_random_keys(rng, n, 5, 120);
     const auto pos = crspline::test::random_polygon<3>(rng, n);
     const pose_curve<double> p(pos, keys);
     crspline::options<3, double> eo;
@@ -606,7 +606,7 @@ TEST(RotationProperties, PoseCurve) {
         const auto w = p.evaluate(t), b = p.evaluate(t, frame::body);
         EXPECT_LE(crspline::max_abs(w.position - pc(t)), 0.0);
         EXPECT_LE(crspline::max_abs(w.velocity - pc.evaluate(t, 1)), 8 * eps * crspline::max_abs(w.velocity));
-        EXPECT_LE(qdiff(w.orientation, rc(t)), 0.0);
+        EXPECT_LE(props_qdiff(w.orientation, rc(t)), 0.0);
         EXPECT_LE(crspline::max_abs(rotate(b.orientation, b.velocity) - w.velocity), 8 * eps * (1 + crspline::max_abs(w.velocity)));
         EXPECT_LE(crspline::max_abs(rotate(b.orientation, b.omega) - w.omega), 8 * eps * (1 + crspline::max_abs(w.omega)));
     }
@@ -632,7 +632,7 @@ TEST(RotationProperties, KeepSignsTakesTheLongWay) {
     std::mt19937_64 rng(seed);
     int checked = 0;
     for (int round = 0; round < 20; ++round) {
-        auto keys = random_keys(rng, 2, 10, 170);
+        auto keys = props_random_keys(rng, 2, 10, 170);
         if (dot(keys[0], keys[1]) > 0) keys[1] = -keys[1];
         const double theta = angle_between(keys[0], keys[1]);
         auto o = make_options(spline_kind::piecewise_slerp, false, std::nullopt);
@@ -642,7 +642,7 @@ TEST(RotationProperties, KeepSignsTakesTheLongWay) {
         EXPECT_NEAR(angle_length(short_way), theta, 1e-12 * theta);
         EXPECT_NEAR(angle_length(long_way), 2 * std::numbers::pi - theta, 1e-12 * 2 * std::numbers::pi);
         // Both end at the same rotation.
-        EXPECT_LE(qdiff_sign(short_way(1.0), long_way(1.0)), 8 * eps);
+        EXPECT_LE(props_qdiff_sign(short_way(1.0), long_way(1.0)), 8 * eps);
         ++checked;
     }
     EXPECT_EQ(checked, 20);
@@ -658,8 +658,8 @@ TEST(RotationProperties, GivenEndAngularVelocity) {
     int checked = 0;
     for (int round = 0; round < 20; ++round) {
         const std::size_t n = 3 + rng() % 5;
-        const auto keys = random_keys(rng, n, 5, 120);
-        const v3 w0 = random_vec(rng, 1.5), w1 = random_vec(rng, 0.7);
+        const auto keys = props_random_keys(rng, n, 5, 120);
+        const v3 w0 = props_random_vec(rng, 1.5), w1 = props_random_vec(rng, 0.7);
         auto o = make_options(spline_kind::catmull_rom, false, 0.5);
         o.start = rotation_end<double>::velocity(w0);
         o.end = rotation_end<double>::velocity(w1, frame::body);
@@ -702,7 +702,7 @@ double reversal_defect(const A& a, const B& b, double t0, double t1, double b0, 
     double worst = 0;
     for (int j = 0; j <= samples; ++j) {
         const double t = std::min(t0 + (t1 - t0) * j / samples, t1);
-        worst = std::max(worst, qdiff_sign(a(t), b(std::clamp(t0 + t1 - t, b0, b1))));
+        worst = std::max(worst, props_qdiff_sign(a(t), b(std::clamp(t0 + t1 - t, b0, b1))));
     }
     return worst;
 }
@@ -724,7 +724,7 @@ TEST(RotationProperties, C2TimeReversalCommutingKeys) {
     int checked = 0;
     std::uniform_real_distribution<double> ang(-170, 170), coin(0, 1);
     for (int round = 0; round < 8; ++round) {
-        const v3 axis = random_vec(rng, 1.0);
+        const v3 axis = props_random_vec(rng, 1.0);
         const std::size_t n = 2 + rng() % 10;
         std::vector<quat> keys{from_rotation_vector(axis * (ang(rng) * std::numbers::pi / 180))};
         while (keys.size() < n) {
@@ -741,7 +741,7 @@ TEST(RotationProperties, C2TimeReversalCommutingKeys) {
                 o.start = c2_end<double>::velocity(ws), o.end = c2_end<double>::velocity(we);
                 r.start = c2_end<double>::velocity(-1.0 * we), r.end = c2_end<double>::velocity(-1.0 * ws);
             }
-            const auto times = random_times(rng, o.closed ? n + 1 : n);
+            const auto times = props_random_times(rng, o.closed ? n + 1 : n);
             const auto rev = reverse_keys(keys, times, o.closed);
             const c2_rotation_spline<double> a{std::span<const double>(times), std::span<const quat>(keys), o};
             const c2_rotation_spline<double> b{std::span<const double>(rev.times), std::span<const quat>(rev.keys), r};
@@ -767,12 +767,12 @@ TEST(RotationProperties, C2TimeReversalIsThirdOrderInTheStep) {
         const std::size_t n = 4 + rng() % 6;
         std::vector<v3> steps;
         std::uniform_real_distribution<double> a(0.5, 1.0);
-        for (std::size_t k = 0; k < n; ++k) steps.push_back(random_vec(rng, a(rng)));
+        for (std::size_t k = 0; k < n; ++k) steps.push_back(props_random_vec(rng, a(rng)));
         for (int end = 0; end < 3; ++end) {
             c2_options<double> o;
             o.closed = end == 2;
             if (end == 1) o.start = o.end = c2_end<double>::natural();
-            const auto times = random_times(rng, o.closed ? n + 1 : n);
+            const auto times = props_random_times(rng, o.closed ? n + 1 : n);
             double defect[2];
             for (int h = 0; h < 2; ++h) {
                 const double scale = h == 0 ? 0.1 : 0.05;
@@ -807,7 +807,7 @@ TEST(RotationProperties, TimeReversalClosedAndOtherKinds) {
     int checked = 0;
     for (int round = 0; round < 6; ++round) {
         const std::size_t n = 3 + rng() % 6;
-        const auto keys = random_keys(rng, n, 1, 150);
+        const auto keys = props_random_keys(rng, n, 1, 150);
         std::uniform_real_distribution<double> tcb(-0.5, 0.5);
         const double T = tcb(rng), C = tcb(rng), B = tcb(rng);
         for (bool closed : {false, true})
@@ -828,7 +828,7 @@ TEST(RotationProperties, TimeReversalClosedAndOtherKinds) {
         // on the right is evaluated, so a jump there would not mirror).
         std::vector<std::vector<quat>> segs, rsegs;
         for (std::size_t i = 0; i + 1 < n; ++i) {
-            auto c = random_keys(rng, 2 + rng() % 4, 1, 60);
+            auto c = props_random_keys(rng, 2 + rng() % 4, 1, 60);
             if (i > 0) c[0] = segs.back().back();
             segs.push_back(c);
         }
@@ -861,7 +861,7 @@ TEST(RotationProperties, TimeReversalClosedAndOtherKinds) {
                 const double t = std::min(end * j / 200, end), tr = std::clamp(end - t, 0.0, b.grid().back());
                 const auto sa = a.evaluate(t), sb = b.evaluate(tr);
                 EXPECT_LE(crspline::max_abs(sa.position - sb.position), 1e-12 * scale) << "pose t " << t;
-                EXPECT_LE(qdiff_sign(sa.orientation, sb.orientation), 1e-13) << "pose t " << t;
+                EXPECT_LE(props_qdiff_sign(sa.orientation, sb.orientation), 1e-13) << "pose t " << t;
             }
             ++checked;
         }

@@ -36,10 +36,10 @@ std::vector<quat> quats(const json& a) {
 }
 vec3<double> to_vec(const json& a) { return {{a[0].get<double>(), a[1].get<double>(), a[2].get<double>()}}; }
 
-double qdiff(const quat& a, const quat& b) {
+double ref_qdiff(const quat& a, const quat& b) {
     return std::max({std::abs(a.w - b.w), std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)});
 }
-double qdiff_sign(const quat& a, const quat& b) { return std::min(qdiff(a, b), qdiff(a, -b)); }
+double ref_qdiff_sign(const quat& a, const quat& b) { return std::min(ref_qdiff(a, b), ref_qdiff(a, -b)); }
 
 rotation_options<double> options_of(const json& c, bool documented_natural) {
     rotation_options<double> o;
@@ -85,7 +85,7 @@ TEST(RotationReference, QuaternionSplines) {
                 const std::size_t seg = s["seg"][k];
                 const double t = s["t_exact"][k];
                 const so3::jet<double> j = eval(seg, t);
-                EXPECT_LE(qdiff(j.q, to_quat(q_exact[k])), tol_q) << "sample " << k << " t " << t;
+                EXPECT_LE(ref_qdiff(j.q, to_quat(q_exact[k])), tol_q) << "sample " << k << " t " << t;
                 const auto w = to_vec(w_exact[k]);
                 EXPECT_LE(crspline::max_abs(j.omega - w), tol_w) << "sample " << k << " t " << t;
                 ++count;
@@ -110,7 +110,7 @@ TEST(RotationReference, QuaternionSplines) {
             const quaternion_spline<double> curve(keys, options_of(c, false));
             const auto canon = quats(c["keys_canonical"]);
             ASSERT_EQ(curve.keys().size(), canon.size());
-            for (std::size_t k = 0; k < canon.size(); ++k) EXPECT_LE(qdiff(curve.keys()[k], canon[k]), 4e-16) << "key " << k;
+            for (std::size_t k = 0; k < canon.size(); ++k) EXPECT_LE(ref_qdiff(curve.keys()[k], canon[k]), 4e-16) << "key " << k;
             const auto ge = c["grid_exact"].get<std::vector<double>>();
             ASSERT_EQ(curve.grid().size(), ge.size());
             // The grid: atan2 angles agree with the exact grid to a few ulps of its
@@ -158,7 +158,7 @@ TEST(RotationReference, ScipyRotationSplineConverged) {
             o.kind = spline_kind::piecewise_slerp;
             o.grid = times;
             const quaternion_spline<double> curve(keys, o);
-            for (std::size_t k = 0; k < ts.size(); ++k) EXPECT_LE(qdiff_sign(curve(ts[k]), to_quat(c["q"][k])), 1e-12) << k;
+            for (std::size_t k = 0; k < ts.size(); ++k) EXPECT_LE(ref_qdiff_sign(curve(ts[k]), to_quat(c["q"][k])), 1e-12) << k;
             ++slerps;
             continue;
         }
@@ -171,7 +171,7 @@ TEST(RotationReference, ScipyRotationSplineConverged) {
         }
         for (std::size_t k = 0; k < ts.size(); ++k) {
             const auto j = s.evaluate(ts[k], 2, frame::body);
-            EXPECT_LE(qdiff_sign(j.q, to_quat(ref["q"][k])), 1e-12) << "t " << ts[k];
+            EXPECT_LE(ref_qdiff_sign(j.q, to_quat(ref["q"][k])), 1e-12) << "t " << ts[k];
             EXPECT_LE(crspline::max_abs(j.omega - to_vec(ref["rate"][k])), 1e-10 * rate_scale) << "t " << ts[k];
             EXPECT_LE(crspline::max_abs(j.alpha - to_vec(ref["accel"][k])), 1e-10 * accel_scale) << "t " << ts[k];
             ++samples;

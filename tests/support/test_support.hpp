@@ -11,11 +11,20 @@
 #include <cstdio>
 #include <stdexcept>
 #include <cstdlib>
+#include <limits>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
 
 namespace crspline::test {
+
+/// Constants many test files use; each file names them with a
+/// using-declaration (allowed more than once in one translation unit, as a
+/// unity build makes one of a folder's files).
+inline constexpr double eps = std::numeric_limits<double>::epsilon();
+inline constexpr double pi = std::numbers::pi;
+inline constexpr double alphas[] = {0.0, 0.25, 0.5, 0.75, 1.0};
 
 /// Seed for a property test: CRSPLINE_SEED from the environment, or the
 /// given default. Reported through SCOPED_TRACE on every failure.

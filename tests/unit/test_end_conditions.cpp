@@ -10,7 +10,7 @@ using crspline::test::random_polygon;
 using crspline::test::scale_of;
 using P2 = vec<2>;
 using P3 = vec<3>;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using crspline::test::eps;
 
 TEST(EndConditions, NaturalEndsHaveZeroSecondDerivative) {
     CRSPLINE_SEEDED(s, 11);

@@ -6,7 +6,7 @@ using namespace crspline;
 using crspline::test::random_polygon;
 using P2 = vec<2>;
 using P3 = vec<3>;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using crspline::test::eps;
 
 TEST(Evaluation, KnotBelongsToTheSegmentOnItsRightLastKnotToLast) {
     std::vector<P2> p{P2{{0, 0}}, P2{{1, 0}}, P2{{2, 1}}, P2{{3, 1}}};

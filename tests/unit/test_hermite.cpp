@@ -10,7 +10,7 @@ namespace {
 using namespace crspline;
 using P2 = vec<2>;
 using P3 = vec<3>;
-constexpr double eps = std::numeric_limits<double>::epsilon();
+using crspline::test::eps;
 
 template <class E, class F>
 std::string error_of(F&& f) {
