@@ -79,12 +79,19 @@ public:
         // neighbours in the unrolled order, without wrapping for simplicity).
         const std::size_t s0 = v >= 2 ? v - 2 : 0, s1 = std::min(nseg, v + 2);
         if (s0 >= s1) return;
-        const T before = error(s0, s1);
+        // The curve at the parameters, and error(s0, s1) from it (the same
+        // sum in the same order).
         const point old = pos_[v];
-        std::vector<point> base;
+        std::vector<point>& base = base_;
+        base.clear();
+        T before = 0;
         for (std::size_t s = s0; s < s1; ++s) {
             const auto seg = segment(s);
-            for (std::size_t k = idx_[s]; k < idx_[s + 1]; ++k) base.push_back(seg.at(u_[k]));
+            for (std::size_t k = idx_[s]; k < idx_[s + 1]; ++k) {
+                base.push_back(seg.at(u_[k]));
+                const point d = base.back() - pb_.at(k);
+                before += dot(d, d);
+            }
         }
         const T delta = pb_.tolerance;
         point moved = old;
@@ -130,6 +137,7 @@ private:
     std::vector<point>& pos_;
     std::size_t nv_ = 0;
     std::vector<T> u_;
+    std::vector<point> base_;  // move()'s, kept for its capacity
 };
 
 template <std::size_t D, class T>

@@ -51,19 +51,32 @@ struct fit_problem {
         if (alpha == 1) return d;
         return T(std::pow(double(d), alpha));
     }
-    /// The plain Catmull-Rom tangent dx/dt at x between l and r.
-    point vertex_tangent(const point& l, const point& x, const point& r) const noexcept {
-        const T h0 = interval(l, x), h1 = interval(x, r);
+    /// The plain Catmull-Rom tangent dx/dt at x between l and r, whose
+    /// intervals h0 = interval(l, x) and h1 = interval(x, r) the caller has
+    /// at hand (segment() takes each of its three once).
+    point vertex_tangent(const point& l, const point& x, const point& r, T h0, T h1) const noexcept {
         if (!(h0 > 0) || !(h1 > 0)) return point{};
         return (h1 * ((x - l) / h0) + h0 * ((r - x) / h1)) / (h0 + h1);
     }
+
+    /// A segment's three knot intervals: interval(p, a), interval(a, b) and
+    /// interval(b, n) (0 for an absent neighbour).
+    struct knots {
+        T before = 0, h = 0, after = 0;
+    };
 
     /// The segment from a to b (u in [0, 1]) with neighbours p (before a)
     /// and n (after b), absent at an open curve's ends, and the tension
     /// levels of a and b; as catmull_rom builds it up to rounding.
     cubic_segment<D, T> segment(const point* p, const point& a, const point& b, const point* n, std::uint8_t la,
                                 std::uint8_t lb) const noexcept {
-        const T h = interval(a, b);
+        return segment(p, a, b, n, la, lb, knots{p ? interval(*p, a) : T(0), interval(a, b), n ? interval(b, *n) : T(0)});
+    }
+    /// The same with the intervals at hand (the search keeps them by index
+    /// pair: each is a function of its two points).
+    cubic_segment<D, T> segment(const point* p, const point& a, const point& b, const point* n, std::uint8_t la,
+                                std::uint8_t lb, const knots& k) const noexcept {
+        const T h = k.h;
         const point v = h > 0 ? (b - a) / h : point{};
         const T keep = T(1) - tension;
         const T ka = T(1) - T(fit_tension_levels[la]), kb = T(1) - T(fit_tension_levels[lb]);
@@ -71,8 +84,8 @@ struct fit_problem {
         if (!p && !n) {
             ta = tb = v;  // two points: a straight line, whatever the options
         } else {
-            const point cra = p ? vertex_tangent(*p, a, b) : point{};
-            const point crb = n ? vertex_tangent(a, b, *n) : point{};
+            const point cra = p ? vertex_tangent(*p, a, b, k.before, h) : point{};
+            const point crb = n ? vertex_tangent(a, b, *n, h, k.after) : point{};
             if (p) ta = keep * (ka * cra);
             else ta = keep * (start_reflect ? v : (T(3) * v - kb * crb) / T(2));
             if (n) tb = keep * (kb * crb);

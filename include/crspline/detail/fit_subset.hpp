@@ -40,6 +40,13 @@ namespace crspline::detail {
 
 inline constexpr std::size_t fit_none = std::size_t(-1);
 
+/// A multiplicative mix of indices; its top bits pick an entry of the
+/// search's small tables.
+inline std::uint64_t fit_mix(std::size_t a, std::size_t b, std::size_t c = 0, std::size_t d = 0) noexcept {
+    return std::uint64_t(a) * 0x9E3779B97F4A7C15u ^ std::uint64_t(b) * 0xC2B2AE3D27D4EB4Fu ^
+           std::uint64_t(c) * 0x165667B19E3779F9u ^ std::uint64_t(d) * 0xD6E8FEB86659FD93u;
+}
+
 /// A fitted selection: control points as (unrolled) input indices (the
 /// input point each one stands for, and where its segment's coverage
 /// starts), their positions (the input points themselves in subset mode),
@@ -56,20 +63,27 @@ template <std::size_t D, class T>
 class subset_search {
 public:
     using point = vec<D, T>;
-    explicit subset_search(const fit_problem<D, T>& pb) : pb_(pb) {
+    explicit subset_search(const fit_problem<D, T>& pb) : pb_(pb), limits_(pb.tolerance, pb.slack) {
         const std::size_t n = pb.size();
         last_ = pb.closed ? n : n - 1;
     }
 
     /// Whether the segment i -> j (unrolled indices) with predecessor p and
     /// successor nx (fit_none: an open end) keeps the tolerance, at the
-    /// base tension level (the quick test).
+    /// base tension level (the quick test). The answer is a function of
+    /// (p, i, j, nx): a small table of recent answers saves the tests that
+    /// improve() (mostly) repeats within a few dozen calls.
     bool passes(std::size_t p, std::size_t i, std::size_t j, std::size_t nx) const {
+        recent& r = recent_[fit_mix(p, i, j, nx) >> 58];
+        if (r.key == std::array<std::size_t, 4>{p, i, j, nx}) return r.ok;
         const point* pp = p == fit_none ? nullptr : &pb_.at(p);
         const point* np = nx == fit_none ? nullptr : &pb_.at(nx);
-        const auto seg = pb_.segment(pp, pb_.at(i), pb_.at(j), np, pb_.base_level, pb_.base_level);
+        const typename fit_problem<D, T>::knots k{pp ? interval(p, i) : T(0), interval(i, j), np ? interval(j, nx) : T(0)};
+        const auto seg = pb_.segment(pp, pb_.at(i), pb_.at(j), np, pb_.base_level, pb_.base_level, k);
         const poly_range<D, T> pr{pb_.pts, i >= pb_.size() ? i - pb_.size() : i, j - i + 1};
-        return quick_segment_test(seg, pr, pb_.tolerance, pb_.slack, 1, j - i);
+        r.key = {p, i, j, nx};
+        r.ok = quick_segment_test(seg, pr, limits_, 1, j - i);
+        return r.ok;
     }
 
     /// The guessed successor of the segment i -> j: one step of the same
@@ -263,7 +277,28 @@ public:
 
 private:
     const fit_problem<D, T>& pb_;
+    const quick_limits<T> limits_;  // pb_'s, for every quick test
     std::size_t last_ = 0;
+    /// pb_.interval between the points at unrolled indices a and b, kept
+    /// in a small table by index pair (reach() asks for the same (p, i) at
+    /// every step, choose() for the same (z, a) and (a, b) for each candidate).
+    T interval(std::size_t a, std::size_t b) const {
+        known_interval& e = intervals_[fit_mix(a, b) >> 56];
+        if (e.a != a || e.b != b) e = {a, b, pb_.interval(pb_.at(a), pb_.at(b))};
+        return e.h;
+    }
+    struct known_interval {
+        std::size_t a = fit_none, b = fit_none;
+        T h = 0;
+    };
+    mutable std::array<known_interval, 256> intervals_{};
+    // passes()'s recent answers, by the key's mix (i is never fit_none: an
+    // empty entry). These tables make a search an object for one thread.
+    struct recent {
+        std::array<std::size_t, 4> key{fit_none, fit_none, fit_none, fit_none};
+        bool ok = false;
+    };
+    mutable std::array<recent, 64> recent_{};
 };
 
 /// Builds the curve of a selection (a closed curve's last entry, the first
