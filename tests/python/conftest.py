@@ -49,3 +49,39 @@ def crspline():
     import crspline as module
     return module
 
+
+def assert_releases_the_gil(call, scale=1):
+    """Runs call(scale) in a thread while this one keeps running Python,
+    and asserts that it kept running: stamps taken all along the call, no
+    gap of half the call's length (with the GIL held the loop would stall
+    for the whole call). A call too short to tell (under 50 ms: a fast
+    machine, an optimized build) runs again with twice the scale, up to 2^8
+    times the first; the call must then last 20 ms at least."""
+    import threading
+    import time
+
+    for _ in range(9):
+        done = threading.Event()
+        started = threading.Event()
+        span = {}
+
+        def work():
+            started.set()
+            t0 = time.perf_counter()
+            call(scale)
+            span["call"] = time.perf_counter() - t0
+            done.set()
+
+        th = threading.Thread(target=work)
+        th.start()
+        started.wait()
+        stamps = []
+        while not done.is_set():
+            stamps.append(time.perf_counter())
+        th.join()
+        if span["call"] >= 0.05:
+            break
+        scale *= 2
+    assert span["call"] > 0.02, ("the call was too short to tell", span["call"], scale)
+    gaps = np.diff(stamps) if len(stamps) > 1 else np.array([span["call"]])
+    assert len(stamps) > 100 and gaps.max() < 0.5 * span["call"], (len(stamps), gaps.max(), span["call"])
