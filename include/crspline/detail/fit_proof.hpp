@@ -30,6 +30,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <span>
 
 #include "../nearest.hpp"
@@ -245,7 +246,10 @@ bool piece_within(const std::array<vec<D, T>, 4>& q, T a, T b, const poly_range<
 }
 
 /// Room for an X built later: not zeroed on construction (vec<D, T> zeroes
-/// itself), for tables of which a test builds few entries.
+/// itself), for tables of which a test builds few entries. An entry's
+/// lifetime begins with std::construct_at (X's default constructor is not
+/// trivial, so assigning to the member would not begin it); X is trivially
+/// destructible.
 template <class X>
 union fit_slot {
     X x;
@@ -280,7 +284,7 @@ public:
     point offset(const point& p, std::size_t l) {
         if (!(have_chord_ >> l & 1)) {
             const point a = at(l), d = at(l + 1) - a;
-            chords_[l].x = chord{a, d, dot(d, d)};
+            std::construct_at(&chords_[l].x, chord{a, d, dot(d, d)});
             have_chord_ |= std::uint64_t(1) << l;
         }
         const chord& c = chords_[l].x;
@@ -304,7 +308,7 @@ private:
     };
     const point& at(std::size_t l) {
         if (!(have_at_ >> l & 1)) {
-            at_[l].x = seg_.at(T(l) / T(n_));
+            std::construct_at(&at_[l].x, seg_.at(T(l) / T(n_)));
             have_at_ |= std::uint64_t(1) << l;
         }
         return at_[l].x;
