@@ -59,13 +59,16 @@ public:
         }
     }
 
-    // Squared error of the points covered by segments [s0, s1).
-    T error(std::size_t s0, std::size_t s1) const {
+    // Squared error of the points covered by segments [s0, s1); the curve
+    // points it measures are appended to `at` where given.
+    T error(std::size_t s0, std::size_t s1, std::vector<point>* at = nullptr) const {
         T e = 0;
         for (std::size_t s = s0; s < s1; ++s) {
             const auto seg = segment(s);
             for (std::size_t k = idx_[s]; k < idx_[s + 1]; ++k) {
-                const point d = seg.at(u_[k]) - pb_.at(k);
+                const point c = seg.at(u_[k]);
+                if (at) at->push_back(c);
+                const point d = c - pb_.at(k);
                 e += dot(d, d);
             }
         }
@@ -79,20 +82,11 @@ public:
         // neighbours in the unrolled order, without wrapping for simplicity).
         const std::size_t s0 = v >= 2 ? v - 2 : 0, s1 = std::min(nseg, v + 2);
         if (s0 >= s1) return;
-        // The curve at the parameters, and error(s0, s1) from it (the same
-        // sum in the same order).
+        // The error and the curve points it measured (base).
         const point old = pos_[v];
         std::vector<point>& base = base_;
         base.clear();
-        T before = 0;
-        for (std::size_t s = s0; s < s1; ++s) {
-            const auto seg = segment(s);
-            for (std::size_t k = idx_[s]; k < idx_[s + 1]; ++k) {
-                base.push_back(seg.at(u_[k]));
-                const point d = base.back() - pb_.at(k);
-                before += dot(d, d);
-            }
-        }
+        const T before = error(s0, s1, &base);
         const T delta = pb_.tolerance;
         point moved = old;
         moved[0] += delta;

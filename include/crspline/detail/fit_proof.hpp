@@ -528,10 +528,4 @@ bool quick_segment_test(const cubic_segment<D, T>& seg, const poly_range<D, T>& 
     return true;
 }
 
-template <std::size_t D, class T>
-bool quick_segment_test(const cubic_segment<D, T>& seg, const poly_range<D, T>& pr, T tolerance, T slack,
-                        std::size_t first_point, std::size_t end_point) {
-    return quick_segment_test(seg, pr, quick_limits<T>(tolerance, slack), first_point, end_point);
-}
-
 }  // namespace crspline::detail
