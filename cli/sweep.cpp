@@ -231,6 +231,7 @@ ojson report_json(const sweep_report& r, const std::string& id) {
     j["tolerance_met"] = r.tolerance_met;
     j["proved"] = r.proved;
     j["holonomy"] = r.holonomy;
+    j["frame_drift"] = num(r.frame_drift);
     j["length"] = r.length;
     j["largest_radius"] = r.largest_radius;
     j["clearance"] = num(r.clearance);

@@ -299,6 +299,8 @@ export interface SweepReport {
   toleranceMet: boolean;
   proved: boolean;
   holonomy: number;
+  /** A bound on the ring frames' angle from the exact rotation-minimizing frame (radians; 0 with `up`); `bound` includes it. */
+  frameDrift: number;
   length: number;
   largestRadius: number;
   clearance: number;

@@ -14,7 +14,8 @@
 // follows the up vector's projection and never flips: see
 // sweep/rings.hpp for the poles), and a scale along arc length (keys,
 // a Catmull-Rom interpolant in s). How the tolerance is proved:
-// sweep/sampling.hpp. Everything is in double; the result is plain arrays
+// sweep/sampling.hpp, and sweep/drift.hpp for the rings' frames against the
+// exact rotation-minimizing frame. Everything is in double; the result is plain arrays
 // (what WASM and NumPy take as they are).
 #pragma once
 
@@ -44,6 +45,10 @@ namespace crspline {
 /// The default sweep tolerance, relative to the curve's bounding-box
 /// diagonal plus twice the largest radius.
 inline constexpr double default_sweep_tolerance = 1e-3;
+
+/// The share of the along-curve tolerance that placing the rings keeps for
+/// the frames' drift from the exact rotation-minimizing frame.
+inline constexpr double sweep_drift_share = 0.01;
 
 /// The cross-section, in the plane of the frame's normal (first
 /// coordinate) and binormal (second).
@@ -90,6 +95,7 @@ struct sweep_report {
     bool tolerance_met = true;       ///< bound <= tolerance (adaptive)
     bool proved = true;              ///< false with an up vector that a tangent comes within 5 degrees of (a pole): its turn there is measured at the rings, not bounded
     double holonomy = 0;             ///< the rotation-minimizing frame's twist after one loop (closed, no up), radians
+    double frame_drift = 0;          ///< a bound on the ring frames' angle from the exact rotation-minimizing frame (radians; 0 with up); `bound` includes it times the radius
     double length = 0;               ///< the curve's arc length (v = s / length)
     double largest_radius = 0;       ///< largest scale x |profile point|
     double clearance = std::numeric_limits<double>::infinity();  ///< centre line, non-adjacent segments
@@ -223,7 +229,8 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
         q.edge = prof.edge;
         q.dt_du = grid[i + 1] - grid[i];
         const double ta = grid[i] + ua * q.dt_du, tb = ub == 1 ? grid[i + 1] : grid[i] + ub * q.dt_du;
-        const double sa = table.s_at(ta), sb = table.s_at(tb);
+        const bool in_s = !scale.empty() || (!roll.empty() && roll_in_s);
+        const double sa = in_s ? table.s_at(ta) : 0.0, sb = in_s ? table.s_at(tb) : 0.0;
         if (!scale.empty()) {
             const auto b = scale.bounds(sa, sb);
             q.scale = b[0], q.scale_s1 = b[1], q.scale_s2 = b[2];
@@ -250,14 +257,15 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
         const auto& s = curve.segment(i);
         return s.c1 == vec<3>{} && s.c2 == vec<3>{} && s.c3 == vec<3>{};
     };
-    // Each piece between consecutive rings, split at knots: f(i, ua, ub) on
-    // segment i (constant segments left out); stops at the first false.
+    // Each piece between consecutive rings, split at knots: f(k, i, ua, ub)
+    // on segment i between rings k - 1 and k (constant segments left out);
+    // stops at the first false.
     auto every_piece = [&](const std::vector<ring_site>& rs, auto&& f) {
-        for (std::size_t k = 0; k + 1 < rs.size(); ++k)
-            for (std::size_t i = rs[k].segment; i <= rs[k + 1].segment; ++i) {
+        for (std::size_t k = 1; k < rs.size(); ++k)
+            for (std::size_t i = rs[k - 1].segment; i <= rs[k].segment; ++i) {
                 if (constant(i)) continue;
-                const double ua = i == rs[k].segment ? rs[k].u : 0.0, ub = i == rs[k + 1].segment ? rs[k + 1].u : 1.0;
-                if (ub > ua && !f(i, ua, ub)) return false;
+                const double ua = i == rs[k - 1].segment ? rs[k - 1].u : 0.0, ub = i == rs[k].segment ? rs[k].u : 1.0;
+                if (ub > ua && !f(k, i, ua, ub)) return false;
             }
         return true;
     };
@@ -267,7 +275,9 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
     auto up_proved = [&](const std::vector<ring_site>& rs) {
         if (!opt.up) return true;
         const vec<3> up = *opt.up / norm(*opt.up);
-        return every_piece(rs, [&](std::size_t i, double ua, double ub) { return up_piece_proved(curve.segment(i), ua, ub, up); });
+        return every_piece(rs, [&](std::size_t, std::size_t i, double ua, double ub) {
+            return up_piece_proved(curve.segment(i), ua, ub, up);
+        });
     };
     ring_inputs in;
     in.curve = &curve;
@@ -277,14 +287,46 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
     in.scale = &scale;
     if (opt.up) in.up = *opt.up;
     in.spread_holonomy = opt.spread_holonomy;
+    // The bound a set of rings achieves: the along bound of each step's
+    // pieces (the closed frame's twist rate from the measured holonomy and
+    // the carried frame's drift, which bounds how far the exact one is),
+    // the profile's (around), and the ring frames' drift from the exact
+    // rotation-minimizing frame times the largest profile radius at the
+    // ring (sweep/drift.hpp).
+    struct achieved_bound {
+        double along = 0, frame = 0;
+        std::vector<double> step_along, step_width;
+    };
+    auto achieved = [&](const std::vector<ring_site>& rs, const ring_frames& fr, double up_factor) {
+        achieved_bound b;
+        const double twist =
+            closed && !opt.up && opt.spread_holonomy ? (std::abs(fr.holonomy) + fr.end_drift) / period : 0.0;
+        b.step_along.assign(rs.size(), 0.0);
+        b.step_width.assign(rs.size(), 0.0);
+        every_piece(rs, [&](std::size_t k, std::size_t i, double ua, double ub) {
+            const double a = along_bound(curve.segment(i), ua, ub, rates_for(i, ua, ub, twist, fr.up_turn_u * up_factor));
+            b.step_along[k] = std::max(b.step_along[k], a);
+            b.step_width[k] += ub - ua;
+            b.along = std::max(b.along, a);
+            return true;
+        });
+        for (std::size_t k = 0; k < fr.drift.size(); ++k) b.frame = std::max(b.frame, fr.scale[k] * prof.rho * fr.drift[k]);
+        return b;
+    };
     std::vector<ring_site> sites;
     ring_frames frames;
     bool met = true;
     double bound = 0;
     if (!given_counts) {
+        // The rings are placed for the along bound with a hundredth of its share
+        // kept for the frames' drift; steps over their share are then split
+        // until the whole bound holds.
+        const double along_target = along_tol * (1 - sweep_drift_share);
+        double placed_along = 0, placed_twist = 0, placed_up = 0;  // the placement's largest along bound, and the rates it used
         auto place = [&](double twist, double up_u1) {
             sites.clear();
             met = true;
+            placed_along = 0, placed_twist = twist, placed_up = up_u1;
             std::vector<double> cuts;
             for (std::size_t i = 0; i < curve.segment_count(); ++i) {
                 if (constant(i)) continue;
@@ -296,22 +338,61 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
                 for (std::size_t b = 0; b + 1 < br.size(); ++b) {
                     cuts.clear();
                     met &= cut_interval(curve.segment(i), br[b], br[b + 1], rates_for(i, br[b], br[b + 1], twist, up_u1),
-                                        along_tol, 1u << 16, cuts);
+                                        along_target, 1u << 16, cuts, placed_along);
                     for (double u : cuts) sites.push_back(site(i, u));
                     sites.push_back(site(i, br[b + 1]));
                 }
             }
             if (sites.empty()) sites = {site(0, 0), site(curve.segment_count() - 1, 1)};  // a single point
         };
+        // (A closed curve's first rings only measure its holonomy: their
+        // drift is bounded on the rings placed with its twist.)
+        in.drift = !(closed && !opt.up && opt.spread_holonomy);
         place(0, 0);
         frames = compute_rings(sites, in);
+        const bool first_drift = in.drift;
+        in.drift = true;
         const double twist = closed && !opt.up && opt.spread_holonomy ? std::abs(frames.holonomy) / period * 1.01 : 0.0;
         const double up_u1 = opt.up ? frames.up_turn_u * 1.5 : 0.0;
-        if (twist > 0 || up_u1 > 0) {
-            place(twist, up_u1);
+        if (twist > 0 || up_u1 > 0 || !first_drift) {
+            if (twist > 0 || up_u1 > 0) place(twist, up_u1);
             frames = compute_rings(sites, in);
         }
-        bound = met ? along_tol + around : std::numeric_limits<double>::infinity();
+        const double spread = closed && !opt.up && opt.spread_holonomy ? 2.0 : 1.0;  // drift_k + f_k drift_last
+        for (int round = 0;; ++round) {
+            if (round == 0 && met) {
+                // The placement's own bounds hold where its twist was at
+                // least the final one (along_bound grows with it).
+                const double twist_now =
+                    closed && !opt.up && opt.spread_holonomy ? (std::abs(frames.holonomy) + frames.end_drift) / period : 0.0;
+                double frame = 0;
+                for (std::size_t k = 0; k < frames.drift.size(); ++k)
+                    frame = std::max(frame, frames.scale[k] * prof.rho * frames.drift[k]);
+                bound = placed_along + around + frame;
+                if (twist_now <= placed_twist && frames.up_turn_u * 1.5 <= placed_up && bound <= tol * (1 + 1e-12)) break;
+            }
+            const auto b = achieved(sites, frames, 1.5);
+            bound = met ? b.along + around + b.frame : std::numeric_limits<double>::infinity();
+            if (!met || bound <= tol * (1 + 1e-12) || round == 8) break;
+            double r_max = 0, width = 0;
+            for (double r : frames.scale) r_max = std::max(r_max, r * prof.rho);
+            for (double w : b.step_width) width += w;
+            const double room = std::max(tol - around - along_target, 0.0) / (spread * r_max * width);
+            std::vector<ring_site> next{sites[0]};
+            for (std::size_t k = 1; k < sites.size(); ++k) {
+                const bool split = b.step_along[k] > along_target ||
+                                   (!frames.step_drift.empty() && frames.step_drift[k] > room * b.step_width[k]);
+                if (split && b.step_width[k] > 0) {
+                    const auto& p = sites[k - 1];
+                    const auto& q = sites[k];
+                    next.push_back(p.segment == q.segment ? site(q.segment, (p.u + q.u) / 2) : site(q.segment, q.u / 2));
+                }
+                next.push_back(sites[k]);
+            }
+            if (next.size() == sites.size()) break;
+            sites = std::move(next);
+            frames = compute_rings(sites, in);
+        }
         out.report.tolerance = tol;
     } else {
         // Given counts: rings equally spaced in arc length (three.js' tubularSegments).
@@ -329,14 +410,8 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
             sites.push_back(r);
         }
         frames = compute_rings(sites, in);
-        // The bound these rings achieve, piece by piece (split at knots).
-        const double twist = closed && !opt.up ? std::abs(frames.holonomy) / period : 0.0;
-        double along = 0;
-        every_piece(sites, [&](std::size_t i, double ua, double ub) {
-            along = std::max(along, along_bound(curve.segment(i), ua, ub, rates_for(i, ua, ub, twist, frames.up_turn_u)));
-            return true;
-        });
-        bound = along + around;
+        const auto b = achieved(sites, frames, 1.0);
+        bound = b.along + around + b.frame;
     }
     // 5. The mesh.
     write_mesh(frames, sites, prof, length, closed, closed && opt.spread_holonomy, out.positions, out.normals, out.uvs,
@@ -350,6 +425,7 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
     rep.tolerance_met = given_counts || bound <= tol * (1 + 1e-12);
     rep.proved = up_proved(sites);
     rep.holonomy = frames.holonomy;
+    for (double d : frames.drift) rep.frame_drift = std::max(rep.frame_drift, d);
     rep.length = length;
     for (std::size_t k = 0; k < sites.size(); ++k) {
         const double extent = frames.scale[k] * prof.rho;

@@ -149,6 +149,8 @@ test('sweep: a closed knot closes with no seam (positions, normals, u equal; v 0
   // The computed closing ring met the first to rounding (the report).
   assert.ok(m.report.seamGap < 1e-9 && m.report.seamNormalGap < 1e-9, JSON.stringify(m.report));
   assert.ok(Math.abs(m.report.holonomy) > 0.01, `holonomy ${m.report.holonomy}`);
+  // The rings' frames against the exact rotation-minimizing frame: finite, inside the bound.
+  assert.ok(m.report.frameDrift > 0 && m.report.bound >= 2 * 0.3 * m.report.frameDrift, JSON.stringify(m.report));
   for (let v = 0; v < m.normals.length; v += 3)
     assert.ok(Math.abs(Math.hypot(m.normals[v], m.normals[v + 1], m.normals[v + 2]) - 1) < 1e-6);
   // Without the spread twist the closing ring misses the first by the holonomy.

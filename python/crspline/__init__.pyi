@@ -386,6 +386,7 @@ class SweepReport(TypedDict):
     tolerance_met: bool
     proved: bool
     holonomy: float
+    frame_drift: float
     length: float
     largest_radius: float
     clearance: float

@@ -68,9 +68,9 @@ def sweep(curve, *, radius=1.0, profile=None, profile_closed=True, roll=None, up
 
     Returns a dict: positions, normals (n, 3), uvs (n, 2; v along arc
     length), indices (m, 3, uint32), t and s of each ring, rings, ring_size,
-    and report (tolerance, bound, tolerance_met, proved, holonomy, length,
-    largest_radius, clearance, min_radius_of_curvature, far_contact,
-    local_fold, self_intersects, seam_gap, seam_normal_gap).
+    and report (tolerance, bound, tolerance_met, proved, holonomy,
+    frame_drift, length, largest_radius, clearance, min_radius_of_curvature,
+    far_contact, local_fold, self_intersects, seam_gap, seam_normal_gap).
     """
     c = _curve(curve, "sweep")
     kind, points, closed, alpha = "circle", None, True, 0.5

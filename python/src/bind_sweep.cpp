@@ -40,6 +40,7 @@ py::dict report_dict(const sweep_report& r) {
     d["tolerance_met"] = r.tolerance_met;
     d["proved"] = r.proved;
     d["holonomy"] = r.holonomy;
+    d["frame_drift"] = r.frame_drift;
     d["length"] = r.length;
     d["largest_radius"] = r.largest_radius;
     d["clearance"] = r.clearance;

@@ -28,6 +28,11 @@ def test_sweep_arrays_and_the_seam():
     r = m["report"]
     assert r["tolerance_met"] and r["bound"] <= 1e-3 * (1 + 1e-12) and r["proved"]
     assert not r["self_intersects"] and r["clearance"] > 0.6
+    # The rings' frames against the exact rotation-minimizing frame: a
+    # bound in radians, finite and small, its share (twice: the spread
+    # holonomy's) inside the bound.
+    assert 0 < r["frame_drift"] < 1e-5
+    assert r["bound"] >= 2 * r["largest_radius"] * r["frame_drift"]
     # No seam: the computed closing ring met the first to rounding; the
     # stored one is the first (v runs 0 to 1).
     assert r["seam_gap"] < 1e-9 and r["seam_normal_gap"] < 1e-9

@@ -157,6 +157,7 @@ val report_object(const cr::sweep_report& r) {
     o.set("toleranceMet", r.tolerance_met);
     o.set("proved", r.proved);
     o.set("holonomy", r.holonomy);
+    o.set("frameDrift", r.frame_drift);
     o.set("length", r.length);
     o.set("largestRadius", r.largest_radius);
     o.set("clearance", r.clearance);

@@ -1,7 +1,8 @@
 // crspline sweeps, internals: the frame at each ring and the mesh written
 // from the rings and the profile.
 //
-// The frame: rotation-minimizing (double reflection, frames.hpp), turned
+// The frame: rotation-minimizing (double reflection, frames.hpp; its drift
+// from the exact frame bounded by drift.hpp), turned
 // about the tangent by psi = the spread holonomy + the roll; with an up
 // vector, by the angle that takes the rotation-minimizing normal to the up
 // vector's projection (or its opposite, whichever continues the previous
@@ -14,6 +15,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <vector>
@@ -21,6 +23,7 @@
 #include "../frames.hpp"
 #include "../segment.hpp"
 #include "../vec.hpp"
+#include "drift.hpp"
 #include "keys.hpp"
 #include "profile.hpp"
 
@@ -40,6 +43,12 @@ struct ring_frames {
     std::vector<double> scale, scale_t;                        ///< r and dr/dt
     double holonomy = 0;
     double up_turn_u = 0;  ///< up mode: the largest turn of psi per unit u between rings
+    /// Without an up vector: at each ring, a bound on the angle between its
+    /// normal and the exact rotation-minimizing frame's (with the exact
+    /// holonomy spread, closed), and each step's share (drift.hpp); empty
+    /// with an up vector (the frame is the up vector's projection).
+    std::vector<double> drift, step_drift;
+    double end_drift = 0;  ///< the carried frame's drift at the last ring (before any spread)
 };
 
 inline double angle_about(const v3& from, const v3& to, const v3& axis) {
@@ -54,7 +63,57 @@ struct ring_inputs {
     const piecewise_cubic* scale = nullptr;
     std::optional<v3> up;
     bool spread_holonomy = true;
+    bool drift = true;  ///< bound the frames' drift (drift.hpp); false for a pass that only measures the holonomy
 };
+
+/// The carried normals' drift from the exact rotation-minimizing frame
+/// (drift.hpp), ring by ring: each step's double reflection measured
+/// against the minimal rotations chained through the knots it crosses, less
+/// the enclosed exact turn.
+inline void carried_drift(const catmull_rom<3>& c, const std::vector<ring_site>& sites, ring_frames& f) {
+    const std::size_t n = sites.size();
+    f.drift.assign(n, 0.0);
+    f.step_drift.assign(n, 0.0);
+    double d = 0;
+    for (std::size_t k = 1; k < n; ++k) {
+        std::optional<v3> m = f.normal[k - 1];
+        v3 cur = f.tangent[k - 1];
+        double lo = 0, hi = 0;
+        for (std::size_t i = sites[k - 1].segment; i <= sites[k].segment && m; ++i) {
+            const auto& s = c.segment(i);
+            if (s.c1 == v3{} && s.c2 == v3{} && s.c3 == v3{}) continue;  // a repeated point
+            const double ua = i == sites[k - 1].segment ? sites[k - 1].u : 0.0, ub = i == sites[k].segment ? sites[k].u : 1.0;
+            if (!(ub > ua)) continue;
+            // A piece too coarse to enclose is halved (up to 2^6 parts),
+            // the minimal rotations chained through the parts' tangents.
+            auto add = [&](auto&& self, double a, double b, int depth) -> void {
+                const auto e = enclose_rmf_turn(s, a, b);
+                if (!e && depth < 6) {
+                    self(self, a, (a + b) / 2, depth + 1);
+                    if (m) self(self, (a + b) / 2, b, depth + 1);
+                    return;
+                }
+                if (!e) {
+                    m.reset();
+                    return;
+                }
+                m = minimal_rotation(cur, e->ta, *m);  // across a knot or a halving: rounding only
+                if (m) m = minimal_rotation(e->ta, e->tb, *m);
+                cur = e->tb, lo += e->lo, hi += e->hi;
+            };
+            add(add, ua, ub, 0);
+        }
+        if (m) m = minimal_rotation(cur, f.tangent[k], *m);
+        double step = std::numeric_limits<double>::infinity();
+        if (m) {
+            const double alpha = angle_about(*m, f.normal[k], f.tangent[k]);
+            step = std::abs(alpha - (lo + hi) / 2) + (hi - lo) / 2 + drift_slack;
+        }
+        d += step;
+        f.step_drift[k] = step, f.drift[k] = d;
+    }
+    f.end_drift = n > 0 ? f.drift[n - 1] : 0.0;
+}
 
 inline ring_frames compute_rings(const std::vector<ring_site>& sites, const ring_inputs& in) {
     const catmull_rom<3>& c = *in.curve;
@@ -99,6 +158,7 @@ inline ring_frames compute_rings(const std::vector<ring_site>& sites, const ring
     }
     for (std::size_t k = 1; k < n; ++k)
         f.normal[k] = double_reflection(f.x[k - 1], f.tangent[k - 1], f.normal[k - 1], f.x[k], f.tangent[k]);
+    if (!in.up && in.drift) carried_drift(c, sites, f);
     // 3. The turn about the tangent at each ring.
     std::vector<double> psi(n, 0.0), psi_t(n, 0.0);
     const double period = c.t_max() - c.t_min();
@@ -133,8 +193,10 @@ inline ring_frames compute_rings(const std::vector<ring_site>& sites, const ring
         // from the first normal, spread evenly in t.
         f.holonomy = angle_about(f.normal[n - 1], f.normal[0], f.tangent[0]);
         for (std::size_t k = 0; k < n && in.spread_holonomy; ++k) {
-            psi[k] = f.holonomy * ((sites[k].t - sites[0].t) / period);
+            const double frac = (sites[k].t - sites[0].t) / period;
+            psi[k] = f.holonomy * frac;
             psi_t[k] = f.holonomy / period;
+            if (!f.drift.empty()) f.drift[k] += f.end_drift * frac;  // the measured holonomy is off by the carried frame's drift
         }
     }
     if (in.roll && !in.roll->empty()) {

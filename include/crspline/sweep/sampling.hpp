@@ -38,6 +38,12 @@
 // the roll and the scale by their Bézier control polygons. A piece whose
 // speed bound is not positive (a cusp) cannot be proved; it is cut until a
 // budget runs out and the report says the tolerance is not met.
+//
+// F here is the exact frame (the exact rotation-minimizing frame, turned);
+// the rings' frames, carried by double reflection, are within the angle
+// drift.hpp bounds of it, and the mesh's vertices (so its triangles) within
+// r |p| times that angle of the mesh on the exact frames: sweep.hpp adds
+// that term to the bound.
 #pragma once
 
 #include <algorithm>
@@ -145,10 +151,11 @@ inline double along_bound(const cubic_segment<3, double>& s, double ua, double u
 
 /// Cuts [u0, u1] of segment s into the fewest equal pieces (searched
 /// upwards from one) that along_bound proves within `tol`; appends the
-/// inner cut points' u to `out`. Returns false when the budget of pieces
-/// ran out first (a cusp): the pieces are then as many as the budget.
+/// inner cut points' u to `out` and raises `largest` to the pieces' largest
+/// bound. Returns false when the budget of pieces ran out first (a cusp):
+/// the pieces are then as many as the budget.
 inline bool cut_interval(const cubic_segment<3, double>& s, double u0, double u1, const piece_rates& q, double tol,
-                         std::size_t budget, std::vector<double>& out) {
+                         std::size_t budget, std::vector<double>& out, double& largest) {
     std::size_t n = 1;
     bool met = false;
     while (true) {
@@ -160,6 +167,7 @@ inline bool cut_interval(const cubic_segment<3, double>& s, double u0, double u1
         }
         if (worst <= tol) {
             met = true;
+            largest = std::max(largest, worst);
             break;
         }
         if (n >= budget) break;
