@@ -20,10 +20,12 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -93,9 +95,9 @@ struct sweep_report {
     double tolerance = 0;            ///< the tolerance asked for (adaptive) or 0 (given counts)
     double bound = 0;                ///< the mesh's distance bound to the surface (+inf: not proved)
     bool tolerance_met = true;       ///< bound <= tolerance (adaptive)
-    bool proved = true;              ///< false with an up vector that a tangent comes within 5 degrees of (a pole): its turn there is measured at the rings, not bounded
+    bool proved = true;              ///< false with an up vector where rings outside the cones around it are too far apart (given counts) for the frame's turn between them to be bounded below a radian
     double holonomy = 0;             ///< the rotation-minimizing frame's twist after one loop (closed, no up), radians
-    double frame_drift = 0;          ///< a bound on the ring frames' angle from the exact rotation-minimizing frame (radians; 0 with up); `bound` includes it times the radius
+    double frame_drift = 0;          ///< a bound on the ring frames' angle from the exact frame (rotation-minimizing; with up, 0 but in the cones around it), radians; `bound` includes it times the radius
     double length = 0;               ///< the curve's arc length (v = s / length)
     double largest_radius = 0;       ///< largest scale x |profile point|
     double clearance = std::numeric_limits<double>::infinity();  ///< centre line, non-adjacent segments
@@ -220,10 +222,43 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
     if (roll_in_s)
         for (double s : opt.roll_s) add_key(closed ? std::fmod(std::fmod(s, length) + length, length) : s);
     for (double s : opt.scale_s) add_key(closed ? std::fmod(std::fmod(s, length) + length, length) : s);
-    std::sort(key_t.begin(), key_t.end());
-    // 4. The rates over an interval of a segment (for the bound).
     const auto grid = curve.grid();
-    auto rates_for = [&](std::size_t i, double ua, double ub, double twist, double up_u1) {
+    // Up mode: where the tangent crosses the cones within 5 degrees of up
+    // (the zones, sweep/rings.hpp) become rings too, and each zone's extent
+    // in t is kept for the placement's rates.
+    std::vector<std::array<double, 2>> cone_zones;
+    if (opt.up && !given_counts) {
+        const vec<3> up = *opt.up / norm(*opt.up);
+        std::vector<double> roots;
+        bool inside = false, started = false;
+        double t_in = curve.t_min();
+        for (std::size_t i = 0; i < curve.segment_count(); ++i) {
+            const auto& s = curve.segment(i);
+            if (s.c1 == vec<3>{} && s.c2 == vec<3>{} && s.c3 == vec<3>{}) continue;
+            const double dt = grid[i + 1] - grid[i];
+            if (!started) {
+                const vec<3> d = s.du(0, 1);
+                inside = norm(cross(up, d)) < up_clear_sin * norm(d), started = true;
+            }
+            roots.clear();
+            cone_crossings(s, up, roots);
+            for (double u : roots) {
+                const double t = grid[i] + u * dt;
+                key_t.push_back(t);
+                if (inside) cone_zones.push_back({t_in, t});
+                else t_in = t;
+                inside = !inside;
+            }
+        }
+        if (inside) cone_zones.push_back({t_in, curve.t_max()});
+    }
+    std::sort(key_t.begin(), key_t.end());
+    // 4. The rates over an interval of a segment (for the bound); zone: the
+    // blend's rates per unit t where the piece is in a zone (up mode).
+    struct zone_rates {
+        double t1 = 0, t2 = 0;
+    };
+    auto rates_for = [&](std::size_t i, double ua, double ub, double twist, std::optional<zone_rates> zone = std::nullopt) {
         piece_rates q;
         q.rho = prof.rho;
         q.edge = prof.edge;
@@ -241,8 +276,8 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
             q.roll_in_s = roll_in_s;
         }
         q.twist_t = twist;
-        q.up_u1 = up_u1;
         if (opt.up) q.has_up = true, q.up = *opt.up / norm(*opt.up);
+        if (zone) q.in_zone = true, q.zone_t1 = zone->t1, q.zone_t2 = zone->t2;
         return q;
     };
     auto site = [&](std::size_t i, double u) {
@@ -269,15 +304,23 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
             }
         return true;
     };
-    // Up mode: proved where every piece between rings keeps its tangent
-    // clear of the poles (sweep/sampling.hpp); the others have their turn
-    // measured at the rings only.
-    auto up_proved = [&](const std::vector<ring_site>& rs) {
+    // Up mode: proved where every piece between rings outside the zones
+    // keeps its tangent off up (sweep/sampling.hpp) and every zone's drift
+    // is bounded; the others have their turn measured at the rings only.
+    auto up_proved = [&](const std::vector<ring_site>& rs, const ring_frames& fr) {
         if (!opt.up) return true;
         const vec<3> up = *opt.up / norm(*opt.up);
-        return every_piece(rs, [&](std::size_t, std::size_t i, double ua, double ub) {
-            return up_piece_proved(curve.segment(i), ua, ub, up);
+        for (const auto& z : fr.zones)
+            if (!std::isfinite(z.delta)) return false;
+        return every_piece(rs, [&](std::size_t k, std::size_t i, double ua, double ub) {
+            return fr.step_zone[k] >= 0 || up_piece_proved(curve.segment(i), ua, ub, up);
         });
+    };
+    // A step's zone rates from the rings' frames.
+    auto frame_zone = [&](const ring_frames& fr, std::size_t k) -> std::optional<zone_rates> {
+        if (fr.step_zone.empty() || fr.step_zone[k] < 0) return std::nullopt;
+        const auto& z = fr.zones[std::size_t(fr.step_zone[k])];
+        return zone_rates{z.rate_t1(), z.rate_t2()};
     };
     ring_inputs in;
     in.curve = &curve;
@@ -297,14 +340,14 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
         double along = 0, frame = 0;
         std::vector<double> step_along, step_width;
     };
-    auto achieved = [&](const std::vector<ring_site>& rs, const ring_frames& fr, double up_factor) {
+    auto achieved = [&](const std::vector<ring_site>& rs, const ring_frames& fr) {
         achieved_bound b;
         const double twist =
             closed && !opt.up && opt.spread_holonomy ? (std::abs(fr.holonomy) + fr.end_drift) / period : 0.0;
         b.step_along.assign(rs.size(), 0.0);
         b.step_width.assign(rs.size(), 0.0);
         every_piece(rs, [&](std::size_t k, std::size_t i, double ua, double ub) {
-            const double a = along_bound(curve.segment(i), ua, ub, rates_for(i, ua, ub, twist, fr.up_turn_u * up_factor));
+            const double a = along_bound(curve.segment(i), ua, ub, rates_for(i, ua, ub, twist, frame_zone(fr, k)));
             b.step_along[k] = std::max(b.step_along[k], a);
             b.step_width[k] += ub - ua;
             b.along = std::max(b.along, a);
@@ -322,11 +365,26 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
         // kept for the frames' drift; steps over their share are then split
         // until the whole bound holds.
         const double along_target = along_tol * (1 - sweep_drift_share);
-        double placed_along = 0, placed_twist = 0, placed_up = 0;  // the placement's largest along bound, and the rates it used
-        auto place = [&](double twist, double up_u1) {
+        double placed_along = 0, placed_twist = 0;  // the placement's largest along bound, and the twist it used
+        // An interval's zone rates for the placement: its cone zone's length in
+        // t and a bound on Delta (pi / 2 and a margin for the drift before
+        // the rings measure it, then the measured bound).
+        auto placement_zone = [&](std::size_t i, double ua, double ub) -> std::optional<zone_rates> {
+            const double tm = grid[i] + (ua + ub) / 2 * (grid[i + 1] - grid[i]);
+            for (const auto& z : cone_zones) {
+                if (!(z[0] <= tm && tm <= z[1]) || !(z[1] > z[0])) continue;
+                double delta = std::numbers::pi / 2 + 0.01;
+                for (const auto& fz : frames.zones)
+                    if (fz.t_in <= tm && tm <= fz.t_out) delta = std::min(delta, fz.delta * 1.01 + 1e-9);
+                const double T = z[1] - z[0];
+                return zone_rates{1.5 * delta / T, 6 * delta / (T * T)};
+            }
+            return std::nullopt;
+        };
+        auto place = [&](double twist) {
             sites.clear();
             met = true;
-            placed_along = 0, placed_twist = twist, placed_up = up_u1;
+            placed_along = 0, placed_twist = twist;
             std::vector<double> cuts;
             for (std::size_t i = 0; i < curve.segment_count(); ++i) {
                 if (constant(i)) continue;
@@ -337,7 +395,8 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
                 br.push_back(1.0);
                 for (std::size_t b = 0; b + 1 < br.size(); ++b) {
                     cuts.clear();
-                    met &= cut_interval(curve.segment(i), br[b], br[b + 1], rates_for(i, br[b], br[b + 1], twist, up_u1),
+                    met &= cut_interval(curve.segment(i), br[b], br[b + 1],
+                                        rates_for(i, br[b], br[b + 1], twist, placement_zone(i, br[b], br[b + 1])),
                                         along_target, 1u << 16, cuts, placed_along);
                     for (double u : cuts) sites.push_back(site(i, u));
                     sites.push_back(site(i, br[b + 1]));
@@ -348,17 +407,18 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
         // (A closed curve's first rings only measure its holonomy: their
         // drift is bounded on the rings placed with its twist.)
         in.drift = !(closed && !opt.up && opt.spread_holonomy);
-        place(0, 0);
+        place(0);
         frames = compute_rings(sites, in);
         const bool first_drift = in.drift;
         in.drift = true;
+        // Again with the twist the holonomy needs, or the zones' measured turn.
         const double twist = closed && !opt.up && opt.spread_holonomy ? std::abs(frames.holonomy) / period * 1.01 : 0.0;
-        const double up_u1 = opt.up ? frames.up_turn_u * 1.5 : 0.0;
-        if (twist > 0 || up_u1 > 0 || !first_drift) {
-            if (twist > 0 || up_u1 > 0) place(twist, up_u1);
+        if (twist > 0 || !first_drift || !cone_zones.empty()) {
+            if (twist > 0 || !cone_zones.empty()) place(twist);
             frames = compute_rings(sites, in);
         }
-        const double spread = closed && !opt.up && opt.spread_holonomy ? 2.0 : 1.0;  // drift_k + f_k drift_last
+        // drift_k + f_k drift_last (spread holonomy), or + sigma_k drift_zone (up)
+        const double spread = (closed && !opt.up && opt.spread_holonomy) || opt.up ? 2.0 : 1.0;
         for (int round = 0;; ++round) {
             if (round == 0 && met) {
                 // The placement's own bounds hold where its twist was at
@@ -369,9 +429,9 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
                 for (std::size_t k = 0; k < frames.drift.size(); ++k)
                     frame = std::max(frame, frames.scale[k] * prof.rho * frames.drift[k]);
                 bound = placed_along + around + frame;
-                if (twist_now <= placed_twist && frames.up_turn_u * 1.5 <= placed_up && bound <= tol * (1 + 1e-12)) break;
+                if (twist_now <= placed_twist && frames.zones.empty() && bound <= tol * (1 + 1e-12)) break;
             }
-            const auto b = achieved(sites, frames, 1.5);
+            const auto b = achieved(sites, frames);
             bound = met ? b.along + around + b.frame : std::numeric_limits<double>::infinity();
             if (!met || bound <= tol * (1 + 1e-12) || round == 8) break;
             double r_max = 0, width = 0;
@@ -410,7 +470,7 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
             sites.push_back(r);
         }
         frames = compute_rings(sites, in);
-        const auto b = achieved(sites, frames, 1.0);
+        const auto b = achieved(sites, frames);
         bound = b.along + around + b.frame;
     }
     // 5. The mesh.
@@ -423,7 +483,7 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
     auto& rep = out.report;
     rep.bound = bound;
     rep.tolerance_met = given_counts || bound <= tol * (1 + 1e-12);
-    rep.proved = up_proved(sites);
+    rep.proved = up_proved(sites, frames);
     rep.holonomy = frames.holonomy;
     for (double d : frames.drift) rep.frame_drift = std::max(rep.frame_drift, d);
     rep.length = length;

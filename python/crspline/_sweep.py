@@ -59,7 +59,8 @@ def sweep(curve, *, radius=1.0, profile=None, profile_closed=True, roll=None, up
         ``profile_closed``) or a 2-D CatmullRom (a curve profile).
     roll: angles (radians) about the tangent, one per knot (a sequence), or
         ``(arc_lengths, angles)``; interpolated by the rotation splines.
-    up: a 3-vector the normal follows (its projection; never flipped).
+    up: a 3-vector the normal follows (its projection; never flipped; within
+        5 degrees of it, the rotation-minimizing frame blended onto it).
     scale: ``(arc_lengths, factors)``: the profile's scale along the curve.
     tolerance: the mesh's distance to the swept surface (default 1e-3 of the
         curve's size); or tubular_segments / radial_segments: three.js' counts.

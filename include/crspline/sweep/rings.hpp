@@ -6,9 +6,16 @@
 // about the tangent by psi = the spread holonomy + the roll; with an up
 // vector, by the angle that takes the rotation-minimizing normal to the up
 // vector's projection (or its opposite, whichever continues the previous
-// ring's: the frame never flips), held where the tangent is within 1 degree
-// of vertical (the poles, where the projection vanishes) and eased back
-// between 1 and 5 degrees.
+// ring's: the frame never flips), except in the cones within 5 degrees of
+// up (the poles, where the projection turns fast and vanishes): a run of
+// ring steps whose middle tangent lies in a cone is a zone, and across it
+// the frame is the rotation-minimizing one carried from the ring before
+// it, turned by Delta sigma(x), x = (t - t_in) / (t_out - t_in), sigma(x) =
+// 3 x^2 - 2 x^3, onto the projection (or its opposite, the nearer) at the
+// ring after it: no flip, no jump, and rates sweep/sampling.hpp bounds. (An
+// open curve that ends in a cone carries the frame to its end; a closed
+// one turns it onto its first ring's.) The adaptive sweep puts rings where
+// the tangent crosses a cone, so a zone is the cone's own stretch.
 #pragma once
 
 #include <algorithm>
@@ -26,6 +33,7 @@
 #include "drift.hpp"
 #include "keys.hpp"
 #include "profile.hpp"
+#include "sampling.hpp"
 
 namespace crspline::detail {
 
@@ -42,13 +50,23 @@ struct ring_frames {
     std::vector<v3> x, dx, normal, binormal, tangent, omega;  ///< omega: the frame's angular velocity per unit t
     std::vector<double> scale, scale_t;                        ///< r and dr/dt
     double holonomy = 0;
-    double up_turn_u = 0;  ///< up mode: the largest turn of psi per unit u between rings
     /// Without an up vector: at each ring, a bound on the angle between its
     /// normal and the exact rotation-minimizing frame's (with the exact
     /// holonomy spread, closed), and each step's share (drift.hpp); empty
     /// with an up vector (the frame is the up vector's projection).
     std::vector<double> drift, step_drift;
     double end_drift = 0;  ///< the carried frame's drift at the last ring (before any spread)
+    /// Up mode: the zones (runs of steps in a cone around up), each step's
+    /// zone (-1: none; step k joins rings k - 1 and k).
+    struct zone {
+        std::size_t k_in = 0, k_out = 0;
+        double t_in = 0, t_out = 0;
+        double delta = 0;  ///< a bound on |Delta| of the exact frame: the measured one plus the zone's drift
+        double rate_t1() const { return t_out > t_in ? 1.5 * delta / (t_out - t_in) : 0.0; }
+        double rate_t2() const { return t_out > t_in ? 6 * delta / ((t_out - t_in) * (t_out - t_in)) : 0.0; }
+    };
+    std::vector<zone> zones;
+    std::vector<int> step_zone;
 };
 
 inline double angle_about(const v3& from, const v3& to, const v3& axis) {
@@ -158,30 +176,63 @@ inline ring_frames compute_rings(const std::vector<ring_site>& sites, const ring
     }
     for (std::size_t k = 1; k < n; ++k)
         f.normal[k] = double_reflection(f.x[k - 1], f.tangent[k - 1], f.normal[k - 1], f.x[k], f.tangent[k]);
-    if (!in.up && in.drift) carried_drift(c, sites, f);
+    if (in.drift) carried_drift(c, sites, f);
     // 3. The turn about the tangent at each ring.
     std::vector<double> psi(n, 0.0), psi_t(n, 0.0);
     const double period = c.t_max() - c.t_min();
     if (in.up) {
         const v3 up = *in.up / norm(*in.up);
-        const double s0 = std::sin(std::numbers::pi / 180), s1 = std::sin(5 * std::numbers::pi / 180);
-        double prev = 0;
-        for (std::size_t k = 0; k < n; ++k) {
-            const double sin_up = norm(cross(f.tangent[k], up));
-            const double weight = std::clamp((sin_up - s0) / (s1 - s0), 0.0, 1.0);
-            double target = prev;
-            if (sin_up > 0) {
-                const v3 p = (up - dot(up, f.tangent[k]) * f.tangent[k]) / sin_up;
-                const double a = angle_about(f.normal[k], p, f.tangent[k]);
-                // The projection or its opposite: the one nearer the previous turn.
-                target = a + std::numbers::pi * std::round((prev - a) / std::numbers::pi);
-            }
-            psi[k] = k == 0 && weight > 0 ? target : prev + weight * (target - prev);
-            prev = psi[k];
-        }
+        // The zones: runs of steps whose middle tangent is within 5 degrees of up.
+        f.step_zone.assign(n, -1);
         for (std::size_t k = 1; k < n; ++k) {
-            const double du = sites[k].segment == sites[k - 1].segment ? sites[k].u - sites[k - 1].u : 0;
-            if (du > 0) f.up_turn_u = std::max(f.up_turn_u, std::abs(psi[k] - psi[k - 1]) / du);
+            const v3 d = c.evaluate((sites[k - 1].t + sites[k].t) / 2, 1);
+            const double sp = norm(d);
+            if (!(sp > 0) || !(norm(cross(d, up)) < up_clear_sin * sp)) continue;
+            if (f.zones.empty() || f.zones.back().k_out != k - 1) f.zones.push_back({k - 1, k});
+            f.zones.back().k_out = k;
+            f.step_zone[k] = int(f.zones.size() - 1);
+        }
+        // The projection's angle from the carried normal at ring k, where it has one.
+        auto projection = [&](std::size_t k) -> std::optional<double> {
+            const double sin_up = norm(cross(f.tangent[k], up));
+            if (!(sin_up > 0)) return std::nullopt;
+            const v3 p = (up - dot(up, f.tangent[k]) * f.tangent[k]) / sin_up;
+            return angle_about(f.normal[k], p, f.tangent[k]);
+        };
+        // The projection or its opposite: the one nearer `to`.
+        auto nearest = [](double a, double to) { return a + std::numbers::pi * std::round((to - a) / std::numbers::pi); };
+        // Ring 0's normal is the projection already (where it has one).
+        const std::vector<double> cumulative = f.drift;
+        if (!f.drift.empty()) f.drift.assign(n, 0.0);
+        std::size_t z = 0;
+        for (std::size_t k = 1; k < n; ++k) {
+            if (z < f.zones.size() && k > f.zones[z].k_in) {
+                auto& zn = f.zones[z];
+                const std::size_t ki = zn.k_in, ko = zn.k_out;
+                zn.t_in = sites[ki].t, zn.t_out = sites[ko].t;
+                // Onto the projection where the zone ends; a closed curve's last
+                // zone onto its first ring's normal; an open curve ending in
+                // the cone: the frame carried on (Delta 0).
+                double delta = 0;
+                if (ko == n - 1 && c.closed()) {
+                    delta = nearest(angle_about(f.normal[n - 1], f.normal[0], f.tangent[n - 1]), psi[ki]) - psi[ki];
+                } else if (ko < n - 1) {
+                    if (const auto a = projection(ko)) delta = nearest(*a, psi[ki]) - psi[ki];
+                }
+                const double zone_drift = cumulative.empty() ? std::numeric_limits<double>::infinity() : cumulative[ko] - cumulative[ki];
+                zn.delta = std::abs(delta) + zone_drift;
+                for (std::size_t j = ki + 1; j <= ko; ++j) {
+                    const double x = zn.t_out > zn.t_in ? (sites[j].t - zn.t_in) / (zn.t_out - zn.t_in) : 1.0;
+                    const double sigma = x * x * (3 - 2 * x);
+                    psi[j] = psi[ki] + delta * sigma;
+                    // The exact frame: cumulative from the entry (its drift) and turned by its own Delta.
+                    if (!f.drift.empty()) f.drift[j] = cumulative[j] - cumulative[ki] + sigma * zone_drift;
+                }
+                k = ko, ++z;
+                continue;
+            }
+            const auto a = projection(k);
+            psi[k] = a ? nearest(*a, psi[k - 1]) : psi[k - 1];
         }
         for (std::size_t k = 0; k < n; ++k) {  // rate by differences (for the normals only)
             const std::size_t a = k > 0 ? k - 1 : k, b = k + 1 < n ? k + 1 : k;

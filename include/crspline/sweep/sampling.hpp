@@ -22,17 +22,23 @@
 //     |omega|  <= |x''| / |x'| + |psi'|,
 //     |omega'| <= |x'''| / |x'| + 2 |x''|^2 / |x'|^2 + |psi''| + |psi'| |x''| / |x'|,
 // With an up vector U (unit) the normal is U's projection on the normal
-// plane wherever the tangent T is more than 5 degrees from U (rings.hpp);
-// there its turn about T is psi' = -(U.T)(T'.B) / |U x T|, so with
+// plane outside the cones within 5 degrees of U (rings.hpp); there its turn
+// about T is psi' = -(U.T)(T'.B) / |U x T|, so with
 // theta the angle of T to U and tau >= |T'| (= |x''| / |x'| at most):
 //     |psi'|  <= cot(theta) tau,
 //     |psi''| <= tau^2 / sin^2(theta) + cot(theta) (|T''| + tau |omega|),
 //     |T''|   <= |x'''| / |x'| + 3 tau |x''| / |x'|,
 // sin(theta) bounded from below over the piece as |x'| is (|U x x'| has
-// derivative |U x x''| <= |x''|) over max |x'|. A piece whose tangent may
-// come within 5 degrees of U (a pole: the frame is held and eased there,
-// not the projection) has only the turn measured at the rings: the report
-// then says the bound is not proved.
+// derivative |U x x''| <= |x''|) over max |x'| (it must be positive). Inside
+// a cone (a pole) the frame is the rotation-minimizing one carried from the
+// ring where the curve enters it, turned by psi = Delta sigma((t - t_in) /
+// (t_out - t_in)), sigma(x) = 3 x^2 - 2 x^3, onto the projection where it
+// leaves (Delta at most pi / 2 plus the drift: rings.hpp); so there
+//     |psi'| <= 1.5 |Delta| / (t_out - t_in),  |psi''| <= 6 |Delta| / (t_out - t_in)^2
+// per unit t (the zone rates). A piece outside the cones whose sin(theta)
+// bound is not positive has no bound: infinite (the placement cuts it
+// further; at given counts, rings too far apart around a pole, the report
+// says so).
 // each maximum taken over the piece: |x''| at an end (x'' is affine),
 // |x'''| = 6 |c3|, |x'| from below by (|x'(u_a)| + |x'(u_b)| - w max|x''|) / 2,
 // the roll and the scale by their Bézier control polygons. A piece whose
@@ -71,13 +77,15 @@ struct piece_rates {
     bool roll_in_s = false; ///< w is arc length (else t)
     double dt_du = 1;       ///< the segment's knot interval (dt/du)
     double twist_t = 0;     ///< |holonomy| / period: the spread twist per unit t (constant)
-    double up_u1 = 0;       ///< the up frame's turning per unit u measured at the rings (near a pole only)
     bool has_up = false;    ///< up mode: the frame follows `up`'s projection
+    bool in_zone = false;   ///< up mode: the piece is inside a cone around `up` (the blend below)
+    double zone_t1 = 0;     ///< there: max |dpsi/dt| of the blend onto the projection
+    double zone_t2 = 0;     ///< max |d2psi/dt2|
     vec<3> up{};            ///< the unit up vector
 };
 
-/// Where the up vector's projection is the frame (rings.hpp eases it only
-/// within 5 degrees of the tangent): sin(5 degrees).
+/// The cones around the up vector where the frame is not its projection
+/// (rings.hpp): tangents within 5 degrees of it; sin(5 degrees).
 inline const double up_clear_sin = std::sin(5 * 3.14159265358979323846 / 180);
 
 /// The bounds on the centre line's derivatives over the piece [ua, ub] of
@@ -104,24 +112,55 @@ inline double up_sin_lower(const piece_derivatives& d, const vec<3>& up) {
 }
 
 /// The up frame's turn rates over the piece (see above): {|psi'|, |psi''|}
-/// bounds per unit u, or {-1, -1} where the tangent may come within 5
-/// degrees of up (or the speed bound is not positive).
+/// bounds per unit u, or {-1, -1} where the tangent may reach up (or the
+/// speed bound is not positive).
 inline std::array<double, 2> up_rates(const piece_derivatives& d, const vec<3>& up) {
     const double sn = up_sin_lower(d, up);
-    if (!(d.v_lo > 0) || !(sn > up_clear_sin)) return {-1.0, -1.0};
+    if (!(d.v_lo > 0) || !(sn > 0)) return {-1.0, -1.0};
     const double cot = std::sqrt(std::max(0.0, 1 - sn * sn)) / sn;
     const double tau = d.k2 / d.v_lo, t2 = d.k3 / d.v_lo + 3 * tau * d.k2 / d.v_lo;
     const double psi1 = cot * tau;
     return {psi1, tau * tau / (sn * sn) + cot * (t2 + tau * (tau + psi1))};
 }
 
-/// Whether the piece [ua, ub] of segment s has the up vector's projection
-/// for its frame, proved: clear of the poles, and turning less than a
-/// radian between its rings (so the ring's choice of the projection or its
-/// opposite follows the continuous frame).
+/// Whether the piece [ua, ub] of segment s (outside the cones) has the up
+/// vector's projection for its frame, proved: its tangent never reaches up,
+/// and the frame turns less than a radian between its rings (so the ring's
+/// choice of the projection or its opposite follows the continuous frame).
 inline bool up_piece_proved(const cubic_segment<3, double>& s, double ua, double ub, const vec<3>& up) {
     const auto r = up_rates(piece_derivatives(s, ua, ub), up);
     return r[0] >= 0 && r[0] * (ub - ua) < 1;
+}
+
+/// Where the tangent of segment s crosses the cone within 5 degrees of the
+/// unit vector up: the roots in (0, 1) of |up x x'|^2 - sin^2(5 deg) |x'|^2
+/// (a quartic in u), found by sign changes on 64 steps and bisection;
+/// appended to `out`. A root where the tangent only grazes the cone between
+/// two samples can be missed: the bound then treats that stretch as it finds
+/// it (its own rates, or unproved).
+inline void cone_crossings(const cubic_segment<3, double>& s, const vec<3>& up, std::vector<double>& out) {
+    const double s2 = up_clear_sin * up_clear_sin;
+    auto f = [&](double u) {
+        const vec<3> d = s.du(u, 1);
+        return dot(cross(up, d), cross(up, d)) - s2 * dot(d, d);
+    };
+    constexpr int steps = 64;
+    double a = 0, fa = f(0);
+    for (int j = 1; j <= steps; ++j) {
+        const double b = double(j) / steps, fb = f(b);
+        if ((fa < 0) != (fb < 0)) {
+            double lo = a, hi = b;
+            const bool lo_neg = fa < 0;
+            for (int it = 0; it < 60 && hi - lo > 0; ++it) {
+                const double mid = (lo + hi) / 2;
+                if (mid <= lo || mid >= hi) break;
+                ((f(mid) < 0) == lo_neg ? lo : hi) = mid;
+            }
+            const double root = (lo + hi) / 2;
+            if (root > 0 && root < 1) out.push_back(root);
+        }
+        a = b, fa = fb;
+    }
 }
 
 /// The along-curve bound of the piece [ua, ub] of segment s (see above);
@@ -130,11 +169,15 @@ inline double along_bound(const cubic_segment<3, double>& s, double ua, double u
     const piece_derivatives d(s, ua, ub);
     const double w = d.w, k2 = d.k2, k3 = d.k3, v_lo = d.v_lo, v_hi = d.v_hi;
     if (!(v_lo > 0)) return std::numeric_limits<double>::infinity();
-    // The up frame's turn: bounded clear of the poles, measured near them.
-    double up1 = q.up_u1, up2 = 0;
-    if (q.has_up) {
+    // The up frame's turn: the blend's inside the cones, the projection's
+    // outside (not bounded where the tangent may reach up: cut further).
+    double up1 = 0, up2 = 0;
+    if (q.has_up && q.in_zone) {
+        up1 = q.zone_t1 * q.dt_du, up2 = q.zone_t2 * q.dt_du * q.dt_du;
+    } else if (q.has_up) {
         const auto r = up_rates(d, q.up);
-        if (r[0] >= 0) up1 = r[0], up2 = r[1];
+        if (r[0] < 0) return std::numeric_limits<double>::infinity();
+        up1 = r[0], up2 = r[1];
     }
     // Roll, spread holonomy, up and scale per unit u.
     const double p1 = (q.roll_in_s ? q.roll_w1 * v_hi : q.roll_w1 * q.dt_du) + q.twist_t * q.dt_du + up1;
@@ -172,8 +215,10 @@ inline bool cut_interval(const cubic_segment<3, double>& s, double u0, double u1
         }
         if (n >= budget) break;
         // The bound falls like the width squared (or the width, for the
-        // twist term): grow n by the square root of the excess, at least by one.
-        const double grow = std::isfinite(worst) ? std::sqrt(worst / tol) * 1.02 : 2.0;
+        // twist term): grow n by the square root of the excess, at least by
+        // one, at most eightfold (where a lower bound in it, such as the up
+        // frame's angle to up, is poor on wide pieces, it falls faster).
+        const double grow = std::isfinite(worst) ? std::min(std::sqrt(worst / tol) * 1.02, 8.0) : 2.0;
         n = std::min(budget, std::max(n + 1, std::size_t(std::ceil(double(n) * grow))));
     }
     const double w = (u1 - u0) / double(n);
