@@ -48,6 +48,12 @@ inline std::vector<v3> random_points(std::mt19937_64& rng, std::size_t n) {
     return pts;
 }
 
+/// Vertex j of ring k of a sweep's mesh.
+inline v3 mesh_vertex(const crspline::sweep_mesh& m, std::size_t k, std::size_t j) {
+    const double* p = m.positions.data() + 3 * (k * m.ring_size + j);
+    return {{p[0], p[1], p[2]}};
+}
+
 /// The roll by the rotation spline itself, at w.
 struct reference_roll {
     std::optional<crspline::rotation::quaternion_spline<double>> spline;

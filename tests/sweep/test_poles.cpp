@@ -65,11 +65,6 @@ v3 pole_projection(const v3& e) {
     return p / norm(p);
 }
 
-v3 pole_vertex(const sweep_mesh& m, std::size_t k, std::size_t j) {
-    const double* p = m.positions.data() + 3 * (k * m.ring_size + j);
-    return {{p[0], p[1], p[2]}};
-}
-
 }  // namespace
 
 TEST(SweepPoles, UpVectorMeshIsWithinTheToleranceThroughThePoles) {
@@ -125,7 +120,7 @@ TEST(SweepPoles, UpVectorMeshIsWithinTheToleranceThroughThePoles) {
             ss.push_back(s);
         }
         // The first ring's normal (a closed curve's last zone turns onto it).
-        const v3 n0 = (pole_vertex(m, 0, 0) - c.evaluate(m.t[0])) / (radius * 1.0);
+        const v3 n0 = (mesh_vertex(m, 0, 0) - c.evaluate(m.t[0])) / (radius * 1.0);
         std::vector<std::vector<std::pair<double, v3>>> zone_normals(zones.size());
         for (std::size_t z = 0; z < zones.size(); ++z) {
             const double a = zones[z][0], b = zones[z][1];
@@ -141,7 +136,7 @@ TEST(SweepPoles, UpVectorMeshIsWithinTheToleranceThroughThePoles) {
             if (a > c.t_min()) {
                 std::size_t k = 0;
                 while (k + 1 < m.rings && m.t[k + 1] <= a + 1e-12) ++k;
-                if (dot(entry, pole_vertex(m, k, 0) - c.evaluate(m.t[k])) < 0) entry = -1.0 * entry;
+                if (dot(entry, mesh_vertex(m, k, 0) - c.evaluate(m.t[k])) < 0) entry = -1.0 * entry;
             }
             const auto fr = rotation_minimizing_frames(c, std::span<const double>(ts), entry);
             const v3 eb = fr.back().tangent, nb = fr.back().normal;
@@ -163,12 +158,12 @@ TEST(SweepPoles, UpVectorMeshIsWithinTheToleranceThroughThePoles) {
             v3 mp;
             double wj, wj1;
             if (s.tri0) {
-                mp = (1 - l) * mu * pole_vertex(m, s.k, s.j) + (1 - l) * (1 - mu) * pole_vertex(m, s.k, s.j + 1) +
-                     l * pole_vertex(m, s.k + 1, s.j);
+                mp = (1 - l) * mu * mesh_vertex(m, s.k, s.j) + (1 - l) * (1 - mu) * mesh_vertex(m, s.k, s.j + 1) +
+                     l * mesh_vertex(m, s.k + 1, s.j);
                 wj = (1 - l) * mu + l, wj1 = (1 - l) * (1 - mu);
             } else {
-                mp = (1 - l) * pole_vertex(m, s.k, s.j + 1) + l * mu * pole_vertex(m, s.k + 1, s.j + 1) +
-                     l * (1 - mu) * pole_vertex(m, s.k + 1, s.j);
+                mp = (1 - l) * mesh_vertex(m, s.k, s.j + 1) + l * mu * mesh_vertex(m, s.k + 1, s.j + 1) +
+                     l * (1 - mu) * mesh_vertex(m, s.k + 1, s.j);
                 wj = l * (1 - mu), wj1 = (1 - l) + l * mu;
             }
             const double a0 = 2 * std::numbers::pi * double(s.j) / double(n), a1 = 2 * std::numbers::pi * double(s.j + 1) / double(n);
@@ -183,7 +178,7 @@ TEST(SweepPoles, UpVectorMeshIsWithinTheToleranceThroughThePoles) {
                 ++in_zones;
             } else {
                 nn = pole_projection(e);
-                if (dot(nn, pole_vertex(m, s.k, 0) - c.evaluate(m.t[s.k])) < 0) nn = -1.0 * nn;
+                if (dot(nn, mesh_vertex(m, s.k, 0) - c.evaluate(m.t[s.k])) < 0) nn = -1.0 * nn;
             }
             const v3 sp = c.evaluate(s.t) + radius * (pc[0] * nn + pc[1] * cross3(e, nn));
             worst = std::max(worst, norm(sp - mp) / so.tolerance);

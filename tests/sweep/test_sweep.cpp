@@ -20,10 +20,7 @@ namespace {
 
 double angle_between(const v3& a, const v3& b) { return std::atan2(norm(cross3(a, b)), dot(a, b)); }
 
-v3 vertex(const sweep_mesh& m, std::size_t k, std::size_t j) {
-    const double* p = m.positions.data() + 3 * (k * m.ring_size + j);
-    return {{p[0], p[1], p[2]}};
-}
+v3 vertex(const sweep_mesh& m, std::size_t k, std::size_t j) { return mesh_vertex(m, k, j); }
 v3 normal_at(const sweep_mesh& m, std::size_t k, std::size_t j) {
     const double* p = m.normals.data() + 3 * (k * m.ring_size + j);
     return {{p[0], p[1], p[2]}};
