@@ -101,9 +101,9 @@ struct sweep_report {
     double length = 0;               ///< the curve's arc length (v = s / length)
     double largest_radius = 0;       ///< largest scale x |profile point|
     double clearance = std::numeric_limits<double>::infinity();  ///< centre line, non-adjacent segments
-    double min_radius_of_curvature = std::numeric_limits<double>::infinity();  ///< at the rings
+    double min_radius_of_curvature = std::numeric_limits<double>::infinity();  ///< a lower bound over the whole curve (between the rings too)
     bool far_contact = false;        ///< clearance < 2 largest_radius: distant parts of the tube may meet
-    bool local_fold = false;         ///< at some ring the radius reaches the radius of curvature
+    bool local_fold = false;         ///< somewhere the radius may reach the radius of curvature (by the bounds: false proves it does not)
     bool self_intersects = false;    ///< far_contact or local_fold
     double seam_gap = 0;             ///< closed: largest coordinate difference of the computed closing ring from the first
     double seam_normal_gap = 0;      ///< the same for the normals (the closing ring is then set to the first exactly)
@@ -487,17 +487,16 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
     rep.holonomy = frames.holonomy;
     for (double d : frames.drift) rep.frame_drift = std::max(rep.frame_drift, d);
     rep.length = length;
-    for (std::size_t k = 0; k < sites.size(); ++k) {
-        const double extent = frames.scale[k] * prof.rho;
-        rep.largest_radius = std::max(rep.largest_radius, extent);
-        const double sp = norm(frames.dx[k]);
-        const auto& s = curve.segment(sites[k].segment);
-        const double d = grid[sites[k].segment + 1] - grid[sites[k].segment];
-        const vec<3> a2 = d > 0 ? s.du(sites[k].u, 2) / (d * d) : vec<3>{};
-        const double kappa = sp > 0 ? norm(cross(frames.dx[k], a2)) / (sp * sp * sp) : 0.0;
+    for (std::size_t k = 0; k < sites.size(); ++k) rep.largest_radius = std::max(rep.largest_radius, frames.scale[k] * prof.rho);
+    // The fold test, proved between the rings: each piece's curvature bound
+    // against its largest profile radius (the scale's bound over the piece).
+    every_piece(sites, [&](std::size_t, std::size_t i, double ua, double ub) {
+        const double kappa = curvature_upper(curve.segment(i), ua, ub);
         if (kappa > 0) rep.min_radius_of_curvature = std::min(rep.min_radius_of_curvature, 1 / kappa);
+        const double extent = (scale.empty() ? 1.0 : rates_for(i, ua, ub, 0).scale) * prof.rho;
         if (extent * kappa >= 1) rep.local_fold = true;
-    }
+        return true;
+    });
     if (opt.clearance && curve.segment_count() >= 3) rep.clearance = clearance(curve).distance;
     rep.far_contact = rep.clearance < 2 * rep.largest_radius;
     rep.self_intersects = rep.far_contact || rep.local_fold;

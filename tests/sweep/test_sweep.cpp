@@ -404,8 +404,43 @@ TEST(Sweep, GivenCountsGiveThreeJsCounts) {
 }
 
 // Self-intersection: a thick tube on a knot meets itself, a thin one not;
-// a radius above the radius of curvature folds.
+// a radius above the radius of curvature folds. The radius of curvature is
+// bounded from below between the rings too: against 20,000 samples of the
+// curvature of seeded curves, the report's minimum is at most the sampled
+// one and not far below it (the bound is not wildly loose).
 TEST(Sweep, ReportSaysWhenTheTubeMeetsItself) {
+    CRSPLINE_SEEDED(seed, 4343);
+    std::mt19937_64 rng(seed);
+    auto sampled_min_radius = [](const catmull_rom<3>& c) {
+        double best = std::numeric_limits<double>::infinity();
+        for (int k = 0; k <= 20000; ++k) {
+            const double t = c.t_min() + (c.t_max() - c.t_min()) * k / 20000.0;
+            const v3 d1 = c.evaluate(t, 1), d2 = c.evaluate(t, 2);
+            const double sp = norm(d1), kappa = norm(cross3(d1, d2)) / (sp * sp * sp);
+            if (kappa > 0) best = std::min(best, 1 / kappa);
+        }
+        return best;
+    };
+    double loosest = 1;
+    for (int trial = 0; trial < 6; ++trial) {
+        options<3> oo;
+        oo.closed = trial % 2 == 0;
+        const catmull_rom<3> cc(random_points(rng, 7), oo);
+        sweep_options s1;
+        s1.profile = sweep_profile::circle(0.01);
+        s1.tolerance = trial < 3 ? 1e-3 : 1e-2;
+        const auto m = sweep(cc, s1);
+        const double sampled = sampled_min_radius(cc);
+        EXPECT_LE(m.report.min_radius_of_curvature, sampled * (1 + 1e-9)) << "seed " << seed << " trial " << trial;
+        EXPECT_GT(m.report.min_radius_of_curvature, 0.8 * sampled) << "seed " << seed << " trial " << trial;
+        loosest = std::min(loosest, m.report.min_radius_of_curvature / sampled);
+        // A radius just above the sampled minimum folds; well below the bound, not.
+        s1.profile = sweep_profile::circle(1.01 * sampled);
+        EXPECT_TRUE(sweep(cc, s1).report.local_fold) << "seed " << seed << " trial " << trial;
+        s1.profile = sweep_profile::circle(0.5 * m.report.min_radius_of_curvature);
+        EXPECT_FALSE(sweep(cc, s1).report.local_fold) << "seed " << seed << " trial " << trial;
+    }
+    std::printf("radius of curvature: bound / sampled minimum at least %.3f\n", loosest);
     options<3> o;
     o.closed = true;
     const catmull_rom<3> c(torus_knot(12), o);
@@ -418,7 +453,7 @@ TEST(Sweep, ReportSaysWhenTheTubeMeetsItself) {
     const auto thick = sweep(c, so);
     EXPECT_TRUE(thick.report.far_contact);
     EXPECT_TRUE(thick.report.self_intersects);
-    so.profile = sweep_profile::circle(1.05 * thin.report.min_radius_of_curvature);
+    so.profile = sweep_profile::circle(1.01 * sampled_min_radius(c));
     EXPECT_TRUE(sweep(c, so).report.local_fold);
 }
 

@@ -132,6 +132,32 @@ inline bool up_piece_proved(const cubic_segment<3, double>& s, double ua, double
     return r[0] >= 0 && r[0] * (ub - ua) < 1;
 }
 
+/// An upper bound on the curvature of segment s over [ua, ub] (for the
+/// report's fold test): the largest |x' x x''| (a quadratic in u,
+/// 2 c1 x c2 + 6 (c1 x c3) u + 6 (c2 x c3) u^2, bounded by its Taylor form
+/// at the middle) over the cube of the speed's lower bound; cut in halves
+/// (up to 2^6 parts) where that lower bound is not positive or the bound is
+/// over 1.1 times the curvature at the piece's ends and middle (so it is
+/// close); +infinity at a cusp (speed zero: any tube folds there).
+inline double curvature_upper(const cubic_segment<3, double>& s, double ua, double ub, int depth = 0) {
+    const piece_derivatives d(s, ua, ub);
+    const double m = (ua + ub) / 2, h = (ub - ua) / 2;
+    auto split = [&] { return std::max(curvature_upper(s, ua, m, depth + 1), curvature_upper(s, m, ub, depth + 1)); };
+    if (!(d.v_lo > 0)) return depth < 6 ? split() : std::numeric_limits<double>::infinity();
+    const vec<3> c0 = 2.0 * cross(s.c1, s.c2), c1 = 6.0 * cross(s.c1, s.c3), c2 = 6.0 * cross(s.c2, s.c3);
+    const double top = norm(c0 + m * (c1 + m * c2)) + norm(c1 + (2 * m) * c2) * h + norm(c2) * h * h;
+    const double bound = top / (d.v_lo * d.v_lo * d.v_lo) * (1 + 1e-12);  // (rounding: a few ulps of each term)
+    if (depth < 6) {
+        auto at = [&](double u) {
+            const vec<3> x1 = s.du(u, 1);
+            const double v = norm(x1);
+            return v > 0 ? norm(cross(x1, s.du(u, 2))) / (v * v * v) : std::numeric_limits<double>::infinity();
+        };
+        if (bound > 1.1 * std::max({at(ua), at(m), at(ub)})) return std::min(bound, split());
+    }
+    return bound;
+}
+
 /// Where the tangent of segment s crosses the cone within 5 degrees of the
 /// unit vector up: the roots in (0, 1) of |up x x'|^2 - sin^2(5 deg) |x'|^2
 /// (a quartic in u), found by sign changes on 64 steps and bisection;
