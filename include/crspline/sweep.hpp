@@ -234,7 +234,7 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
         double t_in = curve.t_min();
         for (std::size_t i = 0; i < curve.segment_count(); ++i) {
             const auto& s = curve.segment(i);
-            if (s.c1 == vec<3>{} && s.c2 == vec<3>{} && s.c3 == vec<3>{}) continue;
+            if (constant_segment(s)) continue;
             const double dt = grid[i + 1] - grid[i];
             if (!started) {
                 const vec<3> d = s.du(0, 1);
@@ -288,10 +288,7 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
         r.s = table.s_at(r.t);
         return r;
     };
-    auto constant = [&](std::size_t i) {
-        const auto& s = curve.segment(i);
-        return s.c1 == vec<3>{} && s.c2 == vec<3>{} && s.c3 == vec<3>{};
-    };
+    auto constant = [&](std::size_t i) { return constant_segment(curve.segment(i)); };
     // Each piece between consecutive rings, split at knots: f(k, i, ua, ub)
     // on segment i between rings k - 1 and k (constant segments left out);
     // stops at the first false.
@@ -304,9 +301,9 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
             }
         return true;
     };
-    // Up mode: proved where every piece between rings outside the zones
-    // keeps its tangent off up (sweep/sampling.hpp) and every zone's drift
-    // is bounded; the others have their turn measured at the rings only.
+    // Up mode: proved where every zone's drift is bounded and every piece
+    // between rings outside the zones keeps its tangent off up and turns
+    // the frame less than a radian (sweep/sampling.hpp).
     auto up_proved = [&](const std::vector<ring_site>& rs, const ring_frames& fr) {
         if (!opt.up) return true;
         const vec<3> up = *opt.up / norm(*opt.up);
@@ -340,10 +337,19 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
         double along = 0, frame = 0;
         std::vector<double> step_along, step_width;
     };
+    // The closed frame's twist rate: the exact holonomy's bound, spread.
+    auto exact_twist = [&](const ring_frames& fr) {
+        return closed && !opt.up && opt.spread_holonomy ? (std::abs(fr.holonomy) + fr.end_drift) / period : 0.0;
+    };
+    // The frames' drift times the largest profile radius, ring by ring.
+    auto frame_term = [&](const ring_frames& fr) {
+        double t = 0;
+        for (std::size_t k = 0; k < fr.drift.size(); ++k) t = std::max(t, fr.scale[k] * prof.rho * fr.drift[k]);
+        return t;
+    };
     auto achieved = [&](const std::vector<ring_site>& rs, const ring_frames& fr) {
         achieved_bound b;
-        const double twist =
-            closed && !opt.up && opt.spread_holonomy ? (std::abs(fr.holonomy) + fr.end_drift) / period : 0.0;
+        const double twist = exact_twist(fr);
         b.step_along.assign(rs.size(), 0.0);
         b.step_width.assign(rs.size(), 0.0);
         every_piece(rs, [&](std::size_t k, std::size_t i, double ua, double ub) {
@@ -353,7 +359,7 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
             b.along = std::max(b.along, a);
             return true;
         });
-        for (std::size_t k = 0; k < fr.drift.size(); ++k) b.frame = std::max(b.frame, fr.scale[k] * prof.rho * fr.drift[k]);
+        b.frame = frame_term(fr);
         return b;
     };
     std::vector<ring_site> sites;
@@ -423,13 +429,8 @@ inline sweep_mesh sweep(const catmull_rom<3>& curve, const sweep_options& opt = 
             if (round == 0 && met) {
                 // The placement's own bounds hold where its twist was at
                 // least the final one (along_bound grows with it).
-                const double twist_now =
-                    closed && !opt.up && opt.spread_holonomy ? (std::abs(frames.holonomy) + frames.end_drift) / period : 0.0;
-                double frame = 0;
-                for (std::size_t k = 0; k < frames.drift.size(); ++k)
-                    frame = std::max(frame, frames.scale[k] * prof.rho * frames.drift[k]);
-                bound = placed_along + around + frame;
-                if (twist_now <= placed_twist && frames.zones.empty() && bound <= tol * (1 + 1e-12)) break;
+                bound = placed_along + around + frame_term(frames);
+                if (exact_twist(frames) <= placed_twist && frames.zones.empty() && bound <= tol * (1 + 1e-12)) break;
             }
             const auto b = achieved(sites, frames);
             bound = met ? b.along + around + b.frame : std::numeric_limits<double>::infinity();

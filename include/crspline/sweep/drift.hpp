@@ -36,8 +36,8 @@
 // then moves by at most r |p| times that angle, and so does every point of
 // a triangle (a convex combination of its corners). A piece whose speed
 // bound is not positive, or whose tangent path may reach the pole n (a
-// turn near 90 degrees between rings), has no enclosure: the drift is then
-// infinite.
+// turn near 90 degrees between rings), has no enclosure: rings.hpp halves
+// it (up to 2^6 parts), and where that is not enough the drift is infinite.
 #pragma once
 
 #include <algorithm>
@@ -51,6 +51,11 @@
 #include "../vec.hpp"
 
 namespace crspline::detail {
+
+/// A segment that does not move (a repeated point): no tangent, no piece.
+inline bool constant_segment(const cubic_segment<3, double>& s) {
+    return s.c1 == vec<3>{} && s.c2 == vec<3>{} && s.c3 == vec<3>{};
+}
 
 /// v carried by the minimal rotation that takes the unit vector a to the
 /// unit vector b (about a x b); nullopt when they are more than 120

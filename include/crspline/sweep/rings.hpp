@@ -50,10 +50,11 @@ struct ring_frames {
     std::vector<v3> x, dx, normal, binormal, tangent, omega;  ///< omega: the frame's angular velocity per unit t
     std::vector<double> scale, scale_t;                        ///< r and dr/dt
     double holonomy = 0;
-    /// Without an up vector: at each ring, a bound on the angle between its
-    /// normal and the exact rotation-minimizing frame's (with the exact
-    /// holonomy spread, closed), and each step's share (drift.hpp); empty
-    /// with an up vector (the frame is the up vector's projection).
+    /// At each ring, a bound on the angle between its normal and the exact
+    /// frame's: the rotation-minimizing one (with the exact holonomy spread,
+    /// closed), and each step's share (drift.hpp); with an up vector, 0 but
+    /// in the zones (outside them the frame is the up vector's projection),
+    /// and empty where no zone needs it.
     std::vector<double> drift, step_drift;
     double end_drift = 0;  ///< the carried frame's drift at the last ring (before any spread)
     /// Up mode: the zones (runs of steps in a cone around up), each step's
@@ -99,7 +100,7 @@ inline void carried_drift(const catmull_rom<3>& c, const std::vector<ring_site>&
         double lo = 0, hi = 0;
         for (std::size_t i = sites[k - 1].segment; i <= sites[k].segment && m; ++i) {
             const auto& s = c.segment(i);
-            if (s.c1 == v3{} && s.c2 == v3{} && s.c3 == v3{}) continue;  // a repeated point
+            if (constant_segment(s)) continue;
             const double ua = i == sites[k - 1].segment ? sites[k - 1].u : 0.0, ub = i == sites[k].segment ? sites[k].u : 1.0;
             if (!(ub > ua)) continue;
             // A piece too coarse to enclose is halved (up to 2^6 parts),
@@ -176,13 +177,8 @@ inline ring_frames compute_rings(const std::vector<ring_site>& sites, const ring
     }
     for (std::size_t k = 1; k < n; ++k)
         f.normal[k] = double_reflection(f.x[k - 1], f.tangent[k - 1], f.normal[k - 1], f.x[k], f.tangent[k]);
-    if (in.drift) carried_drift(c, sites, f);
-    // 3. The turn about the tangent at each ring.
-    std::vector<double> psi(n, 0.0), psi_t(n, 0.0);
-    const double period = c.t_max() - c.t_min();
-    if (in.up) {
+    if (in.up) {  // the zones: runs of steps whose middle tangent is within 5 degrees of up
         const v3 up = *in.up / norm(*in.up);
-        // The zones: runs of steps whose middle tangent is within 5 degrees of up.
         f.step_zone.assign(n, -1);
         for (std::size_t k = 1; k < n; ++k) {
             const v3 d = c.evaluate((sites[k - 1].t + sites[k].t) / 2, 1);
@@ -192,6 +188,14 @@ inline ring_frames compute_rings(const std::vector<ring_site>& sites, const ring
             f.zones.back().k_out = k;
             f.step_zone[k] = int(f.zones.size() - 1);
         }
+    }
+    // (With an up vector the drift matters in the zones only.)
+    if (in.drift && (!in.up || !f.zones.empty())) carried_drift(c, sites, f);
+    // 3. The turn about the tangent at each ring.
+    std::vector<double> psi(n, 0.0), psi_t(n, 0.0);
+    const double period = c.t_max() - c.t_min();
+    if (in.up) {
+        const v3 up = *in.up / norm(*in.up);
         // The projection's angle from the carried normal at ring k, where it has one.
         auto projection = [&](std::size_t k) -> std::optional<double> {
             const double sin_up = norm(cross(f.tangent[k], up));
@@ -225,7 +229,7 @@ inline ring_frames compute_rings(const std::vector<ring_site>& sites, const ring
                     const double x = zn.t_out > zn.t_in ? (sites[j].t - zn.t_in) / (zn.t_out - zn.t_in) : 1.0;
                     const double sigma = x * x * (3 - 2 * x);
                     psi[j] = psi[ki] + delta * sigma;
-                    // The exact frame: cumulative from the entry (its drift) and turned by its own Delta.
+                    // The exact frame: carried from the entry (its drift) and turned by its own Delta.
                     if (!f.drift.empty()) f.drift[j] = cumulative[j] - cumulative[ki] + sigma * zone_drift;
                 }
                 k = ko, ++z;
