@@ -16,7 +16,8 @@
 //   through every input point can overshoot a sharp kink), the tension of
 //   the vertices there is raised (0.5, 0.8, 0.95, 1, as Kochanek-Bartels
 //   tension per vertex, so the curve remembers it): at 1 on both ends a
-//   segment is its input segment, exact.
+//   segment is its input segment, exact. The choice itself sets each
+//   vertex's tension (0 to 0.95) where that saves points.
 //
 // Bad input throws invalid_input: a tolerance that is not a positive
 // number, or below the rounding floor of the coordinates (the message names
@@ -165,19 +166,26 @@ fit_result<D, T> fit(std::span<const vec<D, T>> points, const fit_options<D, T>&
     pb.tolerance = T(opt.tolerance);
     const T floor = fit_rounding_floor(std::span<const vec<D, T>>(pts));
     pb.slack = floor / T(4);
-    // 3. Choose, prove, repair.
+    // 3. Choose, prove, repair. The search starts every vertex at tension
+    //    level 0, then at level 2 (0.8: where a curve through stair steps
+    //    bulges, tension keeps it nearer its chords and saves points; 0.5
+    //    saved fewer on the real corpus and on a rounded quarter circle); the
+    //    improvement sets each vertex's level (0 to 0.95) where that lets
+    //    it drop a point. The fewer control points win, level 0 on a tie (a
+    //    smooth line keeps no tension). (Lowering every level again as far
+    //    as the tolerance allows changed the corpus' counts by under 0.2%,
+    //    and with the layer's proofs, which hold less tension worse, kept
+    //    19% more points on the NYC boroughs.)
     detail::fit_selection<D, T> sel;
-    //    Every vertex starts at tension level 0, 0.5 or 0.8 (where a curve
-    //    through stair steps bulges, tension keeps it nearer its chords and
-    //    saves points); the fewest control points win, the lower level first.
-    for (std::uint8_t base : {std::uint8_t(0), std::uint8_t(1), std::uint8_t(2)}) {
+    for (std::uint8_t base : {std::uint8_t(0), std::uint8_t(2)}) {
         pb.base_level = base;
         detail::fit_selection<D, T> s;
         if (opt.mode == fit_mode::subset) {
             const detail::subset_search<D, T> search(pb);
             std::vector<std::size_t> idx = search.choose(2, 1);
-            search.improve(idx);
-            s = detail::prove_and_repair(pb, std::move(idx));
+            std::vector<std::uint8_t> level = search.initial_levels(idx.size());
+            search.improve(idx, level, detail::fit_improve_level);
+            s = detail::prove_and_repair(pb, std::move(idx), {}, std::move(level));
         } else {
             s = detail::fit_free(pb);
         }

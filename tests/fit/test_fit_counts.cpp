@@ -107,31 +107,31 @@ corpus_counts run_corpus(const std::string& file, fit_mode mode, std::size_t max
     return c;
 }
 
-// The issue asks for 0.8 (subset) and 0.6 (free) of RDP's count; what this
-// fit reaches is asserted here, a little above its measured ratios (0.834 /
-// 0.810 on the topobathy contours, 0.809 and 0.853 on the others since the
-// search tries backed-off candidates; BENCHMARKS.md has the whole corpus at
-// f3b4ce0), so that a
-// regression fails and an improvement shows.
+// The issue asks for 0.8 (subset) and 0.6 (free) of RDP's count. Subset
+// mode is held to the 0.8 asked on each corpus (measured: 0.771 on the
+// topobathy contours, 0.738 and 0.750 on the parts of the others read
+// here; BENCHMARKS.md has the whole corpus); free mode, which does not
+// reach 0.6, is asserted a little above what it reaches (0.755), so that
+// a regression fails and an improvement shows.
 TEST(FitCounts, FewerPointsThanRamerDouglasPeuckerOnRealLines) {
     const auto dem = run_corpus("dem_topobathy.txt", fit_mode::subset, 1000);
     EXPECT_EQ(dem.lines, 78u);
     EXPECT_EQ(dem.points, 6722u);
     std::printf("topobathy subset: fit %zu rdp %zu (%.3f)\n", dem.fit, dem.rdp, double(dem.fit) / double(dem.rdp));
-    EXPECT_LE(double(dem.fit), 0.86 * double(dem.rdp));
+    EXPECT_LE(double(dem.fit), 0.8 * double(dem.rdp));
     const auto free = run_corpus("dem_topobathy.txt", fit_mode::free, 1000);
     std::printf("topobathy free: fit %zu rdp %zu (%.3f)\n", free.fit, free.rdp, double(free.fit) / double(free.rdp));
-    EXPECT_LE(double(free.fit), 0.83 * double(free.rdp));
+    EXPECT_LE(double(free.fit), 0.78 * double(free.rdp));
     const auto jb = run_corpus("dem_jacksboro.txt", fit_mode::subset, 40);
     EXPECT_EQ(jb.lines, 40u);
     std::printf("jacksboro (40 lines, %zu points) subset: fit %zu rdp %zu (%.3f)\n", jb.points, jb.fit, jb.rdp,
                 double(jb.fit) / double(jb.rdp));
-    EXPECT_LE(double(jb.fit), 0.845 * double(jb.rdp));
+    EXPECT_LE(double(jb.fit), 0.8 * double(jb.rdp));
     const auto ny = run_corpus("outlines_nybb.txt", fit_mode::subset, 6);
     EXPECT_EQ(ny.lines, 6u);
     std::printf("nybb (6 rings, %zu points) subset: fit %zu rdp %zu (%.3f)\n", ny.points, ny.fit, ny.rdp,
                 double(ny.fit) / double(ny.rdp));
-    EXPECT_LE(double(ny.fit), 0.875 * double(ny.rdp));
+    EXPECT_LE(double(ny.fit), 0.8 * double(ny.rdp));
 }
 
 }  // namespace

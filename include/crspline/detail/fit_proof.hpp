@@ -515,6 +515,17 @@ bool range_within(const vec<D, T>& x, const poly_range<D, T>& pr, const root_lim
 template <std::size_t D, class T>
 bool quick_segment_test(const cubic_segment<D, T>& seg, const poly_range<D, T>& pr, const quick_limits<T>& lim,
                         std::size_t first_point, std::size_t end_point) {
+    {
+        // Probes first: the samples a quarter, half and three quarters along
+        // (among those the scan below tests), where a segment too long for
+        // the tolerance is most often out; the same answer, sooner.
+        const std::size_t m = 2 * pr.count, nseg = pr.count - 1;
+        for (std::size_t k : {m / 2, m / 4, 3 * m / 4}) {
+            if (k == 0 || k >= m) continue;
+            std::size_t hint = std::min(nseg - 1, k * nseg / m);
+            if (!range_within(seg.at(T(k) / T(m)), pr, lim.sampled, hint)) return false;
+        }
+    }
     if (!input_points_pass(seg, pr, lim, first_point, end_point)) return false;
     // Sample k looked for from the segment near the last sample, or farther
     // on the segment k / m of the way along: right first 9 times in 10.
