@@ -342,11 +342,6 @@ public:
         idx = std::move(left);
         level = std::move(left_level);
     }
-    /// The same at the base level alone.
-    void improve(std::vector<std::size_t>& idx) const {
-        std::vector<std::uint8_t> level = initial_levels(idx.size());
-        improve(idx, level, pb_.base_level);
-    }
     /// Every entry at the base level; an open line's ends at 0.
     std::vector<std::uint8_t> initial_levels(std::size_t count) const {
         std::vector<std::uint8_t> level(count, pb_.base_level);
