@@ -10,8 +10,9 @@
 //   bound proved (<= tolerance);
 // - mode subset: the control points are input points (`indices`), the
 //   first and last of an open line among them;
-// - mode free: the control points may move off the input (least squares
-//   on the points each segment covers), for noisy data; proved the same way;
+// - mode free: the control points may move off the input points, onto the
+//   middles of the input segments (detail/fit_free.hpp), for noisy data;
+//   proved the same way;
 // - always met: where no choice of points keeps the tolerance (a curve
 //   through every input point can overshoot a sharp kink), the tension of
 //   the vertices there is raised (0.5, 0.8, 0.95, 1, as Kochanek-Bartels

@@ -84,7 +84,8 @@ def fit(points, *, tolerance, alpha=0.5, closed=False, mode="subset", tension=0.
         The points are a ring (the first point not repeated).
     mode : {'subset', 'free'}, default 'subset'
         ``'subset'``: the control points are input points (``r.indices``);
-        ``'free'``: they may move off the input (least squares), for noisy data.
+        ``'free'``: they may move off the input points onto the middles of the
+        input segments, for noisy data.
     tension : float, default 0
         The curve's own tension in [0, 1]; the fit raises it per vertex where needed.
     endconditions : str or pair, default 'natural'

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <vector>
 
@@ -17,6 +18,10 @@ using crspline::fit;
 using crspline::fit_mode;
 using crspline::fit_options;
 using crspline::vec;
+
+// Free mode's control points at the middle of an input segment, over the
+// tests (so that a free mode that never moves a point shows).
+std::size_t free_middles = 0;
 
 // Checks one fit against sampling; returns the sampled measure.
 template <std::size_t D, class T>
@@ -41,6 +46,24 @@ fit_check::measured expect_within(const std::vector<vec<D, T>>& pts, const fit_o
         }
     } else {
         EXPECT_TRUE(r.indices.empty());
+        // Each control point is an input point or the middle of an input
+        // segment (computed as fit_free.hpp does: a + (b - a) / 2).
+        const std::size_t n = pts.size();
+        std::size_t middles = 0;
+        for (const auto& c : r.curve.points()) {
+            bool found = false;
+            for (std::size_t i = 0; i < n && !found; ++i) {
+                found = c == pts[i];
+                if (!found && (i + 1 < n || o.closed)) {
+                    const auto& a = pts[i];
+                    const bool mid = c == a + T(0.5) * (pts[(i + 1) % n] - a);
+                    found = mid;
+                    middles += mid;
+                }
+            }
+            EXPECT_TRUE(found) << "seed " << seed << ": a control point neither an input point nor a middle";
+        }
+        free_middles += middles;
     }
     return m;
 }
@@ -66,6 +89,10 @@ TEST(FitProof, OpenAndClosedWithinToleranceByDenseSampling) {
     EXPECT_EQ(checked, 96u);
     // Every fit but those at the smallest tolerance on the noisiest lines keeps fewer points.
     EXPECT_GE(fewer, 80u);
+    // Free mode uses its middles (measured: most of its control points on
+    // these noisy lines; a free mode that never moved a point would fail).
+    std::printf("free mode: %zu control points at segment middles\n", free_middles);
+    EXPECT_GE(free_middles, 100u);
 }
 
 TEST(FitProof, FloatAndThreeDimensions) {

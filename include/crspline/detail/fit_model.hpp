@@ -37,6 +37,10 @@ struct fit_problem {
     using point = vec<D, T>;
     std::span<const point> pts;
     bool closed = false;
+    /// pts holds the input points at even indices and the middles of the
+    /// input segments at odd ones (free mode): the middles are candidates
+    /// for control points, but not input points to prove near the curve.
+    bool odd_middles = false;
     double alpha = 0.5;
     T tension = 0;
     bool start_reflect = false, end_reflect = false;  // otherwise natural

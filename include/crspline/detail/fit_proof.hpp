@@ -142,6 +142,13 @@ struct poly_range {
     std::span<const vec<D, T>> poly;
     std::size_t first = 0;
     std::size_t count = 0;  // points in the range (at least 2)
+    /// The points at odd indices of `poly` are not input points but the
+    /// middles of its segments (free mode's candidates): on the polyline,
+    /// they need no proof of their distance to the curve.
+    bool odd_middles = false;
+    /// Whether range point k is an input point (poly has an even number of
+    /// points when the range wraps: a closed polyline with its middles).
+    bool is_input(std::size_t k) const noexcept { return !odd_middles || ((first + k) & 1) == 0; }
     const vec<D, T>& operator[](std::size_t k) const noexcept {
         std::size_t i = first + k;
         if (i >= poly.size()) i -= poly.size();
@@ -336,6 +343,7 @@ bool input_within(const cubic_segment<D, T>& seg, const poly_range<D, T>& pr, T 
     std::size_t hint = 0;
     const std::size_t stop = std::min(end, pr.count);
     for (std::size_t k = first; k < stop; ++k) {
+        if (!pr.is_input(k)) continue;
         const point& p = pr[k];
         T best = std::numeric_limits<T>::infinity(), lower = best;
         auto try_piece = [&](std::size_t l) {
@@ -424,6 +432,7 @@ bool input_points_pass(const cubic_segment<D, T>& seg, const poly_range<D, T>& p
     std::size_t hint = 0, guess = 0;
     const std::size_t stop = std::min(end, pr.count), span = pr.count - 1;
     for (std::size_t k = first; k < stop; ++k) {
+        if (!pr.is_input(k)) continue;
         const point& p = pr[k];
         while (guess + 1 < n && (guess + 1) * span <= n * k) ++guess;
         const std::size_t start = std::max(hint, guess);

@@ -90,7 +90,7 @@ public:
         const point* np = nx == fit_none ? nullptr : &pb_.at(nx);
         const typename fit_problem<D, T>::knots k{pp ? interval(p, i) : T(0), interval(i, j), np ? interval(j, nx) : T(0)};
         const auto seg = pb_.segment(pp, pb_.at(i), pb_.at(j), np, la, lb, k);
-        const poly_range<D, T> pr{pb_.pts, i >= pb_.size() ? i - pb_.size() : i, j - i + 1};
+        const poly_range<D, T> pr{pb_.pts, i >= pb_.size() ? i - pb_.size() : i, j - i + 1, pb_.odd_middles};
         r.key = key;
         r.ok = quick_segment_test(seg, pr, limits_, 1, j - i);
         return r.ok;
@@ -444,7 +444,7 @@ fit_selection<D, T> prove_and_repair(const fit_problem<D, T>& pb, std::vector<st
                 next[s] = rec[reuse];
             } else {
                 const std::size_t a = idx[s], b = idx[s + 1];
-                const poly_range<D, T> pr{pb.pts, a >= pb.size() ? a - pb.size() : a, b - a + 1};
+                const poly_range<D, T> pr{pb.pts, a >= pb.size() ? a - pb.size() : a, b - a + 1, pb.odd_middles};
                 const auto res = prove_segment(curve.segment(s), pr, pb.tolerance, pb.slack);
                 r.proved = res.proved;
                 r.c2i = res.curve_to_input;
