@@ -229,7 +229,7 @@ export function clearance(a: CatmullRom, b: CatmullRom, accuracy?: number): Clea
 export interface FitOptions {
   /** Distance allowed both ways, in the points' units (> 0, above the coordinates' rounding floor). */
   tolerance: number;
-  /** 'subset' (default): the control points are input points; 'free': they may move (noisy data). */
+  /** 'subset' (default): the control points are input points; 'free': they may also sit at the middles of the input segments (noisy data). */
   mode?: 'subset' | 'free';
   /** Knot exponent in [0, 1] (default 0.5, centripetal). */
   alpha?: number;
