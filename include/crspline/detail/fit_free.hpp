@@ -10,7 +10,7 @@
 // both ways as in subset mode: every curve point near the polyline, every
 // input point near the curve.
 //
-// Measured on the real corpus (BENCHMARKS.md, "Fit"): 6-9% fewer control
+// Measured on the real corpus (BENCHMARKS.md, "Fit"): 6-8% fewer control
 // points than subset mode. Tried and left out, each measured there: least
 // squares on the points each segment covers after a choice at 1.1 to 1.7
 // times the tolerance (its moved points mostly failed the proof and went
@@ -34,7 +34,7 @@
 namespace crspline::detail {
 
 template <std::size_t D, class T>
-fit_selection<D, T> fit_free(const fit_problem<D, T>& pb) {
+fit_selection<D, T> fit_free(const fit_problem<D, T>& pb, std::size_t& need, std::size_t& chosen) {
     // The candidates: each input point, then the middle of its segment.
     const std::size_t n = pb.size(), segs = pb.closed ? n : n - 1;
     std::vector<vec<D, T>> dense;
@@ -54,11 +54,7 @@ fit_selection<D, T> fit_free(const fit_problem<D, T>& pb) {
     // the proofs against the polyline with its middles, that much stricter,
     // hold for the input polyline.
     dp.slack = pb.slack + T(D) * std::numeric_limits<T>::epsilon() * scale;
-    const subset_search<D, T> search(dp);
-    std::vector<std::size_t> idx = search.choose(2, 1);
-    std::vector<std::uint8_t> level = search.initial_levels(idx.size());
-    search.improve(idx, level, fit_improve_level);
-    return prove_and_repair(dp, std::move(idx), {}, std::move(level));
+    return fit_subset(dp, need, chosen);
 }
 
 }  // namespace crspline::detail

@@ -342,6 +342,34 @@ public:
         idx = std::move(left);
         level = std::move(left_level);
     }
+    /// How many vertices of a choice need their tension: those whose two
+    /// segments do not both keep the tolerance with that vertex alone at
+    /// level 0 (the others as they are). fit() asks it of the choice made
+    /// with every vertex starting at 0.8, to tell a line with corners (many)
+    /// from a smooth one (few), where starting at 0 saves points.
+    std::size_t tension_needed(const std::vector<std::size_t>& idx, const std::vector<std::uint8_t>& level) const {
+        const std::size_t m = idx.size(), n = pb_.size();
+        if (m < 3) return 0;
+        std::vector<std::uint8_t> lv = level;
+        auto ok = [&](std::size_t s) {  // segment s -> s + 1 with its real neighbours
+            std::size_t z = fit_none, c = fit_none;
+            if (s > 0) z = idx[s - 1] % n;
+            else if (pb_.closed) z = idx[m - 2] % n;
+            if (s + 2 < m) c = idx[s + 2] % n;
+            else if (pb_.closed) c = idx[1] % n;
+            return passes(z, idx[s], idx[s + 1], c, lv[s], lv[s + 1]);
+        };
+        std::size_t need = 0;
+        for (std::size_t v = 1; v + 1 < m; ++v) {
+            if (lv[v] == 0) continue;
+            const std::uint8_t own = lv[v];
+            lv[v] = 0;
+            need += !(ok(v - 1) && ok(v));
+            lv[v] = own;
+        }
+        return need;
+    }
+
     /// Every entry at the base level; an open line's ends at 0.
     std::vector<std::uint8_t> initial_levels(std::size_t count) const {
         std::vector<std::uint8_t> level(count, pb_.base_level);
@@ -517,6 +545,20 @@ fit_selection<D, T> prove_and_repair(const fit_problem<D, T>& pb, std::vector<st
         out.input_to_curve = std::max(out.input_to_curve, r.i2c);
     }
     return out;
+}
+
+/// Subset mode at pb's base level: the choice, its improvement, the proof
+/// and its repairs. `need` and `chosen`: the choice's vertices that need
+/// their tension (tension_needed) and all of them, before the proof.
+template <std::size_t D, class T>
+fit_selection<D, T> fit_subset(const fit_problem<D, T>& pb, std::size_t& need, std::size_t& chosen) {
+    const subset_search<D, T> search(pb);
+    std::vector<std::size_t> idx = search.choose(2, 1);
+    std::vector<std::uint8_t> level = search.initial_levels(idx.size());
+    search.improve(idx, level, fit_improve_level);
+    need = search.tension_needed(idx, level);
+    chosen = idx.size();
+    return prove_and_repair(pb, std::move(idx), {}, std::move(level));
 }
 
 }  // namespace crspline::detail
