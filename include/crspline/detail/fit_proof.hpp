@@ -518,7 +518,7 @@ bool range_within(const vec<D, T>& x, const poly_range<D, T>& pr, const root_lim
 /// The search's quick test of a segment (not a proof: fit() proves the
 /// segments it keeps with prove_segment and repairs those that fail): the
 /// input points by input_within (input_points_pass: its answer alone), then
-/// the curve sampled at twice as many points as the range has, each within
+/// the curve sampled at twice as many points as the range has input points, each within
 /// the tolerance less a margin (3%) of the polyline (range_within). A pure
 /// function of its arguments, with limits built once per search.
 template <std::size_t D, class T>
@@ -528,7 +528,7 @@ bool quick_segment_test(const cubic_segment<D, T>& seg, const poly_range<D, T>& 
         // Probes first: the samples a quarter, half and three quarters along
         // (among those the scan below tests), where a segment too long for
         // the tolerance is most often out; the same answer, sooner.
-        const std::size_t m = 2 * pr.count, nseg = pr.count - 1;
+        const std::size_t m = pr.odd_middles ? pr.count + 1 : 2 * pr.count, nseg = pr.count - 1;
         for (std::size_t k : {m / 2, m / 4, 3 * m / 4}) {
             if (k == 0 || k >= m) continue;
             std::size_t hint = std::min(nseg - 1, k * nseg / m);
@@ -538,7 +538,9 @@ bool quick_segment_test(const cubic_segment<D, T>& seg, const poly_range<D, T>& 
     if (!input_points_pass(seg, pr, lim, first_point, end_point)) return false;
     // Sample k looked for from the segment near the last sample, or farther
     // on the segment k / m of the way along: right first 9 times in 10.
-    const std::size_t m = 2 * pr.count, nseg = pr.count - 1;
+    // Twice as many samples as input points: the range's points, or its
+    // input points and their segments' middles (odd_middles).
+    const std::size_t m = pr.odd_middles ? pr.count + 1 : 2 * pr.count, nseg = pr.count - 1;
     std::size_t hint = 0, guess = 0;
     for (std::size_t k = 1; k < m; ++k) {
         while ((guess + 1) * m <= k * nseg) ++guess;
