@@ -426,12 +426,16 @@ private:
         return near_chord_line(pr, i, j, h * std::max(ea, eb) / T(3));
     }
 
-    /// The part of t across the line through the points at i and j.
+    /// The part of t across the line through the points at i and j (its
+    /// root taken plainly: a number too large to square gives infinity, and
+    /// so no bound; one too small to square is far below the 64th of the
+    /// limit that near_chord_line spares).
     T across_chord(const point& t, std::size_t i, std::size_t j) const {
         const point d = pb_.at(j) - pb_.at(i);
         const T l2 = dot(d, d);
         if (!(l2 > 0) || !(l2 < std::numeric_limits<T>::infinity())) return std::numeric_limits<T>::infinity();
-        return norm(t - (dot(t, d) / l2) * d);
+        const point v = t - (dot(t, d) / l2) * d;
+        return std::sqrt(dot(v, v));
     }
 
     /// Whether every input point of the range i..j is within the limit plus
