@@ -266,27 +266,31 @@ public:
             return {sidx(idx[e]) + shift, &level[e], fixed};
         };
         auto wrap = [&](sidx i) { return i == none ? fit_none : std::size_t(((i % n) + n) % n); };
-        // Segment w[s] -> w[s + 1] of a window with its neighbours, at the
-        // levels lv[s], lv[s + 1].
+        // Segment w[s] -> w[s + 1] of a window: its unrolled ends and its
+        // neighbours (`some` false past an open end: nothing to test).
+        struct window_segment {
+            bool some;
+            std::size_t z, a, b, c;
+        };
+        auto segment_at = [&](const std::array<sidx, 8>& w, std::size_t len, std::size_t s) -> window_segment {
+            if (w[s] == none || w[s + 1] == none) return {false, 0, 0, 0, 0};
+            sidx a = w[s], b = w[s + 1];
+            const sidx shift = a < 0 ? n : a >= n ? -n : 0;
+            a += shift, b += shift;
+            const std::size_t z = s > 0 ? wrap(w[s - 1]) : fit_none;
+            const std::size_t c = s + 2 < len ? wrap(w[s + 2]) : fit_none;
+            return {true, z, std::size_t(a), std::size_t(b), c};
+        };
+        // Whether that segment passes at the levels lv[s], lv[s + 1].
         auto seg_ok = [&](const std::array<sidx, 8>& w, const std::array<std::uint8_t, 8>& lv, std::size_t len,
                           std::size_t s) {
-            if (w[s] == none || w[s + 1] == none) return true;
-            sidx a = w[s], b = w[s + 1];
-            const sidx shift = a < 0 ? n : a >= n ? -n : 0;
-            a += shift, b += shift;
-            const std::size_t z = s > 0 ? wrap(w[s - 1]) : fit_none;
-            const std::size_t c = s + 2 < len ? wrap(w[s + 2]) : fit_none;
-            return passes(z, std::size_t(a), std::size_t(b), c, lv[s], lv[s + 1]);
+            const window_segment g = segment_at(w, len, s);
+            return !g.some || passes(g.z, g.a, g.b, g.c, lv[s], lv[s + 1]);
         };
-        // Whether some levels may let segment w[s] -> w[s + 1] pass (may_pass).
+        // Whether some levels may let it pass (may_pass).
         auto seg_may = [&](const std::array<sidx, 8>& w, std::size_t len, std::size_t s) {
-            if (w[s] == none || w[s + 1] == none) return true;
-            sidx a = w[s], b = w[s + 1];
-            const sidx shift = a < 0 ? n : a >= n ? -n : 0;
-            a += shift, b += shift;
-            const std::size_t z = s > 0 ? wrap(w[s - 1]) : fit_none;
-            const std::size_t c = s + 2 < len ? wrap(w[s + 2]) : fit_none;
-            return may_pass(z, std::size_t(a), std::size_t(b), c);
+            const window_segment g = segment_at(w, len, s);
+            return !g.some || may_pass(g.z, g.a, g.b, g.c);
         };
         // The levels an entry may take: its own first, then the others.
         auto choices = [&](const entry& e, std::array<std::uint8_t, 8>& out) {
