@@ -18,13 +18,15 @@
 //   the vertices there is raised (0.5, 0.8, 0.95, 1, as Kochanek-Bartels
 //   tension per vertex, so the curve remembers it): at 1 on both ends a
 //   segment is its input segment, exact. The choice itself sets each
-//   vertex's tension (0 to 0.95) where that saves points.
+//   vertex's tension (0 to 0.95) where that saves points;
+// - a closed curve keeps three control points at least, at any tolerance.
 //
 // Bad input throws invalid_input: a tolerance that is not a positive
 // number, or below the rounding floor of the coordinates (the message names
 // the floor); a non-finite coordinate (index and coordinate named); fewer
 // than 2 distinct points (3 for a closed curve); an end condition other
-// than natural or reflect (the fit chooses the ends' tangents).
+// than natural or reflect (the fit chooses the ends' tangents), or any on a
+// closed curve.
 #pragma once
 
 #include <algorithm>
@@ -118,6 +120,9 @@ void check_fit_input(std::span<const vec<D, T>> points, const fit_options<D, T>&
     using kind = typename end_condition<D, T>::kind;
     if (opt.start.type == kind::tangent || opt.end.type == kind::tangent)
         throw invalid_input("fit: the end conditions must be natural or reflect (the fit chooses the end tangents)");
+    if (opt.closed && (opt.start.type != kind::natural || opt.end.type != kind::natural))
+        throw invalid_input(std::string("fit: a closed curve takes no end conditions, got ") +
+                            (opt.start.type != kind::natural ? "start" : "end") + " reflect");
     const std::size_t need = opt.closed ? 3 : 2;
     if (points.size() < need)
         throw invalid_input("fit: needs at least " + std::to_string(need) + " points" + (opt.closed ? " (closed)" : "") +

@@ -81,6 +81,11 @@ TEST(FitErrors, OptionsOutOfRange) {
     o.tension = 0;
     o.start = crspline::end_condition<2>::tangent(vec<2>{{1, 0}});
     EXPECT_EQ(error_of(line, o), "fit: the end conditions must be natural or reflect (the fit chooses the end tangents)");
+    // A ring has no ends: said before any work, in fit's words.
+    o.start = crspline::end_condition<2>::natural();
+    o.end = crspline::end_condition<2>::reflect();
+    o.closed = true;
+    EXPECT_EQ(error_of(line, o), "fit: a closed curve takes no end conditions, got end reflect");
 }
 
 // Options the fit keeps: alpha, tension, reflect ends, duplicates dropped

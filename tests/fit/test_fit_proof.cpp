@@ -3,6 +3,7 @@
 // choice of points is enough.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -112,6 +113,43 @@ TEST(FitProof, FloatAndThreeDimensions) {
         checked += 2;
     }
     EXPECT_EQ(checked, 16u);
+}
+
+// A ring whose tolerance is as large as the ring itself: the search goes
+// round in one or two points, but a closed curve keeps three (one point is
+// no curve; two go there and back, enclosing nothing), still within the
+// tolerance. Seeded rings (circles with noise, squares), tolerances from a
+// tenth of the ring's size to a hundred times it.
+TEST(FitProof, RingsKeepThreeControlPointsAtAnyTolerance) {
+    std::size_t checked = 0, three = 0;
+    for (std::uint64_t seed = 300; seed < 312; ++seed) {
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> u(-0.05, 0.05);
+        std::vector<vec<2>> ring;
+        const std::size_t n = 4 + seed % 40;
+        for (std::size_t k = 0; k < n; ++k) {
+            const double t = 2 * M_PI * double(k) / double(n);
+            if (seed % 3 == 0)  // a square's outline, corners included
+                ring.push_back(vec<2>{{std::clamp(1.5 * std::cos(t), -1.0, 1.0), std::clamp(1.5 * std::sin(t), -1.0, 1.0)}});
+            else
+                ring.push_back(vec<2>{{std::cos(t) + u(rng), std::sin(t) + u(rng)}});
+        }
+        for (double tol : {0.2, 0.7, 1.5, 5.0, 100.0})
+            for (auto mode : {fit_mode::subset, fit_mode::free}) {
+                fit_options<2> o;
+                o.tolerance = tol;
+                o.closed = true;
+                o.mode = mode;
+                const auto r = fit(ring, o);
+                EXPECT_GE(r.count, 3u) << "seed " << seed << " tolerance " << tol;
+                three += r.count == 3;
+                expect_within(ring, o, seed);
+                ++checked;
+            }
+    }
+    EXPECT_EQ(checked, 120u);
+    // At the largest tolerances every ring takes the fewest: three.
+    EXPECT_GE(three, 48u);
 }
 
 // A zigzag with right-angle kinks: the curve through every point overshoots

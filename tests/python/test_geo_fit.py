@@ -126,6 +126,34 @@ def test_contours_one_level_apart_never_cross(seed):
     assert checked >= 20, checked
 
 
+def test_island_smaller_than_the_tolerance_stays_a_ring():
+    """An island (a 10 by 10 square) in a sea, fitted at tolerances up to six
+    times its size: each ring keeps three control points at least (before,
+    the fit took the island round in one point and failed), both outputs
+    valid, the island still inside its hole, the two still sharing their
+    border (areas add up to their union's)."""
+    from shapely.geometry import Polygon
+
+    island = Polygon([(0, 0), (10, 0), (10, 10), (0, 10)])
+    sea = Polygon([(-100, -100), (100, -100), (100, 100), (-100, 100)],
+                  [[(0, 0), (0, 10), (10, 10), (10, 0)]])
+    layer = gpd.GeoDataFrame({"name": ["island", "sea"]}, geometry=[island, sea], crs="EPSG:3857")
+    checked = 0
+    for tol in (1.0, 5.0, 20.0, 60.0):
+        out = cg.fit(layer, tolerance=tol)
+        assert list(out["status"]) == ["ok", "ok"], (tol, list(out["status"]))
+        assert min(out["control_points"]) >= 3, (tol, list(out["control_points"]))
+        assert (out["deviation"] <= tol).all(), (tol, list(out["deviation"]))
+        a, b = out.geometry.iloc[0], out.geometry.iloc[1]
+        assert a.is_valid and b.is_valid and a.area > 0
+        assert not a.overlaps(b)
+        # Shared border: the areas add up to the union's (1e-9 relative:
+        # Shapely's rounding of the union of two polygons with ~2,000 vertices).
+        assert abs(a.area + b.area - unary_union([a, b]).area) <= 1e-9 * unary_union([a, b]).area
+        checked += 1
+    assert checked == 4
+
+
 def test_fit_errors():
     g = gpd.GeoSeries.from_wkt(["LINESTRING (0 0, 1 1, 2 0)"])
     with pytest.raises(ValueError, match="tolerance must be a positive finite distance, got -1"):

@@ -462,6 +462,37 @@ private:
     mutable std::array<recent, 64> recent_{};
 };
 
+/// Three control points for a ring that the search took round in one or
+/// two (a tolerance as large as the ring itself): a closed curve of one
+/// point is no curve, and one of two goes there and back, enclosing
+/// nothing (a GIS ring must keep three distinct vertices). Point 0, the
+/// point farthest from it and the point farthest from the line through
+/// those two (distinct points where there are), as unrolled indices in
+/// order, ending with point 0 again; the proof and repairs then keep the
+/// tolerance as for any choice.
+template <std::size_t D, class T>
+std::vector<std::size_t> fit_ring_triangle(const fit_problem<D, T>& pb) {
+    const std::size_t n = pb.size();
+    const vec<D, T>& a = pb.pts[0];
+    std::size_t b = 1;
+    T far = -1;
+    for (std::size_t k = 1; k < n; ++k) {
+        const T d = dot(pb.pts[k] - a, pb.pts[k] - a);
+        if (d > far) far = d, b = k;
+    }
+    const vec<D, T> d = pb.pts[b] - a;
+    std::size_t c = b == 1 ? 2 : 1;
+    T off = -1;
+    for (std::size_t k = 1; k < n; ++k) {
+        if (k == b || pb.pts[k] == a || pb.pts[k] == pb.pts[b]) continue;
+        const vec<D, T> v = fit_segment_offset(pb.pts[k], a, d, dot(d, d));
+        const T o = dot(v, v);
+        if (o > off) off = o, c = k;
+    }
+    std::vector<std::size_t> idx{0, std::min(b, c), std::max(b, c), n};
+    return idx;
+}
+
 /// Subset mode at pb's base level: the choice, its improvement, the proof
 /// and its repairs. `need` and `chosen`: the choice's vertices that need
 /// their tension (tension_needed) and all of them, before the proof.
@@ -471,6 +502,10 @@ fit_selection<D, T> fit_subset(const fit_problem<D, T>& pb, std::size_t& need, s
     std::vector<std::size_t> idx = search.choose(2, 1);
     std::vector<std::uint8_t> level = search.initial_levels(idx.size());
     search.improve(idx, level, fit_improve_level);
+    if (pb.closed && idx.size() < 4) {
+        idx = fit_ring_triangle(pb);
+        level = search.initial_levels(idx.size());
+    }
     need = search.tension_needed(idx, level);
     chosen = idx.size();
     return prove_and_repair(pb, std::move(idx), {}, std::move(level));
