@@ -202,8 +202,9 @@ public:
     /// some such point, at some level, keeps it (every segment whose four
     /// points or two levels change tried with its real neighbours). The ends
     /// of an open line stay, at level 0; a closed curve's point 0 too, at
-    /// its level. Each try looks at a window of eight points around the
-    /// change, so a pass costs time linear in the points.
+    /// its level; a closed curve keeps three points at least. Each try looks
+    /// at a window of eight points around the change, so a pass costs time
+    /// linear in the points.
     void improve(std::vector<std::size_t>& idx, std::vector<std::uint8_t>& level, std::uint8_t max_level) const {
         using sidx = std::ptrdiff_t;
         const sidx n = sidx(pb_.size()), none = std::numeric_limits<sidx>::min();
@@ -279,6 +280,14 @@ public:
             return k;
         };
         while (pos + 1 < idx.size()) {
+            // A ring keeps three vertices at least (four before a removal or
+            // a merge; and then the window below wraps at most once).
+            if (pb_.closed && left.size() + (idx.size() - pos) < 5) {
+                left.push_back(idx[pos]);
+                left_level.push_back(level[pos]);
+                ++pos;
+                continue;
+            }
             std::array<entry, 8> e{};
             std::array<sidx, 8> w{};
             std::array<std::uint8_t, 8> wl{};
