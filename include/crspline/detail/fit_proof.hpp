@@ -497,7 +497,7 @@ segment_proof<T> prove_segment(const cubic_segment<D, T>& seg, const poly_range<
 /// quick test asks of range_distance (the hint's window, then all the
 /// segments: the answer is whether the minimum over all is within, whatever
 /// the hint). So it may stop at the first segment within, looking at the
-/// hint's and its neighbours' first; `hint` moves to it.
+/// segments outward from the hint first; `hint` moves to the one found.
 template <std::size_t D, class T>
 bool range_within(const vec<D, T>& x, const poly_range<D, T>& pr, const root_limit<T>& r, std::size_t& hint) {
     const std::size_t nseg = pr.count - 1;
@@ -506,12 +506,14 @@ bool range_within(const vec<D, T>& x, const poly_range<D, T>& pr, const root_lim
         hint = s;
         return true;
     };
+    // Outward from the hint, both ways at once: a sample near some segment
+    // is most often near one close to the hint (on a densely sampled line
+    // a segment's samples are near many input segments, and a scan from
+    // the range's start cost time in the square of its length).
     const std::size_t h = hint;
-    if (within(h) || (h + 1 < nseg && within(h + 1)) || (h > 0 && within(h - 1)) || (h + 2 < nseg && within(h + 2)) ||
-        (h > 1 && within(h - 2)))
-        return true;
-    for (std::size_t s = 0; s < nseg; ++s)
-        if (within(s)) return true;
+    if (within(h)) return true;
+    for (std::size_t d = 1; d <= h || h + d < nseg; ++d)
+        if ((h + d < nseg && within(h + d)) || (d <= h && within(h - d))) return true;
     return false;
 }
 
