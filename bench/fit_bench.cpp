@@ -1,12 +1,13 @@
 // crspline fit benchmark (issue 40): counts against Ramer-Douglas-Peucker
 // and speed on the real corpus (tests/reference/fit: DEM contours traced by
 // marching squares at half a grid cell, NYC borough outlines at half their
-// vertex spacing), and the time's growth with the input (one long line of
-// concatenated DEM contours, 10^4 points up to --max). Thread CPU time.
-// Run bench/js/fit_peers.mjs for the peers (simplify-js, paper.js) on the
-// same lines.
+// vertex spacing), and the time's growth with the input: one long line of
+// concatenated DEM contours, 10^4 points up to --max; one period of a sine
+// sampled 4,000 times up to --dense-max, whose segments cover more points
+// the more there are. Thread CPU time. Run bench/js/fit_peers.mjs for the
+// peers (simplify-js, paper.js) on the same lines.
 //
-//   crspline_fit_bench [--corpus DIR] [--max N] [--free-max N]
+//   crspline_fit_bench [--corpus DIR] [--max N] [--free-max N] [--dense-max N]
 #include <time.h>
 
 #include <cmath>
@@ -53,19 +54,32 @@ totals run(const std::vector<fit_corpus::line>& lines, crspline::fit_mode mode) 
     return t;
 }
 
+/// The least-squares slope of log(time) against log(n).
+void print_exponent(crspline::fit_mode mode, const std::vector<double>& lx, const std::vector<double>& ly) {
+    if (lx.size() < 2) return;
+    double mx = 0, my = 0;
+    for (std::size_t i = 0; i < lx.size(); ++i) mx += lx[i], my += ly[i];
+    mx /= double(lx.size()), my /= double(ly.size());
+    double sxy = 0, sxx = 0;
+    for (std::size_t i = 0; i < lx.size(); ++i) sxy += (lx[i] - mx) * (ly[i] - my), sxx += (lx[i] - mx) * (lx[i] - mx);
+    std::printf("%-7s fitted exponent (time ~ n^k): k = %.3f\n", mode == crspline::fit_mode::free ? "free" : "subset",
+                sxy / sxx);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     std::setvbuf(stdout, nullptr, _IOLBF, 0);  // each line as it is measured
     std::string dir = CRSPLINE_FIT_CORPUS_DIR;
-    std::size_t max_n = 1000000, free_max = 100000;
+    std::size_t max_n = 1000000, free_max = 100000, dense_max = 64000;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
         if (a == "--corpus") dir = argv[i + 1];
         else if (a == "--max") max_n = std::size_t(std::atof(argv[i + 1]));
         else if (a == "--free-max") free_max = std::size_t(std::atof(argv[i + 1]));
+        else if (a == "--dense-max") dense_max = std::size_t(std::atof(argv[i + 1]));
         else {
-            std::fprintf(stderr, "usage: crspline_fit_bench [--corpus DIR] [--max N] [--free-max N]\n");
+            std::fprintf(stderr, "usage: crspline_fit_bench [--corpus DIR] [--max N] [--free-max N] [--dense-max N]\n");
             return 2;
         }
     }
@@ -105,15 +119,32 @@ int main(int argc, char** argv) {
             lx.push_back(std::log(double(n)));
             ly.push_back(std::log(s));
         }
-        if (lx.size() >= 2) {
-            double mx = 0, my = 0;
-            for (std::size_t i = 0; i < lx.size(); ++i) mx += lx[i], my += ly[i];
-            mx /= double(lx.size()), my /= double(ly.size());
-            double sxy = 0, sxx = 0;
-            for (std::size_t i = 0; i < lx.size(); ++i) sxy += (lx[i] - mx) * (ly[i] - my), sxx += (lx[i] - mx) * (lx[i] - mx);
-            std::printf("%-7s fitted exponent (time ~ n^k): k = %.3f\n", mode == crspline::fit_mode::free ? "free" : "subset",
-                        sxy / sxx);
+        print_exponent(mode, lx, ly);
+    }
+    // 3. Growth on a densely sampled smooth line: one period of a sine,
+    //    tolerance 0.01, whose segments cover more input points the more
+    //    there are (the choice's bounds of fit_model.hpp keep it linear).
+    std::printf("\ngrowth (one period of a sine sampled densely, tolerance 0.01)\nmode    points      seconds   points/s\n");
+    for (auto mode : {crspline::fit_mode::subset, crspline::fit_mode::free}) {
+        std::vector<double> lx, ly;
+        for (std::size_t n = 4000; n <= dense_max; n *= 4) {
+            std::vector<crspline::vec<2>> p(n);
+            for (std::size_t i = 0; i < n; ++i) {
+                const double t = 2 * 3.141592653589793 * double(i) / double(n - 1);
+                p[i] = crspline::vec<2>{{t, std::sin(t)}};
+            }
+            crspline::fit_options<2> o;
+            o.tolerance = 0.01;
+            o.mode = mode;
+            const double t0 = thread_seconds();
+            const auto r = crspline::fit(p, o);
+            const double s = thread_seconds() - t0;
+            std::printf("%-7s %9zu  %9.3f  %9.0f   (%zu control points)\n",
+                        mode == crspline::fit_mode::free ? "free" : "subset", n, s, double(n) / s, r.count);
+            lx.push_back(std::log(double(n)));
+            ly.push_back(std::log(s));
         }
+        print_exponent(mode, lx, ly);
     }
     return 0;
 }

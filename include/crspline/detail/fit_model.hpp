@@ -30,6 +30,22 @@ inline constexpr std::uint8_t fit_top_level = 4;
 /// to 1 0.4% fewer at a fifth more time.
 inline constexpr std::uint8_t fit_improve_level = 3;
 
+/// Bounds that keep the choice's time linear in the points where a segment
+/// covers very many of them (a densely sampled smooth line: each test of a
+/// segment looks at every input point it covers: without them a 4,000-point
+/// sine took 3 s, and time grew with the square of the points). Measured
+/// (BENCHMARKS.md): the real corpus' subset choices the same, free mode's
+/// counts within 0.05%, the NYC boroughs' GIS fit 11,879 control points
+/// instead of 11,878.
+/// - where the reach from a point covers 64 input points or more, the
+///   choice's candidates lie on a grid of a 64th to a 128th of it
+///   (subset_search::on_grid; a grid of a 16th cost the GIS fit 3%);
+/// - a merge in the improvement tries 64 points at most, evenly spread;
+/// - the quick test samples its curve at 64 points at most (twice per
+///   input point below that: fit_proof.hpp's fit_max_samples).
+inline constexpr std::size_t fit_choose_grid = 64;
+inline constexpr std::size_t fit_merge_tries = 64;
+
 /// The fit's fixed choices: the points (consecutive duplicates removed),
 /// closed or open, alpha, the global tension and the kinds of the two ends.
 template <std::size_t D, class T>

@@ -166,6 +166,10 @@ struct poly_range {
 /// segment, far below any tolerance the rounding floor allows.
 inline constexpr int fit_max_depth = 16;
 
+/// The most samples the quick test takes of one segment's curve (see
+/// quick_sample_count; fit_model.hpp says why).
+inline constexpr std::size_t fit_max_samples = 64;
+
 // De Casteljau halves of a Bézier cubic.
 template <std::size_t D, class T>
 void split_half(const std::array<vec<D, T>, 4>& b, std::array<vec<D, T>, 4>& l, std::array<vec<D, T>, 4>& r) noexcept {
@@ -517,11 +521,19 @@ bool range_within(const vec<D, T>& x, const poly_range<D, T>& pr, const root_lim
     return false;
 }
 
+/// How many samples the quick test takes of its curve: twice as many as
+/// the range has input points (its points, or its input points and their
+/// segments' middles: odd_middles), fit_max_samples at most.
+template <std::size_t D, class T>
+std::size_t quick_sample_count(const poly_range<D, T>& pr) noexcept {
+    return std::min(fit_max_samples, pr.odd_middles ? pr.count + 1 : 2 * pr.count);
+}
+
 /// The search's quick test of a segment (not a proof: fit() proves the
 /// segments it keeps with prove_segment and repairs those that fail): the
 /// input points by input_within (input_points_pass: its answer alone), then
-/// the curve sampled at twice as many points as the range has input points, each within
-/// the tolerance less a margin (3%) of the polyline (range_within). A pure
+/// the curve sampled at quick_sample_count points, each within the tolerance
+/// less a margin (3%) of the polyline (range_within). A pure
 /// function of its arguments, with limits built once per search.
 template <std::size_t D, class T>
 bool quick_segment_test(const cubic_segment<D, T>& seg, const poly_range<D, T>& pr, const quick_limits<T>& lim,
@@ -530,7 +542,7 @@ bool quick_segment_test(const cubic_segment<D, T>& seg, const poly_range<D, T>& 
         // Probes first: the samples a quarter, half and three quarters along
         // (among those the scan below tests), where a segment too long for
         // the tolerance is most often out; the same answer, sooner.
-        const std::size_t m = pr.odd_middles ? pr.count + 1 : 2 * pr.count, nseg = pr.count - 1;
+        const std::size_t m = quick_sample_count(pr), nseg = pr.count - 1;
         for (std::size_t k : {m / 2, m / 4, 3 * m / 4}) {
             if (k == 0 || k >= m) continue;
             std::size_t hint = std::min(nseg - 1, k * nseg / m);
@@ -540,9 +552,7 @@ bool quick_segment_test(const cubic_segment<D, T>& seg, const poly_range<D, T>& 
     if (!input_points_pass(seg, pr, lim, first_point, end_point)) return false;
     // Sample k looked for from the segment near the last sample, or farther
     // on the segment k / m of the way along: right first 9 times in 10.
-    // Twice as many samples as input points: the range's points, or its
-    // input points and their segments' middles (odd_middles).
-    const std::size_t m = pr.odd_middles ? pr.count + 1 : 2 * pr.count, nseg = pr.count - 1;
+    const std::size_t m = quick_sample_count(pr), nseg = pr.count - 1;
     std::size_t hint = 0, guess = 0;
     for (std::size_t k = 1; k < m; ++k) {
         while ((guess + 1) * m <= k * nseg) ++guess;

@@ -114,6 +114,29 @@ public:
         return ok;
     }
 
+    /// A reach of fit_choose_grid points or more puts the candidates on a
+    /// grid of step g (a power of two, the reach fit_choose_grid to twice
+    /// that many steps): the candidates of the states on one count share
+    /// their points, so a densely sampled line, whose segments cover
+    /// thousands of input points, has a bounded number of states per
+    /// control point (with every point a candidate, the choice's time grew
+    /// with the square of the points). The last point stays exact;
+    /// duplicates go.
+    template <std::size_t N>
+    std::size_t on_grid(std::array<std::size_t, N>& cand, std::size_t nc, std::size_t b, std::size_t r) const {
+        std::size_t g = 1;
+        while (g * fit_choose_grid <= r - b) g *= 2;
+        if (g == 1) return nc;
+        std::size_t out = 0;
+        for (std::size_t k = 0; k < nc; ++k) {
+            const std::size_t c = cand[k] == last_ ? last_ : cand[k] / g * g;
+            bool seen = c <= b;
+            for (std::size_t q = 0; q < out && !seen; ++q) seen = cand[q] == c;
+            if (!seen) cand[out++] = c;
+        }
+        return out;
+    }
+
     /// The choice: a shortest path over states (a, b), the last two chosen
     /// points, each knowing its best predecessor z. From a state, the
     /// candidates for the next point c are the last `lookahead` points
@@ -160,6 +183,7 @@ public:
                 for (std::size_t c = r + 1; c-- > from && nc < max_lookahead;) cand[nc++] = c;
                 for (std::size_t c : {b + (r - b) * 7 / 8, b + (r - b) * 3 / 4})
                     if (c > b && c < from && (nc == 0 || cand[nc - 1] != c)) cand[nc++] = c;
+                nc = on_grid(cand, nc, b, r);
                 for (std::size_t ci = 0; ci < nc; ++ci) {
                     const std::size_t c = cand[ci];
                     if (!first && !passes(s.z, s.a, b, c)) continue;
@@ -319,10 +343,13 @@ public:
                 }
             }
             // Replace it and the next one by one point k between their
-            // neighbours, at some level (theirs kept).
+            // neighbours, at some level (theirs kept): every point between
+            // them, or fit_merge_tries evenly spread where there are more.
             bool merged = false;
             if (pos + 2 < idx.size()) {
-                for (sidx k = w[5] - 1; k > w[2] && !merged; --k) {
+                const sidx span = w[5] - w[2], tries = sidx(fit_merge_tries);
+                const sidx stride = span <= tries ? 1 : (span + tries - 1) / tries;
+                for (sidx k = w[5] - 1; k > w[2] && !merged; k -= stride) {
                     const std::array<sidx, 8> t0{w[0], w[1], w[2], k, w[5], w[6], w[7], none};
                     if (!seg_may(t0, 7, 2) || !seg_may(t0, 7, 3)) continue;
                     for (std::uint8_t lk = 0; lk <= max_level && !merged; ++lk) {
