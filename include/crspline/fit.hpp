@@ -23,7 +23,8 @@
 //
 // Bad input throws invalid_input: a tolerance that is not a positive
 // number, or below the rounding floor of the coordinates (the message names
-// the floor); a non-finite coordinate (index and coordinate named); fewer
+// the floor) or below fit_smallest_tolerance; a non-finite coordinate, or
+// one beyond fit_largest_coordinate (index and coordinate named); fewer
 // than 2 distinct points (3 for a closed curve); an end condition other
 // than natural or reflect (the fit chooses the ends' tangents), or any on a
 // closed curve.
@@ -101,6 +102,21 @@ T fit_rounding_floor(std::span<const vec<D, T>> points) noexcept {
     return T(256) * std::numeric_limits<T>::epsilon() * std::max(fit_scale(points), std::numeric_limits<T>::min());
 }
 
+/// The largest coordinate fit() accepts: differences of two coordinates,
+/// squared and summed over D, with room for a product of two such, stay
+/// finite (sqrt(max / (16 D)): 2.4e153 for 2-D doubles, 3.3e18 for 2-D floats).
+template <std::size_t D, class T>
+T fit_largest_coordinate() noexcept {
+    return std::sqrt(std::numeric_limits<T>::max() / T(16 * D));
+}
+
+/// The smallest tolerance fit() accepts: its square a normal number
+/// (1.5e-154 for doubles, 1.1e-19 for floats).
+template <class T>
+T fit_smallest_tolerance() noexcept {
+    return std::sqrt(std::numeric_limits<T>::min());
+}
+
 namespace detail {
 
 template <std::size_t D, class T>
@@ -127,6 +143,22 @@ void check_fit_input(std::span<const vec<D, T>> points, const fit_options<D, T>&
     if (points.size() < need)
         throw invalid_input("fit: needs at least " + std::to_string(need) + " points" + (opt.closed ? " (closed)" : "") +
                             ", got " + std::to_string(points.size()));
+    // The proof's arithmetic squares distances: they must stay finite, and
+    // the tolerance's square a normal number (beyond, an overflow gave a
+    // "proof" of a straight line through a random walk, and an underflow a
+    // proof that could not close).
+    const T hi = fit_largest_coordinate<D, T>(), lo = fit_smallest_tolerance<T>();
+    for (std::size_t i = 0; i < points.size(); ++i)
+        for (std::size_t k = 0; k < D; ++k)
+            if (!(std::abs(points[i][k]) <= hi))
+                throw invalid_input("fit: point " + std::to_string(i) + " coordinate " + std::to_string(k) + " is " +
+                                    num(double(points[i][k])) + ", beyond the " + num(double(hi)) +
+                                    " the proof's arithmetic covers (its squared distances must stay finite): "
+                                    "scale the points and the tolerance");
+    if (!(tol >= double(lo)))
+        throw invalid_input("fit: tolerance " + num(tol) + " is below " + num(double(lo)) +
+                            ", the smallest the proof's arithmetic covers (its square must be a normal number): "
+                            "scale the points and the tolerance");
     const T floor = fit_rounding_floor(points);
     if (!(T(tol) > floor))
         throw invalid_input("fit: tolerance " + num(tol) + " is at or below the rounding floor " +

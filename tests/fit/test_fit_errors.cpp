@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
+#include <random>
 #include <limits>
 #include <string>
 #include <vector>
@@ -68,6 +70,64 @@ TEST(FitErrors, ToleranceBelowTheRoundingFloor) {
     fit_options<2, float> of;
     of.tolerance = 1e-3;
     EXPECT_NE(error_of(ff, of).find("is at or below the rounding floor 0.0305"), std::string::npos) << error_of(ff, of);
+}
+
+// Beyond the range where the proof's squared distances stay finite (and
+// the tolerance's square normal), an error naming the point, or the
+// tolerance, and the limit: before, coordinates near 1e200 gave a "proof"
+// of a straight line through a random walk (deviation 4e-12 of the
+// tolerance where it is 7.9 times the tolerance), and a tolerance near
+// 1e-170 a logic_error. Inside the range, the same random walk at scale
+// 1e150 is fitted within its tolerance (checked by sampling in long double
+// scaled back to 1).
+TEST(FitErrors, CoordinatesAndToleranceOutsideTheProofsArithmetic) {
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> g(0, 1);
+    auto walk = [&](double scale) {
+        std::vector<vec<2>> p;
+        double x = 0, y = 0;
+        for (int i = 0; i < 200; ++i) {
+            x += 1 + 0.3 * g(rng), y += 0.5 * g(rng);
+            p.push_back(vec<2>{{x * scale, y * scale}});
+        }
+        return p;
+    };
+    fit_options<2> o;
+    o.tolerance = 0.5e200;
+    const std::string big = error_of(walk(1e200), o);
+    EXPECT_EQ(big.rfind("fit: point 0 coordinate 0 is 1.26", 0), 0u) << big;
+    EXPECT_NE(big.find("beyond the 2.370187977027294e+153 the proof's arithmetic covers"), std::string::npos) << big;
+    o.tolerance = 0.5e-170;
+    const std::string small = error_of(walk(1e-170), o);
+    EXPECT_EQ(small, "fit: tolerance 5e-171 is below 1.4916681462400413e-154, the smallest the proof's arithmetic "
+                     "covers (its square must be a normal number): scale the points and the tolerance");
+    const float float_limit = crspline::fit_largest_coordinate<2, float>();
+    EXPECT_EQ(float_limit, std::sqrt(std::numeric_limits<float>::max() / 32));
+    // Inside: scale 1e150 (coordinates up to about 2e152).
+    const auto p = walk(1e150);
+    o.tolerance = 0.5e150;
+    const auto r = fit(p, o);
+    EXPECT_LE(double(r.deviation), o.tolerance);
+    EXPECT_GT(r.count, 20u);  // measured 46: a random walk of 200 steps
+    long double worst = 0;  // curve samples against the polyline, scaled back to 1
+    for (std::size_t s = 0; s < r.curve.segment_count(); ++s) {
+        const auto seg = r.curve.segment(s);
+        for (int k = 0; k <= 40; ++k) {
+            const auto c = seg.at(k / 40.0);
+            long double best = 1e30L;
+            for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+                const long double ax = p[i][0] / 1e150L, ay = p[i][1] / 1e150L;
+                const long double dx = p[i + 1][0] / 1e150L - ax, dy = p[i + 1][1] / 1e150L - ay;
+                const long double wx = c[0] / 1e150L - ax, wy = c[1] / 1e150L - ay, l2 = dx * dx + dy * dy;
+                const long double t = l2 > 0 ? std::clamp((wx * dx + wy * dy) / l2, 0.0L, 1.0L) : 0.0L;
+                best = std::min(best, std::hypot(wx - t * dx, wy - t * dy));
+            }
+            worst = std::max(worst, best);
+        }
+    }
+    // 1e-9: the rounding of the scaling and of the samples, far below the
+    // tolerance of 0.5 (a broken proof is off by a whole tolerance).
+    EXPECT_LE(double(worst), 0.5 + 1e-9);
 }
 
 TEST(FitErrors, OptionsOutOfRange) {
