@@ -44,11 +44,14 @@ def ok(args, stdin=""):
 
 
 def both_ways(samples, pts, closed):
-    """Largest sampled distance curve -> input polyline, and input -> sampled polyline less half a gap."""
+    """Largest sampled distance curve -> input polyline, and input -> curve bounded
+    below interval by interval (the nearer of two consecutive samples less 0.6 of
+    their gap; the largest gap anywhere made the bound idle on closed lines)."""
     poly = pts + [pts[0]] if closed else pts
     c2i = max(poly_dist(s, poly) for s in samples)
-    gap = max(math.dist(samples[i], samples[i + 1]) for i in range(len(samples) - 1))
-    i2c = max(poly_dist(p, samples) - 0.6 * gap for p in pts)
+    i2c = max(min(min(math.dist(p, samples[i]), math.dist(p, samples[i + 1])) - 0.6 * math.dist(samples[i], samples[i + 1])
+                  for i in range(len(samples) - 1))
+              for p in pts)
     return c2i, i2c
 
 
