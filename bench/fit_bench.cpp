@@ -54,6 +54,22 @@ totals run(const std::vector<fit_corpus::line>& lines, crspline::fit_mode mode) 
     return t;
 }
 
+/// One row of a growth table: the fit of p timed, printed, and its
+/// log(n), log(time) kept for the exponent.
+void growth_row(const std::vector<crspline::vec<2>>& p, double tolerance, crspline::fit_mode mode,
+                std::vector<double>& lx, std::vector<double>& ly) {
+    crspline::fit_options<2> o;
+    o.tolerance = tolerance;
+    o.mode = mode;
+    const double t0 = thread_seconds();
+    const auto r = crspline::fit(p, o);
+    const double s = thread_seconds() - t0;
+    std::printf("%-7s %9zu  %9.3f  %9.0f   (%zu control points)\n", mode == crspline::fit_mode::free ? "free" : "subset",
+                p.size(), s, double(p.size()) / s, r.count);
+    lx.push_back(std::log(double(p.size())));
+    ly.push_back(std::log(s));
+}
+
 /// The least-squares slope of log(time) against log(n).
 void print_exponent(crspline::fit_mode mode, const std::vector<double>& lx, const std::vector<double>& ly) {
     if (lx.size() < 2) return;
@@ -107,17 +123,7 @@ int main(int argc, char** argv) {
     for (auto mode : {crspline::fit_mode::subset, crspline::fit_mode::free}) {
         std::vector<double> lx, ly;
         for (std::size_t n = 10000; n <= (mode == crspline::fit_mode::free ? free_max : max_n); n *= 10) {
-            std::vector<crspline::vec<2>> p(all.begin(), all.begin() + std::ptrdiff_t(n));
-            crspline::fit_options<2> o;
-            o.tolerance = 0.5;
-            o.mode = mode;
-            const double t0 = thread_seconds();
-            const auto r = crspline::fit(p, o);
-            const double s = thread_seconds() - t0;
-            std::printf("%-7s %9zu  %9.3f  %9.0f   (%zu control points)\n",
-                        mode == crspline::fit_mode::free ? "free" : "subset", n, s, double(n) / s, r.count);
-            lx.push_back(std::log(double(n)));
-            ly.push_back(std::log(s));
+            growth_row(std::vector<crspline::vec<2>>(all.begin(), all.begin() + std::ptrdiff_t(n)), 0.5, mode, lx, ly);
         }
         print_exponent(mode, lx, ly);
     }
@@ -133,16 +139,7 @@ int main(int argc, char** argv) {
                 const double t = 2 * 3.141592653589793 * double(i) / double(n - 1);
                 p[i] = crspline::vec<2>{{t, std::sin(t)}};
             }
-            crspline::fit_options<2> o;
-            o.tolerance = 0.01;
-            o.mode = mode;
-            const double t0 = thread_seconds();
-            const auto r = crspline::fit(p, o);
-            const double s = thread_seconds() - t0;
-            std::printf("%-7s %9zu  %9.3f  %9.0f   (%zu control points)\n",
-                        mode == crspline::fit_mode::free ? "free" : "subset", n, s, double(n) / s, r.count);
-            lx.push_back(std::log(double(n)));
-            ly.push_back(std::log(s));
+            growth_row(p, 0.01, mode, lx, ly);
         }
         print_exponent(mode, lx, ly);
     }
