@@ -100,9 +100,10 @@ def fit(points, *, tolerance, alpha=0.5, closed=False, mode="subset", tension=0.
     ------
     ValueError
         (``InvalidInput``) a tolerance that is not a positive number or is at
-        or below the rounding floor (named in the message), a non-finite
-        coordinate, fewer than 2 points (3 closed), a bad mode, alpha or
-        tension.
+        or below the rounding floor (named in the message) or below 1.5e-154,
+        a non-finite coordinate or one beyond 2.4e153 (2-D; the proof squares
+        distances: scale such data), fewer than 2 points (3 closed), a bad
+        mode, alpha or tension.
     """
     pts = _as_points(points)
     tolerance = _real(tolerance, "tolerance")
