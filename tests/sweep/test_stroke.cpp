@@ -71,6 +71,45 @@ TEST(Stroke, StraightStrokeAreas) {
     EXPECT_NEAR(area_of(r), 4 * w + 2 * w * d, 1e-12);
 }
 
+// A path that retraces itself: the stroke is the band around it, whichever
+// way it runs. Before, the outline's edges came twice over (there and back,
+// or both sides of a U-turn) and the nonzero rule left collinear overlaps
+// uncut: the open out-and-back gave no polygon at all, the closed one a
+// sliver of area 0.013. Open, uniform (a cusp at the turn: a round join):
+// the segment [0, 3] at half width 0.1 with round ends, area 0.6 + pi 0.01,
+// within the tolerance times the perimeter; the same along a diagonal
+// (length 3 |(1, 0.7)|); closed, centripetal (the curve turns smoothly
+// where it reverses, as the open one, so the same region).
+TEST(Stroke, RetracedPathIsItsBand) {
+    const double w = 0.2, d = w / 2, tol = 1e-4;
+    stroke_options o;
+    o.tolerance = tol;
+    o.join = stroke_join::round;
+    o.cap = stroke_cap::round;
+    options<2> uniform;
+    uniform.alpha = 0.0;
+    const double slack = tol * (2 * 3 + 2 * std::numbers::pi * d) * 2;
+    std::size_t checked = 0;
+    for (const p2 step : {p2{{1, 0}}, p2{{1, 0.7}}}) {
+        std::vector<p2> there_and_back;
+        for (int k : {0, 1, 2, 3, 2, 1, 0}) there_and_back.push_back(double(k) * step);
+        const double len = 3 * norm(step);
+        const auto r = stroke(catmull_rom<2>(there_and_back, uniform), w, o);
+        ASSERT_EQ(r.polygons.size(), 1u) << "step " << step[1];
+        EXPECT_EQ(r.polygons[0].holes.size(), 0u);
+        EXPECT_NEAR(area_of(r), len * w + std::numbers::pi * d * d, slack * norm(step)) << "step " << step[1];
+        EXPECT_EQ(crossings(r), 0u);
+        options<2> ring;
+        ring.closed = true;
+        const std::vector<p2> out{there_and_back.begin(), there_and_back.begin() + 4};
+        const auto rc = stroke(catmull_rom<2>(out, ring), w, o);
+        ASSERT_EQ(rc.polygons.size(), 1u) << "closed, step " << step[1];
+        EXPECT_NEAR(area_of(rc), len * w + std::numbers::pi * d * d, slack * norm(step)) << "closed, step " << step[1];
+        checked += 2;
+    }
+    EXPECT_EQ(checked, 4u);
+}
+
 // A closed circle-like curve: an annulus, one polygon with one hole, its
 // area pi ((R + d)^2 - (R - d)^2) = 4 pi R d within the tolerance times the
 // perimeter (plus the curve's own distance from the circle, measured).

@@ -4,11 +4,16 @@
 //
 // 1. Every pair of crossing edges is cut at its crossing (a grid of cells
 //    finds the pairs); the pieces share the crossing's vertex.
+//    Collinear edges that overlap (to within 1e-10 of the extent: a path
+//    that retraces itself) are cut at each other's ends instead, and pieces
+//    with the same two ends merged into one that counts its directions
+//    (twice the same way: 2; there and back: 0, dropped).
 // 2. Each piece's winding number on either side: a ray from its midpoint,
 //    across it (along x for a steep piece, along y for a flat one), counts
-//    the other pieces it crosses (the half-open rule at vertices); the piece
-//    itself adds 1 on its left. A piece with a nonzero winding on one side
-//    only is boundary, kept with the region on its left.
+//    the other pieces it crosses (the half-open rule at vertices), each as
+//    many times as it counts; the piece itself adds its count on its left.
+//    A piece with a nonzero winding on one side only is boundary, kept with
+//    the region on its left.
 // 3. The kept pieces are linked into rings, taking at a vertex where
 //    several leave the one that turns most to the left: rings that touch at
 //    a point come out as separate simple rings.
@@ -63,24 +68,45 @@ struct ring_polygon {
 /// The nonzero-winding region of the closed rings (each first vertex not
 /// repeated) as polygons.
 inline std::vector<ring_polygon> nonzero_region(const std::vector<std::vector<p2>>& rings) {
-    // 0. Vertices, merged when equal, and edges.
+    // 0. Vertices, merged when within `near` of each other (1e-10 of the
+    //    extent: the same point computed two ways, as where a path retraces
+    //    itself and both sides' outlines pass through it), and edges.
+    double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x, hi_x = -lo_x, hi_y = -lo_x;
+    for (const auto& r : rings)
+        for (const auto& p : r) lo_x = std::min(lo_x, p[0]), hi_x = std::max(hi_x, p[0]), lo_y = std::min(lo_y, p[1]), hi_y = std::max(hi_y, p[1]);
+    const double extent = std::max({hi_x - lo_x, hi_y - lo_y, std::numeric_limits<double>::min()});
+    const double near = 1e-10 * extent;
     std::vector<p2> pts;
     std::map<std::pair<double, double>, std::uint32_t> id_of;
+    struct cell_hash {
+        std::size_t operator()(const std::pair<std::int64_t, std::int64_t>& c) const noexcept {
+            return std::size_t(std::uint64_t(c.first) * 0x9E3779B97F4A7C15u ^ std::uint64_t(c.second) * 0xC2B2AE3D27D4EB4Fu);
+        }
+    };
+    std::unordered_map<std::pair<std::int64_t, std::int64_t>, std::vector<std::uint32_t>, cell_hash> near_cells;
     auto vid = [&](const p2& p) {
-        auto [it, fresh] = id_of.try_emplace({p[0], p[1]}, std::uint32_t(pts.size()));
-        if (fresh) pts.push_back(p);
-        return it->second;
+        const auto exact = id_of.find({p[0], p[1]});
+        if (exact != id_of.end()) return exact->second;
+        const auto cx = std::int64_t(std::floor((p[0] - lo_x) / near)), cy = std::int64_t(std::floor((p[1] - lo_y) / near));
+        for (std::int64_t y = cy - 1; y <= cy + 1; ++y)
+            for (std::int64_t x = cx - 1; x <= cx + 1; ++x) {
+                const auto it = near_cells.find({x, y});
+                if (it == near_cells.end()) continue;
+                for (const auto q : it->second)
+                    if (norm(pts[q] - p) <= near) return id_of[{p[0], p[1]}] = q;
+            }
+        const auto id = std::uint32_t(pts.size());
+        pts.push_back(p);
+        near_cells[{cx, cy}].push_back(id);
+        return id_of[{p[0], p[1]}] = id;
     };
     std::vector<std::array<std::uint32_t, 2>> edges;
-    double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x, hi_x = -lo_x, hi_y = -lo_x;
     for (const auto& r : rings)
         for (std::size_t i = 0; i < r.size(); ++i) {
             const auto a = vid(r[i]), b = vid(r[(i + 1) % r.size()]);
             if (a != b) edges.push_back({a, b});
         }
     if (edges.empty()) return {};
-    for (const auto& p : pts) lo_x = std::min(lo_x, p[0]), hi_x = std::max(hi_x, p[0]), lo_y = std::min(lo_y, p[1]), hi_y = std::max(hi_y, p[1]);
-    const double extent = std::max({hi_x - lo_x, hi_y - lo_y, std::numeric_limits<double>::min()});
     // 1. Crossings, through a grid of about one edge per cell.
     const std::size_t ne = edges.size();
     const std::size_t cells = std::max<std::size_t>(1, std::size_t(std::sqrt(double(ne))));
@@ -105,14 +131,41 @@ inline std::vector<ring_polygon> nonzero_region(const std::vector<std::vector<p2
     std::sort(tested.begin(), tested.end());
     tested.erase(std::unique(tested.begin(), tested.end()), tested.end());
     const double snap = 1e-12;
+    // Whether x is within `near` of the line through a along r (|r|^2 = rr).
+    auto on_line = [&](const p2& x, const p2& a, const p2& r, double rr) {
+        const p2 w = x - a;
+        const double c = w[0] * r[1] - w[1] * r[0];
+        return c * c <= near * near * rr;
+    };
     for (const auto& [e, f] : tested) {
         const auto &E = edges[e], &F = edges[f];
         const p2 &a = pts[E[0]], &b = pts[E[1]], &c = pts[F[0]], &d = pts[F[1]];
+        {
+            // Collinear (to within `near`) and overlapping: each cut at the
+            // other's ends inside it, at those very vertices, so that the
+            // overlap becomes pieces with the same two ends (merged below,
+            // their directions summed): a path that retraces itself gives
+            // outline edges twice over, whose windings must add up.
+            const p2 r = b - a, s = d - c;
+            const double rr = dot(r, r), ss = dot(s, s);
+            if (rr > 0 && ss > 0 && on_line(c, a, r, rr) && on_line(d, a, r, rr) && on_line(a, c, s, ss) &&
+                on_line(b, c, s, ss)) {
+                const double tc = dot(c - a, r) / rr, td = dot(d - a, r) / rr;
+                if (std::max(std::min(tc, td), 0.0) < std::min(std::max(tc, td), 1.0) - snap) {
+                    for (const auto& [t, v] : {std::pair{tc, F[0]}, std::pair{td, F[1]}})
+                        if (t > snap && t < 1 - snap && v != E[0] && v != E[1]) cuts[e].push_back({t, v});
+                    const double ta = dot(a - c, s) / ss, tb = dot(b - c, s) / ss;
+                    for (const auto& [t, v] : {std::pair{ta, E[0]}, std::pair{tb, E[1]}})
+                        if (t > snap && t < 1 - snap && v != F[0] && v != F[1]) cuts[f].push_back({t, v});
+                }
+                continue;
+            }
+        }
         const double o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
         if ((o1 > 0 && o2 > 0) || (o1 < 0 && o2 < 0) || (o3 > 0 && o4 > 0) || (o3 < 0 && o4 < 0)) continue;
         const p2 r = b - a, s = d - c;
         const double den = r[0] * s[1] - r[1] * s[0];
-        if (den == 0) continue;  // parallel: collinear overlaps are left as they are
+        if (den == 0) continue;  // parallel, apart (collinear ones are cut above)
         const p2 ac = c - a;
         const double te = std::clamp((ac[0] * s[1] - ac[1] * s[0]) / den, 0.0, 1.0);
         const double tf = std::clamp((ac[0] * r[1] - ac[1] * r[0]) / den, 0.0, 1.0);
@@ -125,18 +178,41 @@ inline std::vector<ring_polygon> nonzero_region(const std::vector<std::vector<p2
         if (v != E[0] && v != E[1]) cuts[e].push_back({te, v});
         if (v != F[0] && v != F[1]) cuts[f].push_back({tf, v});
     }
-    // Pieces.
-    std::vector<std::array<std::uint32_t, 2>> pieces;
+    // Pieces; those with the same two ends merged, each with the number of
+    // times it is crossed from right to left (its directions summed), and
+    // dropped where they cancel.
+    // lower end, upper end, the order made in, 1: along, 0: against
+    std::vector<std::array<std::uint32_t, 4>> raw;
+    auto add_piece = [&](std::uint32_t u, std::uint32_t v) {
+        const auto k = std::uint32_t(raw.size());
+        raw.push_back(u < v ? std::array<std::uint32_t, 4>{u, v, k, 1} : std::array<std::uint32_t, 4>{v, u, k, 0});
+    };
     for (std::size_t e = 0; e < ne; ++e) {
         auto& c = cuts[e];
         std::sort(c.begin(), c.end());
         std::uint32_t from = edges[e][0];
         for (const auto& [t, v] : c) {
-            if (v != from) pieces.push_back({from, v});
+            if (v != from) add_piece(from, v);
             from = v;
         }
-        if (from != edges[e][1]) pieces.push_back({from, edges[e][1]});
+        if (from != edges[e][1]) add_piece(from, edges[e][1]);
     }
+    // Merged, then back in the order made (the outline's order: the
+    // windings' scans below run a third faster so than by vertex).
+    std::sort(raw.begin(), raw.end());
+    std::vector<std::array<std::uint32_t, 4>> merged;  // from, to, order, weight
+    for (std::size_t i = 0; i < raw.size();) {
+        int c = 0;
+        std::size_t j = i;
+        for (; j < raw.size() && raw[j][0] == raw[i][0] && raw[j][1] == raw[i][1]; ++j) c += raw[j][3] ? 1 : -1;
+        if (c > 0) merged.push_back({raw[i][0], raw[i][1], raw[i][2], std::uint32_t(c)});
+        if (c < 0) merged.push_back({raw[i][1], raw[i][0], raw[i][2], std::uint32_t(-c)});
+        i = j;
+    }
+    std::sort(merged.begin(), merged.end(), [](const auto& x, const auto& y) { return x[2] < y[2]; });
+    std::vector<std::array<std::uint32_t, 2>> pieces;
+    std::vector<int> weight;  // > 0, along the piece
+    for (const auto& m : merged) pieces.push_back({m[0], m[1]}), weight.push_back(int(m[3]));
     // 2. Windings, with bands along y (rays along x) and along x (rays along y).
     const std::size_t np = pieces.size();
     const std::size_t nb = std::max<std::size_t>(1, std::size_t(std::sqrt(double(np))));
@@ -161,8 +237,8 @@ inline std::vector<ring_polygon> nonzero_region(const std::vector<std::vector<p2
         for (const auto k : band) {
             if (k == skip) continue;
             const p2 a = sw(pts[pieces[k][0]]), b = sw(pts[pieces[k][1]]);
-            if (a[1] <= qq[1] && qq[1] < b[1] && orient(a, b, qq) > 0) ++w;
-            else if (b[1] <= qq[1] && qq[1] < a[1] && orient(a, b, qq) < 0) --w;
+            if (a[1] <= qq[1] && qq[1] < b[1] && orient(a, b, qq) > 0) w += weight[k];
+            else if (b[1] <= qq[1] && qq[1] < a[1] && orient(a, b, qq) < 0) w -= weight[k];
         }
         return swap ? -w : w;
     };
@@ -172,11 +248,12 @@ inline std::vector<ring_polygon> nonzero_region(const std::vector<std::vector<p2
         const p2 m = (a + b) / 2.0, d = b - a;
         const bool swap = std::abs(d[0]) > std::abs(d[1]);
         const int w = winding(m, k, swap);
-        // The piece's own crossing: +1 on its left (see the header).
+        // The piece's own crossing: its weight on its left (see the header).
+        const int c = weight[k];
         int left, right;
         const double along = swap ? d[0] : d[1];  // up in the ray's frame
-        if (!swap) left = along > 0 ? w + 1 : w, right = along > 0 ? w : w - 1;
-        else left = along > 0 ? w : w + 1, right = along > 0 ? w - 1 : w;
+        if (!swap) left = along > 0 ? w + c : w, right = along > 0 ? w : w - c;
+        else left = along > 0 ? w : w + c, right = along > 0 ? w - c : w;
         if ((left != 0) == (right != 0)) continue;
         kept.push_back(left != 0 ? pieces[k] : std::array<std::uint32_t, 2>{pieces[k][1], pieces[k][0]});
     }
