@@ -124,11 +124,22 @@ void check_fit_input(std::span<const vec<D, T>> points, const fit_options<D, T>&
     const double tol = opt.tolerance;
     if (!(tol > 0) || !std::isfinite(tol))
         throw invalid_input("fit: tolerance must be a positive finite number, got " + num(tol));
+    // The proof's arithmetic squares distances: they must stay finite, and
+    // the tolerance's square a normal number (beyond, an overflow gave a
+    // "proof" of a straight line through a random walk, and an underflow a
+    // proof that could not close).
+    const T hi = fit_largest_coordinate<D, T>(), lo = fit_smallest_tolerance<T>();
     for (std::size_t i = 0; i < points.size(); ++i)
-        for (std::size_t k = 0; k < D; ++k)
+        for (std::size_t k = 0; k < D; ++k) {
             if (!std::isfinite(points[i][k]))
                 throw invalid_input("fit: point " + std::to_string(i) + " has a non-finite coordinate " +
                                     std::to_string(k) + ": " + num(double(points[i][k])));
+            if (!(std::abs(points[i][k]) <= hi))
+                throw invalid_input("fit: point " + std::to_string(i) + " coordinate " + std::to_string(k) + " is " +
+                                    num(double(points[i][k])) + ", beyond the " + num(double(hi)) +
+                                    " the proof's arithmetic covers (its squared distances must stay finite): "
+                                    "scale the points and the tolerance");
+        }
     if (opt.alpha && !(*opt.alpha >= 0 && *opt.alpha <= 1))
         throw invalid_input("fit: alpha must be in [0, 1], got " + num(*opt.alpha));
     if (!(opt.tension >= 0 && opt.tension <= 1))
@@ -143,18 +154,6 @@ void check_fit_input(std::span<const vec<D, T>> points, const fit_options<D, T>&
     if (points.size() < need)
         throw invalid_input("fit: needs at least " + std::to_string(need) + " points" + (opt.closed ? " (closed)" : "") +
                             ", got " + std::to_string(points.size()));
-    // The proof's arithmetic squares distances: they must stay finite, and
-    // the tolerance's square a normal number (beyond, an overflow gave a
-    // "proof" of a straight line through a random walk, and an underflow a
-    // proof that could not close).
-    const T hi = fit_largest_coordinate<D, T>(), lo = fit_smallest_tolerance<T>();
-    for (std::size_t i = 0; i < points.size(); ++i)
-        for (std::size_t k = 0; k < D; ++k)
-            if (!(std::abs(points[i][k]) <= hi))
-                throw invalid_input("fit: point " + std::to_string(i) + " coordinate " + std::to_string(k) + " is " +
-                                    num(double(points[i][k])) + ", beyond the " + num(double(hi)) +
-                                    " the proof's arithmetic covers (its squared distances must stay finite): "
-                                    "scale the points and the tolerance");
     if (!(tol >= double(lo)))
         throw invalid_input("fit: tolerance " + num(tol) + " is below " + num(double(lo)) +
                             ", the smallest the proof's arithmetic covers (its square must be a normal number): "

@@ -101,8 +101,13 @@ TEST(FitErrors, CoordinatesAndToleranceOutsideTheProofsArithmetic) {
     const std::string small = error_of(walk(1e-170), o);
     EXPECT_EQ(small, "fit: tolerance 5e-171 is below 1.4916681462400413e-154, the smallest the proof's arithmetic "
                      "covers (its square must be a normal number): scale the points and the tolerance");
-    const float float_limit = crspline::fit_largest_coordinate<2, float>();
-    EXPECT_EQ(float_limit, std::sqrt(std::numeric_limits<float>::max() / 32));
+    // Floats: the limit is sqrt(max / 32) = 3.26e18 in 2-D; a point beyond
+    // it is refused by name.
+    std::vector<vec<2, float>> ff{vec<2, float>{{0, 0}}, vec<2, float>{{1, 1}}, vec<2, float>{{4e18f, 0}}};
+    fit_options<2, float> of;
+    of.tolerance = 1e15;
+    EXPECT_EQ(error_of(ff, of).rfind("fit: point 2 coordinate 0 is 3.99", 0), 0u) << error_of(ff, of);
+    EXPECT_NE(error_of(ff, of).find("beyond the 3.26"), std::string::npos) << error_of(ff, of);
     // Inside: scale 1e150 (coordinates up to about 2e152).
     const auto p = walk(1e150);
     o.tolerance = 0.5e150;

@@ -525,8 +525,7 @@ std::vector<std::size_t> fit_ring_triangle(const fit_problem<D, T>& pb) {
         const T o = dot(v, v);
         if (o > off) off = o, c = k;
     }
-    std::vector<std::size_t> idx{0, std::min(b, c), std::max(b, c), n};
-    return idx;
+    return {0, std::min(b, c), std::max(b, c), n};
 }
 
 /// Subset mode at pb's base level: the choice, its improvement, the proof

@@ -131,39 +131,30 @@ inline std::vector<ring_polygon> nonzero_region(const std::vector<std::vector<p2
     std::sort(tested.begin(), tested.end());
     tested.erase(std::unique(tested.begin(), tested.end()), tested.end());
     const double snap = 1e-12;
-    // Whether x is within `near` of the line through a along r (|r|^2 = rr).
-    auto on_line = [&](const p2& x, const p2& a, const p2& r, double rr) {
-        const p2 w = x - a;
-        const double c = w[0] * r[1] - w[1] * r[0];
-        return c * c <= near * near * rr;
-    };
     for (const auto& [e, f] : tested) {
         const auto &E = edges[e], &F = edges[f];
         const p2 &a = pts[E[0]], &b = pts[E[1]], &c = pts[F[0]], &d = pts[F[1]];
-        {
-            // Collinear (to within `near`) and overlapping: each cut at the
-            // other's ends inside it, at those very vertices, so that the
-            // overlap becomes pieces with the same two ends (merged below,
-            // their directions summed): a path that retraces itself gives
-            // outline edges twice over, whose windings must add up.
-            const p2 r = b - a, s = d - c;
-            const double rr = dot(r, r), ss = dot(s, s);
-            if (rr > 0 && ss > 0 && on_line(c, a, r, rr) && on_line(d, a, r, rr) && on_line(a, c, s, ss) &&
-                on_line(b, c, s, ss)) {
-                const double tc = dot(c - a, r) / rr, td = dot(d - a, r) / rr;
-                if (std::max(std::min(tc, td), 0.0) < std::min(std::max(tc, td), 1.0) - snap) {
-                    for (const auto& [t, v] : {std::pair{tc, F[0]}, std::pair{td, F[1]}})
-                        if (t > snap && t < 1 - snap && v != E[0] && v != E[1]) cuts[e].push_back({t, v});
-                    const double ta = dot(a - c, s) / ss, tb = dot(b - c, s) / ss;
-                    for (const auto& [t, v] : {std::pair{ta, E[0]}, std::pair{tb, E[1]}})
-                        if (t > snap && t < 1 - snap && v != F[0] && v != F[1]) cuts[f].push_back({t, v});
-                }
-                continue;
-            }
-        }
         const double o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
-        if ((o1 > 0 && o2 > 0) || (o1 < 0 && o2 < 0) || (o3 > 0 && o4 > 0) || (o3 < 0 && o4 < 0)) continue;
         const p2 r = b - a, s = d - c;
+        const double rr = dot(r, r), ss = dot(s, s), nn = near * near;
+        if (rr > 0 && ss > 0 && o1 * o1 <= nn * rr && o2 * o2 <= nn * rr && o3 * o3 <= nn * ss && o4 * o4 <= nn * ss) {
+            // Collinear (each end within `near` of the other's line) and
+            // overlapping: each cut at the other's ends inside it, at those
+            // very vertices, so that the overlap becomes pieces with the same
+            // two ends (merged below, their directions summed): a path that
+            // retraces itself gives outline edges twice over, whose windings
+            // must add up.
+            const double tc = dot(c - a, r) / rr, td = dot(d - a, r) / rr;
+            if (std::max(std::min(tc, td), 0.0) < std::min(std::max(tc, td), 1.0) - snap) {
+                for (const auto& [t, v] : {std::pair{tc, F[0]}, std::pair{td, F[1]}})
+                    if (t > snap && t < 1 - snap && v != E[0] && v != E[1]) cuts[e].push_back({t, v});
+                const double ta = dot(a - c, s) / ss, tb = dot(b - c, s) / ss;
+                for (const auto& [t, v] : {std::pair{ta, E[0]}, std::pair{tb, E[1]}})
+                    if (t > snap && t < 1 - snap && v != F[0] && v != F[1]) cuts[f].push_back({t, v});
+            }
+            continue;
+        }
+        if ((o1 > 0 && o2 > 0) || (o1 < 0 && o2 < 0) || (o3 > 0 && o4 > 0) || (o3 < 0 && o4 < 0)) continue;
         const double den = r[0] * s[1] - r[1] * s[0];
         if (den == 0) continue;  // parallel, apart (collinear ones are cut above)
         const p2 ac = c - a;
