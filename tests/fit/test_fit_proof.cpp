@@ -154,8 +154,8 @@ TEST(FitProof, RingsKeepThreeControlPointsAtAnyTolerance) {
 
 // A smooth line sampled far more densely than its tolerance needs: each
 // segment covers some 300 input points, where the choice puts its
-// candidates on a grid, merges try 64 points and the quick test samples 64
-// (fit_model.hpp; without them time grew with the square of the points).
+// candidates on a grid and merges try 64 points (fit_model.hpp; without
+// them time grew with the square of the points).
 // Still within the tolerance, and few points: measured 9 (subset) and 11
 // (free) here; the bound of 14 leaves room for the grid's choices, not for
 // a choice that lost its way.

@@ -40,9 +40,9 @@ inline constexpr std::uint8_t fit_improve_level = 3;
 /// - where the reach from a point covers 64 input points or more, the
 ///   choice's candidates lie on a grid of a 64th to a 128th of it
 ///   (subset_search::on_grid; a grid of a 16th cost the GIS fit 3%);
-/// - a merge in the improvement tries 64 points at most, evenly spread;
-/// - the quick test samples its curve at 64 points at most (twice per
-///   input point below that: fit_proof.hpp's fit_max_samples).
+/// - a merge in the improvement tries 64 points at most, evenly spread.
+/// (The quick test also sampled its curve, 64 points at most: it now looks
+/// at three points of it, fit_proof.hpp's fit_probes.)
 inline constexpr std::size_t fit_choose_grid = 64;
 inline constexpr std::size_t fit_merge_tries = 64;
 
