@@ -156,7 +156,7 @@ TEST(FitProof, RingsKeepThreeControlPointsAtAnyTolerance) {
 // segment covers some 300 input points, where the choice puts its
 // candidates on a grid and merges try 64 points (fit_model.hpp; without
 // them time grew with the square of the points).
-// Still within the tolerance, and few points: measured 9 (subset) and 11
+// Still within the tolerance, and few points: measured 8 (subset) and 11
 // (free) here; the bound of 14 leaves room for the grid's choices, not for
 // a choice that lost its way.
 TEST(FitProof, DenselySampledSmoothLine) {
