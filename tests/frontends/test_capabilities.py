@@ -105,3 +105,19 @@ def test_a_missing_entry_fails():
         f"js: no entry for 'fit' (entries: {sorted(set(CAPABILITIES) - {'fit'})})"]
     moved = text.replace("crosses or touches (docs/analysis.md)", "crosses or touches (docs/report.md)")
     assert len(check("js", entries(moved, start))) == 1
+
+
+def readme_problems(text):
+    """The project's README.md links every capability's page (and each front
+    end's curves page) as `](docs/NAME.md)`: a reader of the first page
+    finds them all."""
+    pages = {p for p in CAPABILITIES.values() if p} | set(CURVES_PAGE.values())
+    return [f"README.md: no link to {p}" for p in sorted(pages) if f"]({p})" not in text]
+
+
+def test_readme_links_every_capability_page():
+    assert not readme_problems((ROOT / "README.md").read_text(encoding="utf-8"))
+    # The check can fail: the README without its fitting line.
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    without = "\n".join(l for l in text.split("\n") if not l.startswith("Fitting ("))
+    assert readme_problems(without) == ["README.md: no link to docs/fit.md"]
