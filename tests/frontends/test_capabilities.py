@@ -5,8 +5,9 @@
 the capability's page (docs/NAME.md), and that page exists. An entry is a
 line starting with the capability's name (`  NAME  ` in the command's
 footer, `* NAME:` in the docstring, `- NAME:` in the README) and the lines
-that continue it. A capability added to crspline is added here, and the
-three places then fail until they list it.
+that continue it. The project's README.md links every one of those pages.
+A capability added to crspline is added here, and the four places then
+fail until they list it.
 
 Needs the built CLI (CRSPLINE_BIN) and the Python package on PYTHONPATH, as
 the other tests of this folder.
