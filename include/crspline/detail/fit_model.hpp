@@ -34,9 +34,9 @@ inline constexpr std::uint8_t fit_improve_level = 3;
 /// covers very many of them (a densely sampled smooth line: each test of a
 /// segment looks at every input point it covers: without them a 4,000-point
 /// sine took 3 s, and time grew with the square of the points). Measured
-/// (BENCHMARKS.md): the real corpus' subset choices the same, free mode's
-/// counts within 0.05%, the NYC boroughs' GIS fit 11,879 control points
-/// instead of 11,878.
+/// when they were set (BENCHMARKS.md, "Fit on densely sampled lines"): the
+/// real corpus' subset choices the same, free mode's counts within 0.05%,
+/// the NYC boroughs' GIS fit 11,879 control points instead of 11,878.
 /// - where the reach from a point covers 64 input points or more, the
 ///   choice's candidates lie on a grid of a 64th to a 128th of it
 ///   (subset_search::on_grid; a grid of a 16th cost the GIS fit 3%);

@@ -391,12 +391,12 @@ bool input_within(const cubic_segment<D, T>& seg, const poly_range<D, T>& pr, T 
 template <class T>
 struct quick_limits {
     T flat_target, flat_bound;
-    root_limit<T> input, sampled, sure, far;
+    root_limit<T> input, probe, sure, far;
     quick_limits(T tolerance, T slack)
         : flat_target(tolerance / T(4)),
           flat_bound(flat_target * (T(1) + T(1) / T(1024))),
           input(tolerance - slack),
-          sampled(input.limit * T(0.97)),
+          probe(input.limit * T(0.97)),
           sure(sure_distance(input.limit, flat_bound)),
           far((input.limit + flat_bound) * (T(1) + T(1) / T(1 << 20))) {}
 
@@ -506,10 +506,10 @@ bool range_within(const vec<D, T>& x, const poly_range<D, T>& pr, const root_lim
         hint = s;
         return true;
     };
-    // Outward from the hint, both ways at once: a sample near some segment
-    // is most often near one close to the hint (on a densely sampled line
-    // a segment's samples are near many input segments, and a scan from
-    // the range's start cost time in the square of its length).
+    // Outward from the hint, both ways at once: a curve point near some
+    // segment is most often near one close to the hint (on a densely
+    // sampled line a curve point is near many input segments, and a scan
+    // from the range's start cost time in the square of its length).
     const std::size_t h = hint;
     if (within(h)) return true;
     for (std::size_t d = 1; d <= h || h + d < nseg; ++d)
@@ -538,7 +538,7 @@ bool quick_segment_test(const cubic_segment<D, T>& seg, const poly_range<D, T>& 
     for (const double u : fit_probes) {
         // Looked for from the segment u of the way along the range.
         std::size_t hint = std::min(nseg - 1, std::size_t(u * double(nseg)));
-        if (!range_within(seg.at(T(u)), pr, lim.sampled, hint)) return false;
+        if (!range_within(seg.at(T(u)), pr, lim.probe, hint)) return false;
     }
     return input_points_pass(seg, pr, lim, first_point, end_point);
 }
