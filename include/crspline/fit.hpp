@@ -208,12 +208,15 @@ fit_result<D, T> fit(std::span<const vec<D, T>> points, const fit_options<D, T>&
     //    keeps it nearer its chords and saves points); the improvement then
     //    sets each vertex's level (0 to 0.95) where that lets it drop a
     //    point. Where that choice hardly needs its tension (at most one
-    //    vertex in 20 keeps the tolerance only with it: a smooth line), the
+    //    vertex in 5 keeps the tolerance only with it: a smooth line), the
     //    search runs again from level 0, which wins a tie (a smooth line
     //    keeps no tension, and takes fewer points: 13 instead of 16 on an
-    //    ellipse). On the real corpus (BENCHMARKS.md) the second search
-    //    runs on few lines: running it on every line saved 0.5% of the
-    //    points at twice the time. (Lowering every level again as far as
+    //    ellipse). The first search walks greedily, the second looks two
+    //    segments ahead (fit_subset.hpp): with one in 20 there, 45 noisy
+    //    sines took 6% more points than with the lookahead in both, with
+    //    one in 5 0.5% fewer. On the real corpus (BENCHMARKS.md) the second
+    //    search runs on a fifth of the lines: running it on every line saved
+    //    0.5% of the points at twice the time. (Lowering every level again as far as
     //    the tolerance allows changed the corpus' counts by under 0.2%, and
     //    with the layer's proofs, which hold less tension worse, kept 19%
     //    more points on the NYC boroughs.)
@@ -225,7 +228,7 @@ fit_result<D, T> fit(std::span<const vec<D, T>> points, const fit_options<D, T>&
         std::size_t tensioned = 0, chosen = 0;
         detail::fit_selection<D, T> s = opt.mode == fit_mode::subset ? detail::fit_subset(pb, tensioned, chosen)
                                                                      : detail::fit_free(pb, tensioned, chosen);
-        if (base == 2) smooth = 20 * tensioned <= chosen;
+        if (base == 2) smooth = 5 * tensioned <= chosen;
         if (sel.idx.empty() || s.idx.size() <= sel.idx.size()) sel = std::move(s);
     }
     // 4. The report.

@@ -90,7 +90,7 @@ TEST(FitProof, OpenAndClosedWithinToleranceByDenseSampling) {
     EXPECT_EQ(checked, 96u);
     // Every fit but those at the smallest tolerance on the noisiest lines keeps fewer points.
     EXPECT_GE(fewer, 80u);
-    // Free mode uses its middles (measured: 477 of its control points on
+    // Free mode uses its middles (measured: 445 of its control points on
     // these noisy lines; a free mode that never moved a point would fail).
     std::printf("free mode: %zu control points at segment middles\n", free_middles);
     EXPECT_GE(free_middles, 100u);
@@ -156,7 +156,7 @@ TEST(FitProof, RingsKeepThreeControlPointsAtAnyTolerance) {
 // segment covers some 300 input points, where the choice puts its
 // candidates on a grid and merges try 64 points (fit_model.hpp; without
 // them time grew with the square of the points).
-// Still within the tolerance, and few points: measured 8 (subset) and 11
+// Still within the tolerance, and few points: measured 8 (subset) and 8
 // (free) here; the bound of 14 leaves room for the grid's choices, not for
 // a choice that lost its way.
 TEST(FitProof, DenselySampledSmoothLine) {

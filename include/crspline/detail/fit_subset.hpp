@@ -5,10 +5,14 @@
 // end tangents). reach(i, p) is the farthest j for which the segment from i
 // (its chosen predecessor p) passes the proof with the next point guessed
 // one step of the same length ahead, found by doubling the step and then
-// halving it. The walk takes, among the last few points within reach of
-// the current one, the point from which the next reach goes farthest (a
-// lookahead of two segments instead of the greedy's one), so that a point
-// that makes the next segment's tangent bad is passed over. Then a local
+// halving it. With tension at every vertex (the first search) the
+// walk takes the farthest point within reach that keeps the segment before
+// it (its successor now known), or a point backed off; on a smooth line
+// (the second search, from level 0) it takes, among the last few points
+// within reach of the current one, the point from which the next reach
+// goes farthest (a lookahead of two segments instead of the greedy's one),
+// so that a point that makes the next segment's tangent bad is passed
+// over. Then a local
 // improvement removes points and merges pairs, trying the tension level of
 // each vertex it touches (a vertex at 0.5 or 0.95 keeps the curve nearer
 // its chords at a corner, so a point beside it can go: 9% fewer points on
@@ -147,8 +151,11 @@ public:
     /// segment a -> b within the tolerance now that its successor is known
     /// (its four points z, a, b, c are then the curve's own). States that
     /// reach the same point are kept `beam` at most, the fewest points
-    /// first. Returns unrolled indices from 0 to the last point.
-    std::vector<std::size_t> choose(std::size_t lookahead, std::size_t beam) const {
+    /// first; a state makes `branch` successors at most, its first
+    /// candidates that keep a -> b (1: a greedy walk, the backed-off
+    /// candidates its fallback). Returns unrolled indices from 0 to the last
+    /// point.
+    std::vector<std::size_t> choose(std::size_t lookahead, std::size_t beam, std::size_t branch) const {
         struct state {
             std::size_t z, a, b, count, parent;
         };
@@ -184,10 +191,12 @@ public:
                 for (std::size_t c : {b + (r - b) * 7 / 8, b + (r - b) * 3 / 4})
                     if (c > b && c < from && (nc == 0 || cand[nc - 1] != c)) cand[nc++] = c;
                 nc = on_grid(cand, nc, b, r);
-                for (std::size_t ci = 0; ci < nc; ++ci) {
+                std::size_t made = 0;
+                for (std::size_t ci = 0; ci < nc && made < branch; ++ci) {
                     const std::size_t c = cand[ci];
                     if (!first && !passes(s.z, s.a, b, c)) continue;
                     any = true;
+                    ++made;
                     // Merge with a state (b, c) already there.
                     bool merged = false;
                     for (std::size_t o : at[c])
@@ -534,7 +543,16 @@ std::vector<std::size_t> fit_ring_triangle(const fit_problem<D, T>& pb) {
 template <std::size_t D, class T>
 fit_selection<D, T> fit_subset(const fit_problem<D, T>& pb, std::size_t& need, std::size_t& chosen) {
     const subset_search<D, T> search(pb);
-    std::vector<std::size_t> idx = search.choose(2, 1);
+    // The first search (every vertex at tension 0.8) walks greedily: on the
+    // real corpus (BENCHMARKS.md, "Fit: a greedy first search") the choice
+    // with a lookahead of two segments ended, after the improvement, with
+    // as many points (0.2% more), at 1.5 times the fit's time. A smooth
+    // line's second search (from level 0; fit.hpp runs it where at most one
+    // vertex in 5 needs its tension) keeps the lookahead: greedily there,
+    // ellipses took 4% more points and noisy sines 2% (of the 1,600 seeded
+    // random lines there).
+    const std::size_t branch = pb.base_level == 0 ? fit_none : 1;
+    std::vector<std::size_t> idx = search.choose(2, 1, branch);
     std::vector<std::uint8_t> level = search.initial_levels(idx.size());
     search.improve(idx, level, fit_improve_level);
     if (pb.closed && idx.size() < 4) {
