@@ -39,7 +39,8 @@ inline constexpr std::uint8_t fit_improve_level = 3;
 /// the NYC boroughs' GIS fit 11,879 control points instead of 11,878.
 /// - where the reach from a point covers 64 input points or more, the
 ///   choice's candidates lie on a grid of a 64th to a 128th of it
-///   (subset_search::on_grid; a grid of a 16th cost the GIS fit 3%);
+///   (subset_search::on_grid; a grid of a 16th cost the GIS fit 3%), and
+///   the reach itself is found to that grid's step (subset_search::reach);
 /// - a merge in the improvement tries 64 points at most, evenly spread.
 /// (The quick test also sampled its curve, 64 points at most: it now looks
 /// at three points of it, fit_proof.hpp's fit_probes.)
