@@ -226,8 +226,9 @@ fit_result<D, T> fit(std::span<const vec<D, T>> points, const fit_options<D, T>&
         if (base == 0 && !smooth) break;
         pb.base_level = base;
         std::size_t tensioned = 0, chosen = 0;
-        detail::fit_selection<D, T> s = opt.mode == fit_mode::subset ? detail::fit_subset(pb, tensioned, chosen)
-                                                                     : detail::fit_free(pb, tensioned, chosen);
+        std::size_t* count_needed = base == 2 ? &tensioned : nullptr;  // the second search's is not asked
+        detail::fit_selection<D, T> s = opt.mode == fit_mode::subset ? detail::fit_subset(pb, count_needed, chosen)
+                                                                     : detail::fit_free(pb, count_needed, chosen);
         if (base == 2) smooth = 5 * tensioned <= chosen;
         if (sel.idx.empty() || s.idx.size() <= sel.idx.size()) sel = std::move(s);
     }

@@ -97,7 +97,7 @@ TEST(FitCounts, NoMorePointsAtALargerTolerance) {
 // second search on fewer such lines fails here. (With the greedy walk in
 // both searches these take 1,302, but the ellipse above then keeps tension
 // and more points at smaller tolerances: that test fails.)
-TEST(FitCounts, NoisySmoothLinesKeepTheLookahead) {
+TEST(FitCounts, NoisySmoothLinesGetTheSecondSearch) {
     std::size_t total = 0, lines = 0;
     for (double noise : {0.02, 0.05, 0.1})
         for (double tol : {0.05, 0.1, 0.2, 0.3, 0.5})

@@ -38,7 +38,7 @@
 namespace crspline::detail {
 
 template <std::size_t D, class T>
-fit_selection<D, T> fit_free(const fit_problem<D, T>& pb, std::size_t& need, std::size_t& chosen) {
+fit_selection<D, T> fit_free(const fit_problem<D, T>& pb, std::size_t* need, std::size_t& chosen) {
     // The candidates: each input point, then the middle of its segment.
     const std::size_t n = pb.size(), segs = pb.closed ? n : n - 1;
     std::vector<vec<D, T>> dense;

@@ -114,14 +114,22 @@ public:
         // or more: choose() puts its candidates on that grid there
         // (on_grid), and each test looks at every point it covers (a sine
         // sampled with 256,000 points: 2.3 times faster, the same counts).
-        std::size_t g = 1;
-        while (g * fit_choose_grid <= ok - i) g *= 2;
+        const std::size_t g = grid_step(ok - i);
         while (bad - ok > g) {
             const std::size_t mid = ok + (bad - ok) / 2;
             if (passes(p, i, mid, guess_next(i, mid))) ok = mid;
             else bad = mid;
         }
         return ok;
+    }
+
+    /// The grid step for a reach over `span` input points: 1 below
+    /// fit_choose_grid, else the power of two g with g * fit_choose_grid
+    /// <= span < 2 g * fit_choose_grid.
+    static std::size_t grid_step(std::size_t span) noexcept {
+        std::size_t g = 1;
+        while (g * fit_choose_grid <= span) g *= 2;
+        return g;
     }
 
     /// A reach of fit_choose_grid points or more puts the candidates on a
@@ -134,8 +142,7 @@ public:
     /// duplicates go.
     template <std::size_t N>
     std::size_t on_grid(std::array<std::size_t, N>& cand, std::size_t nc, std::size_t b, std::size_t r) const {
-        std::size_t g = 1;
-        while (g * fit_choose_grid <= r - b) g *= 2;
+        const std::size_t g = grid_step(r - b);
         if (g == 1) return nc;
         std::size_t out = 0;
         for (std::size_t k = 0; k < nc; ++k) {
@@ -562,10 +569,11 @@ std::vector<std::size_t> fit_ring_triangle(const fit_problem<D, T>& pb) {
 }
 
 /// Subset mode at pb's base level: the choice, its improvement, the proof
-/// and its repairs. `need` and `chosen`: the choice's vertices that need
-/// their tension (tension_needed) and all of them, before the proof.
+/// and its repairs. `need` (counted only where not null: the first search
+/// asks, fit.hpp) and `chosen`: the choice's vertices that need their
+/// tension (tension_needed) and all of them, before the proof.
 template <std::size_t D, class T>
-fit_selection<D, T> fit_subset(const fit_problem<D, T>& pb, std::size_t& need, std::size_t& chosen) {
+fit_selection<D, T> fit_subset(const fit_problem<D, T>& pb, std::size_t* need, std::size_t& chosen) {
     const subset_search<D, T> search(pb);
     // The first search (every vertex at tension 0.8) walks greedily: on the
     // real corpus (BENCHMARKS.md, "Fit: a greedy first search") the choice
@@ -584,7 +592,7 @@ fit_selection<D, T> fit_subset(const fit_problem<D, T>& pb, std::size_t& need, s
         idx = fit_ring_triangle(pb);
         level = search.initial_levels(idx.size());
     }
-    need = search.tension_needed(idx, level);
+    if (need) *need = search.tension_needed(idx, level);
     chosen = idx.size();
     return prove_and_repair(pb, std::move(idx), {}, std::move(level));
 }
